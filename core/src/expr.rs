@@ -1,0 +1,465 @@
+//! The canonical form: sums of `coefficient x trig atom x monomial in joint rates`.
+//!
+//! An [`Expr`] is an ordered map from `(monomial, atom)` to a non-zero coefficient, so two
+//! expressions are equal exactly when they are the same function. Differentiation in `q`, in
+//! the rates, and `d/dt` by the chain rule act on this form directly.
+
+use std::collections::BTreeMap;
+use std::fmt;
+
+use crate::ring::{int, Coefficient, Rational};
+use crate::trig::{Angle, Trig};
+
+/// A variable of the polynomial part: a joint rate or a joint acceleration (0-based joint).
+#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Debug)]
+pub enum Var {
+    /// `qd_j`, the rate of joint `j`.
+    Qd(usize),
+    /// `qdd_j`, the acceleration of joint `j`.
+    Qdd(usize),
+}
+
+impl fmt::Display for Var {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Var::Qd(j) => write!(f, "qd{}", j + 1),
+            Var::Qdd(j) => write!(f, "qdd{}", j + 1),
+        }
+    }
+}
+
+/// A product of variables with positive exponents, ordered.
+#[derive(Clone, PartialEq, Eq, PartialOrd, Ord, Hash, Debug, Default)]
+pub struct Monomial(BTreeMap<Var, u32>);
+
+impl Monomial {
+    /// The empty product, 1.
+    #[must_use]
+    pub fn one() -> Self {
+        Self::default()
+    }
+
+    /// A single variable.
+    #[must_use]
+    pub fn var(v: Var) -> Self {
+        Self(BTreeMap::from([(v, 1)]))
+    }
+
+    /// Total degree.
+    #[must_use]
+    pub fn degree(&self) -> u32 {
+        self.0.values().sum()
+    }
+
+    /// The variables and their exponents, in order.
+    pub fn powers(&self) -> impl Iterator<Item = (Var, u32)> + '_ {
+        self.0.iter().map(|(&v, &e)| (v, e))
+    }
+
+    /// The exponent of `v`.
+    #[must_use]
+    pub fn exponent(&self, v: Var) -> u32 {
+        self.0.get(&v).copied().unwrap_or(0)
+    }
+
+    fn mul(&self, other: &Self) -> Self {
+        let mut out = self.0.clone();
+        for (&v, &e) in &other.0 {
+            *out.entry(v).or_insert(0) += e;
+        }
+        Self(out)
+    }
+
+    /// `d/dv`: `(exponent, monomial / v)`, or `None` when `v` does not occur.
+    fn diff(&self, v: Var) -> Option<(u32, Self)> {
+        let e = *self.0.get(&v)?;
+        let mut out = self.0.clone();
+        if e == 1 {
+            out.remove(&v);
+        } else {
+            out.insert(v, e - 1);
+        }
+        Some((e, Self(out)))
+    }
+
+    /// Numeric value given the rates and accelerations.
+    #[must_use]
+    pub fn eval(&self, qd: &[f64], qdd: &[f64]) -> f64 {
+        self.powers()
+            .map(|(v, e)| {
+                let x = match v {
+                    Var::Qd(j) => qd[j],
+                    Var::Qdd(j) => qdd[j],
+                };
+                x.powi(i32::try_from(e).unwrap_or(i32::MAX))
+            })
+            .product()
+    }
+}
+
+impl fmt::Display for Monomial {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let mut first = true;
+        for (v, e) in self.powers() {
+            if !first {
+                write!(f, " ")?;
+            }
+            first = false;
+            write!(f, "{v}")?;
+            if e > 1 {
+                write!(f, "^{e}")?;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// A sum of `coefficient x atom x monomial` terms in canonical form.
+#[derive(Clone, PartialEq, Eq, PartialOrd, Ord, Hash, Debug)]
+pub struct Expr<C = Rational> {
+    terms: BTreeMap<(Monomial, Trig), C>,
+}
+
+impl<C> Default for Expr<C> {
+    fn default() -> Self {
+        Self {
+            terms: BTreeMap::new(),
+        }
+    }
+}
+
+impl<C: Coefficient> Expr<C> {
+    /// The zero expression.
+    #[must_use]
+    pub fn zero() -> Self {
+        Self::default()
+    }
+
+    /// A constant.
+    #[must_use]
+    pub fn constant(c: C) -> Self {
+        Self::term(c, Trig::One, Monomial::one())
+    }
+
+    /// A single term.
+    #[must_use]
+    pub fn term(c: C, trig: Trig, monomial: Monomial) -> Self {
+        let mut e = Self::zero();
+        e.add_term(c, trig, monomial);
+        e
+    }
+
+    /// A single variable (a rate or an acceleration).
+    #[must_use]
+    pub fn var(v: Var) -> Self {
+        Self::term(C::from_rational(int(1)), Trig::One, Monomial::var(v))
+    }
+
+    /// `c cos(angle)`.
+    #[must_use]
+    pub fn cos(c: C, angle: Angle) -> Self {
+        let (s, t) = Trig::cos(angle);
+        Self::term(c.scale(&int(i64::from(s))), t, Monomial::one())
+    }
+
+    /// `c sin(angle)`.
+    #[must_use]
+    pub fn sin(c: C, angle: Angle) -> Self {
+        match Trig::sin(angle) {
+            Some((s, t)) => Self::term(c.scale(&int(i64::from(s))), t, Monomial::one()),
+            None => Self::zero(),
+        }
+    }
+
+    fn add_term(&mut self, c: C, trig: Trig, monomial: Monomial) {
+        if c.is_zero() {
+            return;
+        }
+        let key = (monomial, trig);
+        match self.terms.remove(&key) {
+            Some(old) => {
+                let sum = old + c;
+                if !sum.is_zero() {
+                    self.terms.insert(key, sum);
+                }
+            }
+            None => {
+                self.terms.insert(key, c);
+            }
+        }
+    }
+
+    /// The terms in canonical order: `(monomial, atom, coefficient)`.
+    pub fn terms(&self) -> impl Iterator<Item = (&Monomial, &Trig, &C)> + '_ {
+        self.terms.iter().map(|((m, t), c)| (m, t, c))
+    }
+
+    /// Number of terms.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.terms.len()
+    }
+
+    /// Whether this is zero.
+    #[must_use]
+    pub fn is_zero(&self) -> bool {
+        self.terms.is_empty()
+    }
+
+    /// `self + other`.
+    #[must_use]
+    pub fn add(&self, other: &Self) -> Self {
+        let mut out = self.clone();
+        for ((m, t), c) in &other.terms {
+            out.add_term(c.clone(), t.clone(), m.clone());
+        }
+        out
+    }
+
+    /// `self - other`.
+    #[must_use]
+    pub fn sub(&self, other: &Self) -> Self {
+        self.add(&other.scale(&int(-1)))
+    }
+
+    /// `r self` for a rational `r`.
+    #[must_use]
+    pub fn scale(&self, r: &Rational) -> Self {
+        let mut out = Self::zero();
+        for ((m, t), c) in &self.terms {
+            out.add_term(c.scale(r), t.clone(), m.clone());
+        }
+        out
+    }
+
+    /// `c self` for a coefficient `c`.
+    #[must_use]
+    pub fn scale_by(&self, k: &C) -> Self {
+        let mut out = Self::zero();
+        for ((m, t), c) in &self.terms {
+            out.add_term(c.clone() * k.clone(), t.clone(), m.clone());
+        }
+        out
+    }
+
+    /// `self x other`, trig products linearised.
+    #[must_use]
+    pub fn mul(&self, other: &Self) -> Self {
+        let mut out = Self::zero();
+        for ((m1, t1), c1) in &self.terms {
+            for ((m2, t2), c2) in &other.terms {
+                let m = m1.mul(m2);
+                let c = c1.clone() * c2.clone();
+                for (r, t) in t1.mul(t2) {
+                    out.add_term(c.scale(&r), t, m.clone());
+                }
+            }
+        }
+        out
+    }
+
+    /// `d/dq_j` (0-based joint).
+    #[must_use]
+    pub fn diff_q(&self, j: usize) -> Self {
+        let mut out = Self::zero();
+        for ((m, t), c) in &self.terms {
+            if let Some((k, dt)) = t.diff(j) {
+                out.add_term(c.scale(&int(i64::from(k))), dt, m.clone());
+            }
+        }
+        out
+    }
+
+    /// `d/dv` for a rate or acceleration `v`.
+    #[must_use]
+    pub fn diff_var(&self, v: Var) -> Self {
+        let mut out = Self::zero();
+        for ((m, t), c) in &self.terms {
+            if let Some((e, dm)) = m.diff(v) {
+                out.add_term(c.scale(&int(i64::from(e))), t.clone(), dm);
+            }
+        }
+        out
+    }
+
+    /// `d/dt` by the chain rule: `sum_j (d/dq_j) qd_j + (d/dqd_j) qdd_j`, for `n` joints.
+    ///
+    /// The expression must not contain accelerations (their derivative, the jerk, has no
+    /// variable here); the engine only differentiates positions and momenta.
+    #[must_use]
+    pub fn dt(&self, n: usize) -> Self {
+        debug_assert!(self
+            .terms
+            .keys()
+            .all(|(m, _)| m.powers().all(|(v, _)| matches!(v, Var::Qd(_)))));
+        let mut out = Self::zero();
+        for j in 0..n {
+            out = out
+                .add(&self.diff_q(j).mul(&Self::var(Var::Qd(j))))
+                .add(&self.diff_var(Var::Qd(j)).mul(&Self::var(Var::Qdd(j))));
+        }
+        out
+    }
+
+    /// The part multiplying exactly `monomial`, as an expression in `q` alone.
+    #[must_use]
+    pub fn coefficient_of(&self, monomial: &Monomial) -> Self {
+        let mut out = Self::zero();
+        for ((m, t), c) in &self.terms {
+            if m == monomial {
+                out.add_term(c.clone(), t.clone(), Monomial::one());
+            }
+        }
+        out
+    }
+
+    /// The terms whose monomial satisfies `keep`.
+    #[must_use]
+    pub fn filter(&self, keep: impl Fn(&Monomial) -> bool) -> Self {
+        let mut out = Self::zero();
+        for ((m, t), c) in &self.terms {
+            if keep(m) {
+                out.add_term(c.clone(), t.clone(), m.clone());
+            }
+        }
+        out
+    }
+
+    /// The distinct monomials, in order.
+    #[must_use]
+    pub fn monomials(&self) -> Vec<Monomial> {
+        let mut out: Vec<Monomial> = self.terms.keys().map(|(m, _)| m.clone()).collect();
+        out.dedup();
+        out
+    }
+
+    /// The coefficient of the constant atom with the empty monomial.
+    #[must_use]
+    pub fn constant_term(&self) -> Option<&C> {
+        self.terms.get(&(Monomial::one(), Trig::One))
+    }
+
+    /// The coefficient of `atom` with the empty monomial.
+    #[must_use]
+    pub fn coefficient(&self, atom: &Trig) -> Option<&C> {
+        self.terms.get(&(Monomial::one(), atom.clone()))
+    }
+}
+
+impl Expr<Rational> {
+    /// Numeric value at `(q, qd, qdd)`.
+    #[must_use]
+    pub fn eval(&self, q: &[f64], qd: &[f64], qdd: &[f64]) -> f64 {
+        self.terms()
+            .map(|(m, t, c)| crate::ring::to_f64(c).unwrap_or(f64::NAN) * t.eval(q) * m.eval(qd, qdd))
+            .sum()
+    }
+}
+
+impl<C: Coefficient> fmt::Display for Expr<C> {
+    /// Readable notation grouped by monomial: `(5/3 + c2) qd1^2 + (2/3 + c2) qd1 qd2 + ...`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.is_zero() {
+            return write!(f, "0");
+        }
+        let mut first_group = true;
+        for m in self.monomials() {
+            let group: Vec<(&Trig, &C)> = self
+                .terms
+                .iter()
+                .filter(|((mm, _), _)| *mm == m)
+                .map(|((_, t), c)| (t, c))
+                .collect();
+            let body = render_sum(&group);
+            let bare = m == Monomial::one();
+            if group.len() == 1 {
+                // A single term needs no parentheses; its sign joins the outer sum.
+                let (sign, text) = match body.strip_prefix('-') {
+                    Some(rest) => ("-", rest.to_string()),
+                    None => ("+", body.clone()),
+                };
+                let text = if !bare && text == "1" { String::new() } else { text };
+                let sep = if bare || text.is_empty() { "" } else { " " };
+                match (first_group, sign) {
+                    (true, "-") => write!(f, "-{text}{sep}")?,
+                    (true, _) => write!(f, "{text}{sep}")?,
+                    (false, s) => write!(f, " {s} {text}{sep}")?,
+                }
+            } else {
+                if !first_group {
+                    write!(f, " + ")?;
+                }
+                write!(f, "({body}){}", if bare { "" } else { " " })?;
+            }
+            if !bare {
+                write!(f, "{m}")?;
+            }
+            first_group = false;
+        }
+        Ok(())
+    }
+}
+
+/// `5/3 + c2 - 1/2 s23`.
+fn render_sum<C: Coefficient>(terms: &[(&Trig, &C)]) -> String {
+    let mut out = String::new();
+    for (i, (t, c)) in terms.iter().enumerate() {
+        let text = c.to_string();
+        let (neg, mag) = match text.strip_prefix('-') {
+            Some(rest) => (true, rest.to_string()),
+            None => (false, text),
+        };
+        let body = match (t, mag.as_str()) {
+            (Trig::One, _) => mag,
+            (_, "1") => t.to_string(),
+            _ => format!("{mag} {t}"),
+        };
+        match (i, neg) {
+            (0, true) => out.push_str(&format!("-{body}")),
+            (0, false) => out.push_str(&body),
+            (_, true) => out.push_str(&format!(" - {body}")),
+            (_, false) => out.push_str(&format!(" + {body}")),
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ring::ratio;
+
+    #[test]
+    fn pythagoras_is_structural() {
+        let c = Expr::<Rational>::cos(int(1), Angle::new(vec![1]));
+        let s = Expr::<Rational>::sin(int(1), Angle::new(vec![1]));
+        let one = c.mul(&c).add(&s.mul(&s));
+        assert_eq!(one, Expr::constant(int(1)));
+    }
+
+    #[test]
+    fn time_derivative_uses_the_chain_rule() {
+        // d/dt (qd1 cos q2) = qdd1 cos q2 - qd1 qd2 sin q2
+        let e = Expr::<Rational>::cos(int(1), Angle::new(vec![0, 1])).mul(&Expr::var(Var::Qd(0)));
+        let d = e.dt(2);
+        let expected = Expr::cos(int(1), Angle::new(vec![0, 1]))
+            .mul(&Expr::var(Var::Qdd(0)))
+            .sub(
+                &Expr::sin(int(1), Angle::new(vec![0, 1]))
+                    .mul(&Expr::var(Var::Qd(0)))
+                    .mul(&Expr::var(Var::Qd(1))),
+            );
+        assert_eq!(d, expected);
+    }
+
+    #[test]
+    fn display_reads_like_the_paper() {
+        let qd1 = Expr::<Rational>::var(Var::Qd(0));
+        let e = Expr::constant(ratio(5, 3))
+            .add(&Expr::cos(int(1), Angle::new(vec![0, 1])))
+            .mul(&qd1)
+            .mul(&qd1)
+            .add(&Expr::constant(ratio(-1, 3)).mul(&qd1));
+        assert_eq!(e.to_string(), "-1/3 qd1 + (5/3 + c2) qd1^2");
+    }
+}

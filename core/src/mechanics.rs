@@ -1,0 +1,311 @@
+//! Lagrangian mechanics of a planar serial arm, following the paper's route: velocities of
+//! each centre of mass and link angular velocities, kinetic energy (translation of the centre
+//! of mass plus rotation about it), potential energy of the centres of mass, Lagrange's
+//! equation, then M, c and g read off the result and C from Christoffel symbols.
+
+use std::fmt;
+
+use crate::expr::{Expr, Monomial, Var};
+use crate::ring::{int, ratio, Coefficient, Rational};
+use crate::trig::Angle;
+
+/// One revolute link: exact parameters.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LinkSpec<C = Rational> {
+    /// Joint-to-joint length.
+    pub length: C,
+    /// Mass.
+    pub mass: C,
+    /// Moment of inertia about the centre of mass.
+    pub inertia: C,
+    /// Distance of the centre of mass from the link's own joint, along the link.
+    pub com: C,
+}
+
+impl LinkSpec<Rational> {
+    /// A uniform rod: inertia `m l^2 / 12`, centre of mass at `l / 2`.
+    #[must_use]
+    pub fn rod(length: Rational, mass: Rational) -> Self {
+        Self {
+            inertia: &mass * &length * &length * ratio(1, 12),
+            com: &length * ratio(1, 2),
+            length,
+            mass,
+        }
+    }
+}
+
+/// A planar serial arm of revolute links, base first, with gravity of magnitude `gravity`
+/// along -y.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ArmSpec<C = Rational> {
+    /// The links, base first.
+    pub links: Vec<LinkSpec<C>>,
+    /// Magnitude of gravity, along -y.
+    pub gravity: C,
+}
+
+impl ArmSpec<Rational> {
+    /// `n` equal uniform rods of unit length and mass, no gravity: the paper's equal links.
+    #[must_use]
+    pub fn paper(n: usize) -> Self {
+        Self {
+            links: vec![LinkSpec::rod(int(1), int(1)); n],
+            gravity: int(0),
+        }
+    }
+}
+
+/// The equations of motion `tau = M(q) qdd + c(q, qd) + g(q)`, exact.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Dynamics<C = Rational> {
+    /// Number of joints.
+    pub n: usize,
+    /// Kinetic energy T(q, qd).
+    pub kinetic_energy: Expr<C>,
+    /// Potential energy V(q), zero at y = 0.
+    pub potential_energy: Expr<C>,
+    /// The Lagrangian L = T - V.
+    pub lagrangian: Expr<C>,
+    /// Lagrange's equation, `d/dt dL/dqd_i - dL/dq_i`, per joint.
+    pub torques: Vec<Expr<C>>,
+    /// The mass matrix, row-major.
+    pub mass_matrix: Vec<Vec<Expr<C>>>,
+    /// The velocity-product torques c(q, qd).
+    pub coriolis: Vec<Expr<C>>,
+    /// The Coriolis matrix from Christoffel symbols, row-major: `C qd = c`.
+    pub coriolis_matrix: Vec<Vec<Expr<C>>>,
+    /// The gravity torques g(q) = dV/dq.
+    pub gravity: Vec<Expr<C>>,
+}
+
+/// Forward kinematics and statics of the arm, exact.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Kinematics<C = Rational> {
+    /// Number of joints.
+    pub n: usize,
+    /// Joint positions `(x, y)`, joint 1 at the origin, then the tip last (n + 1 entries).
+    pub points: Vec<(Expr<C>, Expr<C>)>,
+    /// The absolute angle of the last link.
+    pub tip_angle: Angle,
+    /// The 3 x n Jacobian, row-major: d/dt of tip x, tip y, last angle.
+    pub jacobian: Vec<Vec<Expr<C>>>,
+    /// `r^2 = x^2 + y^2` of the tip: independent of q1.
+    pub radius_squared: Expr<C>,
+}
+
+fn rate(j: usize) -> Var {
+    Var::Qd(j)
+}
+
+/// Absolute angle of link `i` (0-based): `q_1 + ... + q_{i+1}`.
+fn link_angle(i: usize) -> Angle {
+    Angle::range(0, i + 1)
+}
+
+/// `(x, y)` of the point at distance `along` on link `i`, all earlier links full length.
+fn point_on_link<C: Coefficient>(arm: &ArmSpec<C>, i: usize, along: &C) -> (Expr<C>, Expr<C>) {
+    let mut x = Expr::zero();
+    let mut y = Expr::zero();
+    for (j, link) in arm.links.iter().enumerate().take(i + 1) {
+        let r = if j == i { along } else { &link.length };
+        x = x.add(&Expr::cos(r.clone(), link_angle(j)));
+        y = y.add(&Expr::sin(r.clone(), link_angle(j)));
+    }
+    (x, y)
+}
+
+impl<C: Coefficient> Kinematics<C> {
+    /// Derives the forward kinematics.
+    #[must_use]
+    pub fn derive(arm: &ArmSpec<C>) -> Self {
+        let n = arm.links.len();
+        let mut points = vec![(Expr::zero(), Expr::zero())];
+        for i in 0..n {
+            points.push(point_on_link(arm, i, &arm.links[i].length));
+        }
+        let (x, y) = points[n].clone();
+        let jacobian = vec![
+            (0..n).map(|j| x.diff_q(j)).collect(),
+            (0..n).map(|j| y.diff_q(j)).collect(),
+            (0..n)
+                .map(|_| Expr::constant(C::from_rational(int(1))))
+                .collect(),
+        ];
+        let radius_squared = x.mul(&x).add(&y.mul(&y));
+        Self {
+            n,
+            points,
+            tip_angle: link_angle(n.saturating_sub(1)),
+            jacobian,
+            radius_squared,
+        }
+    }
+}
+
+impl<C: Coefficient> Dynamics<C> {
+    /// Derives the equations of motion by Lagrange's equation.
+    #[must_use]
+    pub fn derive(arm: &ArmSpec<C>) -> Self {
+        let n = arm.links.len();
+        let half = ratio(1, 2);
+        let mut kinetic = Expr::zero();
+        let mut potential = Expr::zero();
+        let mut omega = Expr::zero();
+        for (i, link) in arm.links.iter().enumerate() {
+            omega = omega.add(&Expr::var(rate(i)));
+            let (x, y) = point_on_link(arm, i, &link.com);
+            // Velocity of the centre of mass by the chain rule on its position.
+            let (vx, vy) = (x.dt(n), y.dt(n));
+            let v2 = vx.mul(&vx).add(&vy.mul(&vy));
+            kinetic = kinetic
+                .add(&v2.scale_by(&link.mass).scale(&half))
+                .add(&omega.mul(&omega).scale_by(&link.inertia).scale(&half));
+            potential = potential.add(&y.scale_by(&(arm.gravity.clone() * link.mass.clone())));
+        }
+        let lagrangian = kinetic.sub(&potential);
+        let torques: Vec<Expr<C>> = (0..n)
+            .map(|i| {
+                lagrangian
+                    .diff_var(rate(i))
+                    .dt(n)
+                    .sub(&lagrangian.diff_q(i))
+            })
+            .collect();
+        let mass_matrix: Vec<Vec<Expr<C>>> = torques
+            .iter()
+            .map(|t| {
+                (0..n)
+                    .map(|j| t.coefficient_of(&Monomial::var(Var::Qdd(j))))
+                    .collect()
+            })
+            .collect();
+        let gravity: Vec<Expr<C>> = torques
+            .iter()
+            .map(|t| t.coefficient_of(&Monomial::one()))
+            .collect();
+        let coriolis: Vec<Expr<C>> = torques
+            .iter()
+            .map(|t| t.filter(|m| m.degree() == 2 && m.powers().all(|(v, _)| matches!(v, Var::Qd(_)))))
+            .collect();
+        let coriolis_matrix = christoffel(&mass_matrix);
+        Self {
+            n,
+            kinetic_energy: kinetic,
+            potential_energy: potential,
+            lagrangian,
+            torques,
+            mass_matrix,
+            coriolis,
+            coriolis_matrix,
+            gravity,
+        }
+    }
+
+    /// The mass matrix as the Hessian of the kinetic energy in the rates: an independent
+    /// reading of M that must agree with the one read off Lagrange's equation.
+    #[must_use]
+    pub fn mass_matrix_from_energy(&self) -> Vec<Vec<Expr<C>>> {
+        (0..self.n)
+            .map(|i| {
+                (0..self.n)
+                    .map(|j| self.kinetic_energy.diff_var(rate(i)).diff_var(rate(j)))
+                    .collect()
+            })
+            .collect()
+    }
+}
+
+/// `C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k`.
+fn christoffel<C: Coefficient>(m: &[Vec<Expr<C>>]) -> Vec<Vec<Expr<C>>> {
+    let n = m.len();
+    let half = ratio(1, 2);
+    (0..n)
+        .map(|i| {
+            (0..n)
+                .map(|j| {
+                    let mut c = Expr::zero();
+                    for k in 0..n {
+                        let gamma = m[i][j]
+                            .diff_q(k)
+                            .add(&m[i][k].diff_q(j))
+                            .sub(&m[j][k].diff_q(i))
+                            .scale(&half);
+                        c = c.add(&gamma.mul(&Expr::var(rate(k))));
+                    }
+                    c
+                })
+                .collect()
+        })
+        .collect()
+}
+
+impl<C: Coefficient> fmt::Display for Dynamics<C> {
+    /// The derivation in readable notation: L, M, c, g.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(f, "T = {}", self.kinetic_energy)?;
+        writeln!(f, "V = {}", self.potential_energy)?;
+        writeln!(f, "L = T - V = {}", self.lagrangian)?;
+        for i in 0..self.n {
+            for j in i..self.n {
+                writeln!(f, "M{}{} = {}", i + 1, j + 1, self.mass_matrix[i][j])?;
+            }
+        }
+        for i in 0..self.n {
+            writeln!(f, "c{} = {}", i + 1, self.coriolis[i])?;
+        }
+        for i in 0..self.n {
+            writeln!(f, "g{} = {}", i + 1, self.gravity[i])?;
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::trig::Trig;
+
+    fn c(k: &[i32]) -> Trig {
+        Trig::Cos(Angle::new(k.to_vec()))
+    }
+
+    #[test]
+    fn two_equal_links_mass_matrix() {
+        let d = Dynamics::derive(&ArmSpec::paper(2));
+        // M = m l^2 [[5/3 + c2, 1/3 + c2/2], [1/3 + c2/2, 1/3]]
+        assert_eq!(d.mass_matrix[0][0].constant_term(), Some(&ratio(5, 3)));
+        assert_eq!(d.mass_matrix[0][0].coefficient(&c(&[0, 1])), Some(&int(1)));
+        assert_eq!(d.mass_matrix[0][1].constant_term(), Some(&ratio(1, 3)));
+        assert_eq!(d.mass_matrix[0][1].coefficient(&c(&[0, 1])), Some(&ratio(1, 2)));
+        assert_eq!(d.mass_matrix[1][1], Expr::constant(ratio(1, 3)));
+        assert_eq!(d.mass_matrix[0][1], d.mass_matrix[1][0]);
+    }
+
+    #[test]
+    fn mass_matrix_two_ways_agree_and_c_is_christoffel() {
+        for n in 1..=4 {
+            let mut arm = ArmSpec::paper(n);
+            arm.gravity = ratio(981, 100);
+            for (i, l) in arm.links.iter_mut().enumerate() {
+                *l = LinkSpec {
+                    length: ratio(i as i64 + 2, 3),
+                    mass: ratio(2 * i as i64 + 1, 2),
+                    inertia: ratio(1, i as i64 + 5),
+                    com: ratio(1, i as i64 + 2),
+                };
+            }
+            let d = Dynamics::derive(&arm);
+            assert_eq!(d.mass_matrix, d.mass_matrix_from_energy(), "n = {n}");
+            for i in 0..n {
+                let mut cqd = Expr::zero();
+                for j in 0..n {
+                    cqd = cqd.add(&d.coriolis_matrix[i][j].mul(&Expr::var(Var::Qd(j))));
+                }
+                assert_eq!(cqd, d.coriolis[i], "n = {n}, row {i}");
+                // g = dV/dq
+                assert_eq!(d.gravity[i], d.potential_energy.diff_q(i));
+            }
+        }
+    }
+}
