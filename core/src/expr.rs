@@ -389,7 +389,11 @@ impl<C: Coefficient> fmt::Display for Expr<C> {
                 if !first_group {
                     write!(f, " + ")?;
                 }
-                write!(f, "({body}){}", if bare { "" } else { " " })?;
+                if bare && first_group && self.monomials().len() == 1 {
+                    write!(f, "{body}")?;
+                } else {
+                    write!(f, "({body}){}", if bare { "" } else { " " })?;
+                }
             }
             if !bare {
                 write!(f, "{m}")?;

@@ -11,3 +11,6 @@ pub use expr::{Expr, Monomial, Var};
 pub use mechanics::{ArmSpec, Dynamics, Kinematics, LinkSpec};
 pub use ring::{Coefficient, Rational};
 pub use trig::{Angle, Trig};
+pub mod emit;
+pub mod generate;
+pub mod slp;

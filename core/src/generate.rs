@@ -1,0 +1,501 @@
+//! The `impl PlanarArm<N>` that `#[derive(PlanarArm)]` emits, assembled from the rendered
+//! methods of [`emit`](crate::emit).
+
+use std::fmt::Write as _;
+
+use proc_macro2::{Literal, TokenStream};
+use quote::quote;
+
+use crate::emit::{
+    check_representable, f64_tokens, formula_doc, input_name, local, render, Derived, EmitError,
+    Method,
+};
+use crate::expr::Expr;
+use crate::ring::{to_i128_pair, Rational};
+use crate::slp::Input;
+use crate::trig::Trig;
+
+/// The pieces of the user's type that the impl header needs.
+pub struct Header {
+    /// `impl<...>` generics.
+    pub impl_generics: TokenStream,
+    /// The type, with its generics.
+    pub ty: TokenStream,
+    /// The where clause.
+    pub where_clause: TokenStream,
+}
+
+/// A parameter of a generated method.
+#[derive(Clone, Copy)]
+enum Param {
+    /// `&SVector<f64, N>` unpacked into per-joint locals.
+    Joints(&'static str, fn(usize) -> Input),
+    /// `&Vector2<f64>` unpacked into `u, v`.
+    Force,
+    /// `f64` tip torque.
+    Torque,
+}
+
+struct Fn<'a> {
+    name: &'static str,
+    params: &'a [Param],
+    ret: TokenStream,
+    doc: String,
+    method: Method,
+    /// Builds the return value from the output identifiers.
+    finish: Box<dyn std::ops::Fn(&[proc_macro2::Ident]) -> TokenStream + 'a>,
+}
+
+fn emit_fn(n: usize, f: Fn<'_>) -> Result<TokenStream, EmitError> {
+    let rendered = render(&f.method)?;
+    let nn = Literal::usize_unsuffixed(n);
+    let mut params = Vec::new();
+    let mut unpack = Vec::new();
+    for p in f.params {
+        match *p {
+            Param::Joints(name, kind) => {
+                let used: Vec<bool> = (0..n).map(|j| rendered.inputs_used.contains(&kind(j))).collect();
+                let pname = if used.iter().any(|&u| u) {
+                    local(name)
+                } else {
+                    local(&format!("_{name}"))
+                };
+                params.push(quote!(#pname: &::planar_arm::nalgebra::SVector<f64, #nn>));
+                if used.iter().any(|&u| u) {
+                    let pats = (0..n).map(|j| {
+                        if used[j] {
+                            let id = local(&input_name(kind(j)));
+                            quote!(#id)
+                        } else {
+                            quote!(_)
+                        }
+                    });
+                    unpack.push(quote!(let [#(#pats),*] = ::planar_arm::__private::unpack(#pname);));
+                }
+            }
+            Param::Force => {
+                let u = rendered.inputs_used.contains(&Input::Force(0));
+                let v = rendered.inputs_used.contains(&Input::Force(1));
+                let pname = if u || v { local("force") } else { local("_force") };
+                params.push(quote!(#pname: &::planar_arm::nalgebra::Vector2<f64>));
+                if u || v {
+                    let (u, v) = (local("u"), local("v"));
+                    unpack.push(quote!(let [#u, #v] = ::planar_arm::__private::unpack(#pname);));
+                }
+            }
+            Param::Torque => {
+                let pname = if rendered.inputs_used.contains(&Input::TipTorque) {
+                    local("torque")
+                } else {
+                    local("_torque")
+                };
+                params.push(quote!(#pname: f64));
+            }
+        }
+    }
+    let name = quote::format_ident!("{}", f.name);
+    let statements = &rendered.statements;
+    let result = (f.finish)(&rendered.outputs);
+    let ret = &f.ret;
+    let doc = format!("{}\n\nCost: {}.", f.doc, f.method.op_count());
+    Ok(quote! {
+        #[doc = #doc]
+        #[inline]
+        fn #name(&self, #(#params),*) -> #ret {
+            #(#unpack)*
+            #(#statements)*
+            #result
+        }
+    })
+}
+
+fn matrix(rows: usize, cols: usize, ids: &[proc_macro2::Ident]) -> TokenStream {
+    let rows = (0..rows).map(|r| {
+        let row = &ids[r * cols..(r + 1) * cols];
+        quote!([#(#row),*])
+    });
+    quote!(::planar_arm::__private::matrix([#(#rows),*]))
+}
+
+fn vector(ids: &[proc_macro2::Ident]) -> TokenStream {
+    quote!(::planar_arm::__private::vector([#(#ids),*]))
+}
+
+fn exact_terms(e: &Expr) -> Result<TokenStream, EmitError> {
+    let mut terms = Vec::new();
+    for (m, t, c) in e.terms() {
+        let (num, den) = to_i128_pair(c).ok_or_else(|| EmitError {
+            message: format!("exact coefficient {c} does not fit in i128"),
+        })?;
+        let (num, den) = (Literal::i128_unsuffixed(num), Literal::i128_unsuffixed(den));
+        let (kind, angle) = match t {
+            Trig::One => (0u8, &[][..]),
+            Trig::Cos(a) => (1, a.coefficients()),
+            Trig::Sin(a) => (2, a.coefficients()),
+        };
+        let kind = Literal::u8_unsuffixed(kind);
+        let angle = angle.iter().map(|&k| Literal::i32_unsuffixed(k));
+        let powers = m.powers().map(|(v, e)| {
+            let (k, j) = match v {
+                crate::expr::Var::Qd(j) => (quote!(Qd), j),
+                crate::expr::Var::Qdd(j) => (quote!(Qdd), j),
+            };
+            let (j, e) = (Literal::usize_unsuffixed(j), Literal::u32_unsuffixed(e));
+            quote!((::planar_arm::__private::#k(#j), #e))
+        });
+        terms.push(quote!(::planar_arm::__private::term(#num, #den, #kind, &[#(#angle),*], &[#(#powers),*])));
+    }
+    Ok(quote!(&[#(#terms),*]))
+}
+
+fn link_tokens(d: &Derived) -> Result<Vec<TokenStream>, EmitError> {
+    d.arm
+        .links
+        .iter()
+        .map(|l| {
+            let (length, mass, inertia, com) = (
+                f64_tokens(&l.length)?,
+                f64_tokens(&l.mass)?,
+                f64_tokens(&l.inertia)?,
+                f64_tokens(&l.com)?,
+            );
+            Ok(quote!(::planar_arm::Link { length: #length, mass: #mass, inertia: #inertia, com: #com }))
+        })
+        .collect()
+}
+
+fn rows_doc<'a>(prefix: &str, entries: &'a [Expr]) -> Vec<(String, &'a Expr)> {
+    entries
+        .iter()
+        .enumerate()
+        .map(|(i, e)| (format!("{prefix}{}", i + 1), e))
+        .collect()
+}
+
+/// The complete `impl ::planar_arm::PlanarArm<N>` for the arm.
+///
+/// # Errors
+/// If a derived constant does not fit in `f64` or in the `i128` of the exact `const` data.
+#[allow(clippy::too_many_lines)] // one block per generated method, kept side by side
+pub fn generate(d: &Derived, header: &Header) -> Result<TokenStream, EmitError> {
+    check_representable(d)?;
+    let n = d.arm.links.len();
+    let nn = Literal::usize_unsuffixed(n);
+    let dy = &d.dynamics;
+    let q = Param::Joints("q", Input::Q);
+    let qd = Param::Joints("qd", Input::Qd);
+    let qdd = Param::Joints("qdd", Input::Qdd);
+    let tau = Param::Joints("tau", Input::Tau);
+    let svec = quote!(::planar_arm::nalgebra::SVector<f64, #nn>);
+    let smat = quote!(::planar_arm::nalgebra::SMatrix<f64, #nn, #nn>);
+
+    let mut m_rows = Vec::new();
+    for i in 0..n {
+        for j in i..n {
+            m_rows.push((format!("M{}{}", i + 1, j + 1), &dy.mass_matrix[i][j]));
+        }
+    }
+    let mut cm_rows = Vec::new();
+    for i in 0..n {
+        for j in 0..n {
+            cm_rows.push((format!("C{}{}", i + 1, j + 1), &dy.coriolis_matrix[i][j]));
+        }
+    }
+    let conventions = "Joint angles `q`, rates `qd`, accelerations `qdd` (1-based in the formulas); \
+                       `cK` and `sK...` are the cosine and sine of the sum of the joint angles named by the digits.";
+    let mut fns = Vec::new();
+    fns.push(emit_fn(n, Fn {
+        name: "mass_matrix",
+        params: &[q],
+        ret: smat.clone(),
+        doc: formula_doc(&format!("The mass matrix M(q), derived exactly (symmetric; upper triangle shown). {conventions}"), &m_rows),
+        method: d.mass_matrix_method(),
+        finish: Box::new(|ids| matrix(n, n, ids)),
+    })?);
+    fns.push(emit_fn(n, Fn {
+        name: "coriolis",
+        params: &[q, qd],
+        ret: svec.clone(),
+        doc: formula_doc("The velocity-product torques c(q, qd).", &rows_doc("c", &dy.coriolis)),
+        method: d.coriolis_method(),
+        finish: Box::new(vector),
+    })?);
+    fns.push(emit_fn(n, Fn {
+        name: "coriolis_matrix",
+        params: &[q, qd],
+        ret: smat.clone(),
+        doc: formula_doc("The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.", &cm_rows),
+        method: d.coriolis_matrix_method(),
+        finish: Box::new(|ids| matrix(n, n, ids)),
+    })?);
+    fns.push(emit_fn(n, Fn {
+        name: "gravity",
+        params: &[q],
+        ret: svec.clone(),
+        doc: formula_doc("The gravity torques g(q) = dV/dq.", &rows_doc("g", &dy.gravity)),
+        method: d.gravity_method(),
+        finish: Box::new(vector),
+    })?);
+    fns.push(emit_fn(n, Fn {
+        name: "inverse_dynamics",
+        params: &[q, qd, qdd],
+        ret: svec.clone(),
+        doc: formula_doc("Lagrange's equation, tau_i = d/dt dL/dqd_i - dL/dq_i, expanded.", &rows_doc("tau", &dy.torques)),
+        method: d.inverse_dynamics_method(),
+        finish: Box::new(vector),
+    })?);
+    let fd_doc = match n {
+        1 => "qdd = (tau - c - g) / M11.".to_string(),
+        2 => "qdd = M^-1 (tau - c - g) in closed form (Cramer's rule, det = M11 M22 - M12^2 > 0).".to_string(),
+        _ => "qdd = M^-1 (tau - c - g) by an unrolled L D L^T factorisation of M (no square roots, no allocation).".to_string(),
+    };
+    fns.push(emit_fn(n, Fn {
+        name: "forward_dynamics",
+        params: &[q, qd, tau],
+        ret: svec.clone(),
+        doc: fd_doc,
+        method: d.forward_dynamics_method(),
+        finish: Box::new(vector),
+    })?);
+    fns.push(emit_fn(n, Fn {
+        name: "kinetic_energy",
+        params: &[q, qd],
+        ret: quote!(f64),
+        doc: formula_doc("The kinetic energy.", &[("T".into(), &dy.kinetic_energy)]),
+        method: d.kinetic_energy_method(),
+        finish: Box::new(|ids| { let i = &ids[0]; quote!(#i) }),
+    })?);
+    fns.push(emit_fn(n, Fn {
+        name: "potential_energy",
+        params: &[q],
+        ret: quote!(f64),
+        doc: formula_doc("The potential energy (zero at y = 0).", &[("V".into(), &dy.potential_energy)]),
+        method: d.potential_energy_method(),
+        finish: Box::new(|ids| { let i = &ids[0]; quote!(#i) }),
+    })?);
+    let ki = &d.kinematics;
+    let (tx, ty) = &ki.points[n];
+    fns.push(emit_fn(n, Fn {
+        name: "tip_pose",
+        params: &[q],
+        ret: quote!(::planar_arm::nalgebra::Isometry2<f64>),
+        doc: formula_doc(&format!("The tip pose; the orientation is the last link's angle {}.", ki.tip_angle), &[("x".into(), tx), ("y".into(), ty)]),
+        method: d.tip_pose_method(),
+        finish: Box::new(|ids| {
+            let (x, y, c, s) = (&ids[0], &ids[1], &ids[2], &ids[3]);
+            quote!(::planar_arm::__private::pose(#x, #y, #c, #s))
+        }),
+    })?);
+    let mut j_rows = Vec::new();
+    for (r, row) in ki.jacobian.iter().enumerate() {
+        for (j, e) in row.iter().enumerate() {
+            j_rows.push((format!("J{}{}", r + 1, j + 1), e));
+        }
+    }
+    fns.push(emit_fn(n, Fn {
+        name: "jacobian",
+        params: &[q],
+        ret: quote!(::planar_arm::nalgebra::SMatrix<f64, 3, #nn>),
+        doc: formula_doc("The Jacobian d(x, y, phi)/dq.", &j_rows),
+        method: d.jacobian_method(),
+        finish: Box::new(|ids| matrix(3, n, ids)),
+    })?);
+    fns.push(emit_fn(n, Fn {
+        name: "joint_positions",
+        params: &[q],
+        ret: quote!([::planar_arm::nalgebra::Point2<f64>; #nn]),
+        doc: "The position of each joint, joint 1 at the origin.".to_string(),
+        method: d.joint_positions_method(),
+        finish: Box::new(|ids| {
+            let pts = ids.chunks(2).map(|p| {
+                let (x, y) = (&p[0], &p[1]);
+                quote!(::planar_arm::nalgebra::Point2::new(#x, #y))
+            });
+            quote!([#(#pts),*])
+        }),
+    })?);
+    fns.push(emit_fn(n, Fn {
+        name: "tip_polar",
+        params: &[q],
+        ret: quote!((f64, f64)),
+        doc: formula_doc("The tip in polar form: r from r^2 (which does not depend on q1), theta = atan2(y, x).", &[("r^2".into(), &ki.radius_squared)]),
+        method: d.tip_polar_method(),
+        finish: Box::new(|ids| {
+            let (r2, x, y) = (&ids[0], &ids[1], &ids[2]);
+            quote!(::planar_arm::__private::polar(#r2, #x, #y))
+        }),
+    })?);
+    fns.push(emit_fn(n, Fn {
+        name: "joint_torques",
+        params: &[q, Param::Force, Param::Torque],
+        ret: svec.clone(),
+        doc: "Statics: tau = J^T (u, v, torque), the motor torques that make the tip exert force (u, v) and torque `torque`.".to_string(),
+        method: d.joint_torques_method(),
+        finish: Box::new(vector),
+    })?);
+
+    let links = link_tokens(d)?;
+    let gravity = f64_tokens(&d.arm.gravity)?;
+    let m_exact = dy
+        .mass_matrix
+        .iter()
+        .map(|row| {
+            let row = row.iter().map(exact_terms).collect::<Result<Vec<_>, _>>()?;
+            Ok(quote!([#(#row),*]))
+        })
+        .collect::<Result<Vec<_>, EmitError>>()?;
+    let c_exact = dy.coriolis.iter().map(exact_terms).collect::<Result<Vec<_>, _>>()?;
+    let g_exact = dy.gravity.iter().map(exact_terms).collect::<Result<Vec<_>, _>>()?;
+    let t_exact = exact_terms(&dy.kinetic_energy)?;
+    let v_exact = exact_terms(&dy.potential_energy)?;
+    let Header { impl_generics, ty, where_clause } = header;
+    Ok(quote! {
+        #[automatically_derived]
+        impl #impl_generics ::planar_arm::PlanarArm<#nn> for #ty #where_clause {
+            const LINKS: [::planar_arm::Link; #nn] = [#(#links),*];
+            const GRAVITY: f64 = #gravity;
+            const EXACT: ::planar_arm::exact::Derivation<#nn> = ::planar_arm::exact::Derivation {
+                kinetic_energy: #t_exact,
+                potential_energy: #v_exact,
+                mass_matrix: [#(#m_exact),*],
+                coriolis: [#(#c_exact),*],
+                gravity: [#(#g_exact),*],
+            };
+            #(#fns)*
+        }
+    })
+}
+
+/// A readable summary of the derivation for docs: link table and Lagrangian.
+#[must_use]
+pub fn summary(d: &Derived) -> String {
+    let mut s = String::new();
+    for (i, l) in d.arm.links.iter().enumerate() {
+        let _ = writeln!(
+            s,
+            "link {}: length {}, mass {}, inertia {}, com {}",
+            i + 1,
+            l.length,
+            l.mass,
+            l.inertia,
+            l.com
+        );
+    }
+    let _ = writeln!(s, "gravity {}", d.arm.gravity);
+    s
+}
+
+#[allow(dead_code)]
+fn _rational(_: &Rational) {}
+
+/// Closed-form inverse kinematics and inverse statics for two and three links (the paper's
+/// solutions, specialised by inlining the arm's constant lengths); nothing for other `N`.
+#[must_use]
+pub fn closed_forms(d: &Derived, header: &Header) -> TokenStream {
+    let Header { impl_generics, ty, where_clause } = header;
+    let lengths: Vec<TokenStream> = d
+        .arm
+        .links
+        .iter()
+        .map(|l| f64_tokens(&l.length).unwrap_or_else(|_| quote!(0.0)))
+        .collect();
+    let target = local("target");
+    let (q, tau) = (local("q"), local("tau"));
+    match lengths.as_slice() {
+        [l1, l2] => {
+            let equal = d.arm.links[0].length == d.arm.links[1].length;
+            let ik = if equal {
+                quote!(::planar_arm::kinematics::ik2_equal(#l1, #target))
+            } else {
+                quote!(::planar_arm::kinematics::ik2(#l1, #l2, #target))
+            };
+            let doc = if equal {
+                "The paper's closed form for two equal links: cos(q2/2) = r / 2l, q1 + q2/2 = atan2(y, x)."
+            } else {
+                "The paper's closed form: cos q2 by the law of cosines, q1 from the rotated equations."
+            };
+            quote! {
+                #[automatically_derived]
+                impl #impl_generics ::planar_arm::kinematics::ClosedFormIk<2> for #ty #where_clause {
+                    type Target = ::planar_arm::nalgebra::Point2<f64>;
+                    #[doc = #doc]
+                    #[inline]
+                    fn inverse_kinematics(&self, #target: &::planar_arm::nalgebra::Point2<f64>)
+                        -> ::core::result::Result<[::planar_arm::nalgebra::SVector<f64, 2>; 2], ::planar_arm::ArmError> {
+                        #ik
+                    }
+                }
+                #[automatically_derived]
+                impl #impl_generics ::planar_arm::kinematics::TipForce for #ty #where_clause {
+                    #[inline]
+                    fn tip_force(&self, #q: &::planar_arm::nalgebra::SVector<f64, 2>, #tau: &::planar_arm::nalgebra::SVector<f64, 2>)
+                        -> ::core::result::Result<::planar_arm::nalgebra::Vector2<f64>, ::planar_arm::ArmError> {
+                        ::planar_arm::kinematics::tip_force2(#l1, #l2, #q, #tau)
+                    }
+                }
+            }
+        }
+        [l1, l2, l3] => quote! {
+            #[automatically_derived]
+            impl #impl_generics ::planar_arm::kinematics::ClosedFormIk<3> for #ty #where_clause {
+                type Target = ::planar_arm::nalgebra::Isometry2<f64>;
+                /// Through the wrist point, as in the paper: the two-link solution for
+                /// (x - l3 cos phi, y - l3 sin phi), then q3 = phi - q1 - q2.
+                #[inline]
+                fn inverse_kinematics(&self, #target: &::planar_arm::nalgebra::Isometry2<f64>)
+                    -> ::core::result::Result<[::planar_arm::nalgebra::SVector<f64, 3>; 2], ::planar_arm::ArmError> {
+                    ::planar_arm::kinematics::ik3(#l1, #l2, #l3, #target)
+                }
+            }
+            #[automatically_derived]
+            impl #impl_generics ::planar_arm::kinematics::TipWrench for #ty #where_clause {
+                #[inline]
+                fn tip_wrench(&self, #q: &::planar_arm::nalgebra::SVector<f64, 3>, #tau: &::planar_arm::nalgebra::SVector<f64, 3>)
+                    -> ::core::result::Result<(::planar_arm::nalgebra::Vector2<f64>, f64), ::planar_arm::ArmError> {
+                    ::planar_arm::kinematics::tip_wrench3(#l1, #l2, #l3, #q, #tau)
+                }
+            }
+        },
+        _ => TokenStream::new(),
+    }
+}
+
+/// A stub `impl PlanarArm<n>` whose methods are unreachable: emitted next to a compile error
+/// so that uses of the trait elsewhere do not add a cascade of errors.
+#[must_use]
+pub fn stub(n: usize, header: &Header) -> TokenStream {
+    let Header { impl_generics, ty, where_clause } = header;
+    let nn = Literal::usize_unsuffixed(n);
+    let v = quote!(&::planar_arm::nalgebra::SVector<f64, #nn>);
+    let m = quote!(::planar_arm::nalgebra::SMatrix<f64, #nn, #nn>);
+    let sv = quote!(::planar_arm::nalgebra::SVector<f64, #nn>);
+    let body = quote!({ ::core::unreachable!() });
+    quote! {
+        #[automatically_derived]
+        #[allow(unused_variables)]
+        impl #impl_generics ::planar_arm::PlanarArm<#nn> for #ty #where_clause {
+            const LINKS: [::planar_arm::Link; #nn] = [::planar_arm::Link { length: 1.0, mass: 1.0, inertia: 1.0, com: 0.0 }; #nn];
+            const GRAVITY: f64 = 0.0;
+            const EXACT: ::planar_arm::exact::Derivation<#nn> = ::planar_arm::exact::Derivation {
+                kinetic_energy: &[],
+                potential_energy: &[],
+                mass_matrix: [[&[]; #nn]; #nn],
+                coriolis: [&[]; #nn],
+                gravity: [&[]; #nn],
+            };
+            fn mass_matrix(&self, q: #v) -> #m #body
+            fn coriolis(&self, q: #v, qd: #v) -> #sv #body
+            fn coriolis_matrix(&self, q: #v, qd: #v) -> #m #body
+            fn gravity(&self, q: #v) -> #sv #body
+            fn inverse_dynamics(&self, q: #v, qd: #v, qdd: #v) -> #sv #body
+            fn forward_dynamics(&self, q: #v, qd: #v, tau: #v) -> #sv #body
+            fn kinetic_energy(&self, q: #v, qd: #v) -> f64 #body
+            fn potential_energy(&self, q: #v) -> f64 #body
+            fn tip_pose(&self, q: #v) -> ::planar_arm::nalgebra::Isometry2<f64> #body
+            fn jacobian(&self, q: #v) -> ::planar_arm::nalgebra::SMatrix<f64, 3, #nn> #body
+            fn joint_positions(&self, q: #v) -> [::planar_arm::nalgebra::Point2<f64>; #nn] #body
+            fn tip_polar(&self, q: #v) -> (f64, f64) #body
+            fn joint_torques(&self, q: #v, force: &::planar_arm::nalgebra::Vector2<f64>, torque: f64) -> #sv #body
+        }
+    }
+}

@@ -1,0 +1,383 @@
+//! Straight-line programs: the run-time half of the engine.
+//!
+//! A [`Program`] is an arena of nodes addressed by [`Id`], children before parents (egg's
+//! `RecExpr`). Construction is hash-consed, so a subexpression built twice is one node and
+//! common subexpressions are shared by construction. Trigonometric atoms are built from one
+//! `sin_cos` per joint by the angle-addition formulas, each computed once per call.
+
+use std::collections::BTreeMap;
+
+use num_traits::{One, Signed, Zero};
+
+use crate::expr::{Expr, Monomial, Var};
+use crate::ring::Rational;
+use crate::trig::{Angle, Trig};
+
+/// A node index.
+#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Debug)]
+pub struct Id(pub u32);
+
+/// A run-time input of a generated method (0-based joint index).
+#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Debug)]
+pub enum Input {
+    /// Joint angle.
+    Q(usize),
+    /// Joint rate.
+    Qd(usize),
+    /// Joint acceleration.
+    Qdd(usize),
+    /// Joint torque.
+    Tau(usize),
+    /// Component 0 (x) or 1 (y) of a tip force.
+    Force(usize),
+    /// Torque applied at the tip.
+    TipTorque,
+}
+
+/// A node of a straight-line program.
+#[derive(Clone, PartialEq, Eq, PartialOrd, Ord, Hash, Debug)]
+pub enum Node {
+    /// An input.
+    Input(Input),
+    /// An exact constant, emitted as `num / den` in `f64`.
+    Const(Rational),
+    /// `sin q_j` (from the joint's single `sin_cos` call).
+    Sin(usize),
+    /// `cos q_j`.
+    Cos(usize),
+    /// Sum.
+    Add(Id, Id),
+    /// Difference.
+    Sub(Id, Id),
+    /// Product.
+    Mul(Id, Id),
+    /// Quotient.
+    Div(Id, Id),
+    /// Negation.
+    Neg(Id),
+}
+
+/// Operation counts of a program (or of the part that reaches given outputs).
+#[derive(Clone, Copy, PartialEq, Eq, Debug, Default)]
+pub struct OpCount {
+    /// Multiplications.
+    pub mul: usize,
+    /// Additions, subtractions and negations.
+    pub add: usize,
+    /// Divisions.
+    pub div: usize,
+    /// `sin_cos` calls (one per joint angle used).
+    pub sin_cos: usize,
+}
+
+impl std::fmt::Display for OpCount {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} multiplications, {} additions, {} divisions, {} sin_cos calls",
+            self.mul, self.add, self.div, self.sin_cos
+        )
+    }
+}
+
+/// A hash-consed straight-line program.
+#[derive(Clone, Debug, Default)]
+pub struct Program {
+    nodes: Vec<Node>,
+    memo: BTreeMap<Node, Id>,
+    trig: BTreeMap<Angle, (Id, Id)>,
+    names: BTreeMap<Id, String>,
+}
+
+impl Program {
+    /// An empty program.
+    #[must_use]
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// The nodes, children before parents.
+    #[must_use]
+    pub fn nodes(&self) -> &[Node] {
+        &self.nodes
+    }
+
+    /// The node behind an id.
+    #[must_use]
+    pub fn node(&self, id: Id) -> &Node {
+        &self.nodes[id.0 as usize]
+    }
+
+    /// A readable name given to a node (`c23` for `cos(q2 + q3)`), if any.
+    #[must_use]
+    pub fn name(&self, id: Id) -> Option<&str> {
+        self.names.get(&id).map(String::as_str)
+    }
+
+    /// Gives a node a readable name (the first name given wins).
+    pub fn set_name(&mut self, id: Id, name: String) {
+        self.names.entry(id).or_insert(name);
+    }
+
+    fn intern(&mut self, node: Node) -> Id {
+        if let Some(&id) = self.memo.get(&node) {
+            return id;
+        }
+        let id = Id(u32::try_from(self.nodes.len()).expect("program exceeds u32 nodes"));
+        self.nodes.push(node.clone());
+        self.memo.insert(node, id);
+        id
+    }
+
+    fn constant_value(&self, id: Id) -> Option<&Rational> {
+        match self.node(id) {
+            Node::Const(r) => Some(r),
+            _ => None,
+        }
+    }
+
+    /// An input.
+    pub fn input(&mut self, input: Input) -> Id {
+        self.intern(Node::Input(input))
+    }
+
+    /// An exact constant.
+    pub fn constant(&mut self, r: Rational) -> Id {
+        self.intern(Node::Const(r))
+    }
+
+    /// `a + b`, folded and ordered so that `a + b` and `b + a` are one node.
+    pub fn add(&mut self, a: Id, b: Id) -> Id {
+        match (self.constant_value(a).cloned(), self.constant_value(b).cloned()) {
+            (Some(x), Some(y)) => return self.constant(x + y),
+            (Some(x), _) if x.is_zero() => return b,
+            (_, Some(y)) if y.is_zero() => return a,
+            _ => {}
+        }
+        if let Node::Neg(nb) = *self.node(b) {
+            return self.sub(a, nb);
+        }
+        if let Node::Neg(na) = *self.node(a) {
+            return self.sub(b, na);
+        }
+        let (a, b) = if a <= b { (a, b) } else { (b, a) };
+        self.intern(Node::Add(a, b))
+    }
+
+    /// `a - b`, folded.
+    pub fn sub(&mut self, a: Id, b: Id) -> Id {
+        match (self.constant_value(a).cloned(), self.constant_value(b).cloned()) {
+            (Some(x), Some(y)) => return self.constant(x - y),
+            (_, Some(y)) if y.is_zero() => return a,
+            (Some(x), _) if x.is_zero() => return self.neg(b),
+            _ => {}
+        }
+        if let Node::Neg(nb) = *self.node(b) {
+            return self.add(a, nb);
+        }
+        self.intern(Node::Sub(a, b))
+    }
+
+    /// `a b`, folded and ordered.
+    pub fn mul(&mut self, a: Id, b: Id) -> Id {
+        match (self.constant_value(a).cloned(), self.constant_value(b).cloned()) {
+            (Some(x), Some(y)) => return self.constant(x * y),
+            (Some(x), _) | (_, Some(x)) if x.is_zero() => return self.constant(Rational::zero()),
+            (Some(x), _) if x.is_one() => return b,
+            (_, Some(y)) if y.is_one() => return a,
+            (Some(x), _) if (-x.clone()).is_one() => return self.neg(b),
+            (_, Some(y)) if (-y.clone()).is_one() => return self.neg(a),
+            _ => {}
+        }
+        // Constants first, so products read `(1.0 / 2.0) * c2`.
+        let a_const = self.constant_value(a).is_some();
+        let b_const = self.constant_value(b).is_some();
+        let (a, b) = if (b_const && !a_const) || (a_const == b_const && b < a) { (b, a) } else { (a, b) };
+        self.intern(Node::Mul(a, b))
+    }
+
+    /// `a / b`.
+    pub fn div(&mut self, a: Id, b: Id) -> Id {
+        if let Some(y) = self.constant_value(b) {
+            if y.is_one() {
+                return a;
+            }
+        }
+        self.intern(Node::Div(a, b))
+    }
+
+    /// `-a`, folded.
+    pub fn neg(&mut self, a: Id) -> Id {
+        if let Some(x) = self.constant_value(a).cloned() {
+            return self.constant(-x);
+        }
+        if let Node::Neg(inner) = *self.node(a) {
+            return inner;
+        }
+        self.intern(Node::Neg(a))
+    }
+
+    /// `(cos angle, sin angle)`, built by angle addition from per-joint `sin_cos`.
+    pub fn trig_pair(&mut self, angle: &Angle) -> (Id, Id) {
+        if angle.is_zero() {
+            let one = self.constant(Rational::one());
+            let zero = self.constant(Rational::zero());
+            return (one, zero);
+        }
+        if let Some(&pair) = self.trig.get(angle) {
+            return pair;
+        }
+        let k = angle.coefficients();
+        let j = k.len() - 1;
+        let kj = k[j];
+        let step = kj.signum();
+        let mut rest = k.to_vec();
+        rest[j] -= step;
+        let (c0, s0) = self.trig_pair(&Angle::new(rest));
+        let cj = self.intern(Node::Cos(j));
+        let sj = self.intern(Node::Sin(j));
+        let cc = self.mul(c0, cj);
+        let ss = self.mul(s0, sj);
+        let sc = self.mul(s0, cj);
+        let cs = self.mul(c0, sj);
+        let (c, s) = if step > 0 {
+            // cos(a + b) = ca cb - sa sb, sin(a + b) = sa cb + ca sb
+            (self.sub(cc, ss), self.add(sc, cs))
+        } else {
+            // cos(a - b) = ca cb + sa sb, sin(a - b) = sa cb - ca sb
+            (self.add(cc, ss), self.sub(sc, cs))
+        };
+        let frag = angle.ident_fragment();
+        self.set_name(c, format!("c{frag}"));
+        self.set_name(s, format!("s{frag}"));
+        self.trig.insert(angle.clone(), (c, s));
+        (c, s)
+    }
+
+    /// The value of a trig atom.
+    pub fn atom(&mut self, t: &Trig) -> Id {
+        match t {
+            Trig::One => self.constant(Rational::one()),
+            Trig::Cos(a) => self.trig_pair(a).0,
+            Trig::Sin(a) => self.trig_pair(a).1,
+        }
+    }
+
+    /// The value of a monomial in rates and accelerations.
+    pub fn monomial(&mut self, m: &Monomial) -> Id {
+        let mut acc = self.constant(Rational::one());
+        for (v, e) in m.powers() {
+            let x = match v {
+                Var::Qd(j) => self.input(Input::Qd(j)),
+                Var::Qdd(j) => self.input(Input::Qdd(j)),
+            };
+            for _ in 0..e {
+                acc = self.mul(acc, x);
+            }
+        }
+        acc
+    }
+
+    /// `sum_k (sign_k x_k)`, starting from a positive term so the output reads as a difference.
+    pub fn signed_sum(&mut self, terms: &[(bool, Id)]) -> Id {
+        let start = terms.iter().position(|(neg, _)| !neg);
+        let mut acc = match start {
+            Some(i) => terms[i].1,
+            None => return {
+                let zero = self.constant(Rational::zero());
+                terms.iter().fold(zero, |acc, &(_, x)| self.sub(acc, x))
+            },
+        };
+        for (i, &(neg, x)) in terms.iter().enumerate() {
+            if Some(i) == start {
+                continue;
+            }
+            acc = if neg { self.sub(acc, x) } else { self.add(acc, x) };
+        }
+        acc
+    }
+
+    /// The value of an exact expression: `sum over monomials m of m x (sum c_t atom_t)`,
+    /// factoring each monomial out of its trig polynomial.
+    pub fn expr(&mut self, e: &Expr<Rational>) -> Id {
+        let mut groups: BTreeMap<&Monomial, Vec<(&Trig, &Rational)>> = BTreeMap::new();
+        for (m, t, c) in e.terms() {
+            groups.entry(m).or_default().push((t, c));
+        }
+        let mut outer = Vec::new();
+        for (m, terms) in groups {
+            let mut inner = Vec::new();
+            for (t, c) in terms {
+                let atom = self.atom(t);
+                let magnitude = self.constant(c.abs());
+                inner.push((c.is_negative(), self.mul(magnitude, atom)));
+            }
+            // A single negative term keeps its sign outside, to multiply the monomial once.
+            let (neg, poly) = if inner.len() == 1 {
+                inner[0]
+            } else {
+                (false, self.signed_sum(&inner))
+            };
+            let mono = self.monomial(m);
+            outer.push((neg, self.mul(poly, mono)));
+        }
+        self.signed_sum(&outer)
+    }
+
+    /// How many live nodes use each node, for the given outputs.
+    #[must_use]
+    pub fn use_counts(&self, outputs: &[Id]) -> Vec<usize> {
+        let mut live = vec![false; self.nodes.len()];
+        for o in outputs {
+            live[o.0 as usize] = true;
+        }
+        let mut uses = vec![0; self.nodes.len()];
+        for o in outputs {
+            uses[o.0 as usize] += 1;
+        }
+        for i in (0..self.nodes.len()).rev() {
+            if !live[i] {
+                continue;
+            }
+            for c in children(&self.nodes[i]) {
+                live[c.0 as usize] = true;
+                uses[c.0 as usize] += 1;
+            }
+        }
+        uses
+    }
+
+    /// Operation counts of the part of the program the outputs need.
+    #[must_use]
+    pub fn op_count(&self, outputs: &[Id]) -> OpCount {
+        let uses = self.use_counts(outputs);
+        let mut count = OpCount::default();
+        let mut joints = std::collections::BTreeSet::new();
+        for (node, &u) in self.nodes.iter().zip(&uses) {
+            if u == 0 {
+                continue;
+            }
+            match node {
+                Node::Mul(..) => count.mul += 1,
+                Node::Add(..) | Node::Sub(..) | Node::Neg(..) => count.add += 1,
+                Node::Div(..) => count.div += 1,
+                Node::Sin(j) | Node::Cos(j) => {
+                    joints.insert(*j);
+                }
+                Node::Input(_) | Node::Const(_) => {}
+            }
+        }
+        count.sin_cos = joints.len();
+        count
+    }
+}
+
+/// The operands of a node.
+#[must_use]
+pub fn children(node: &Node) -> Vec<Id> {
+    match *node {
+        Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => vec![a, b],
+        Node::Neg(a) => vec![a],
+        Node::Input(_) | Node::Const(_) | Node::Sin(_) | Node::Cos(_) => vec![],
+    }
+}

@@ -1,0 +1,68 @@
+//! Items that generated code names. Not public API: no stability promise.
+#![allow(missing_docs)]
+
+pub use ::core;
+pub use ::nalgebra;
+
+use crate::exact::{Rational, Term, Trig, Var};
+use nalgebra::{Isometry2, SMatrix, SVector, Translation2, UnitComplex};
+
+#[inline(always)]
+#[must_use]
+pub fn unpack<const N: usize>(v: &SVector<f64, N>) -> [f64; N] {
+    v.data.0[0]
+}
+
+#[inline(always)]
+#[must_use]
+pub fn vector<const N: usize>(v: [f64; N]) -> SVector<f64, N> {
+    SVector::from_array_storage(nalgebra::ArrayStorage([v]))
+}
+
+/// Rows in, nalgebra's column-major storage out.
+#[inline(always)]
+#[must_use]
+pub fn matrix<const R: usize, const C: usize>(rows: [[f64; C]; R]) -> SMatrix<f64, R, C> {
+    SMatrix::from_fn(|r, c| rows[r][c])
+}
+
+/// The pose from the tip position and the cosine and sine of the last link's angle (already
+/// computed, so no second `sin_cos`).
+#[inline(always)]
+#[must_use]
+pub fn pose(x: f64, y: f64, cos: f64, sin: f64) -> Isometry2<f64> {
+    Isometry2::from_parts(
+        Translation2::new(x, y),
+        UnitComplex::from_cos_sin_unchecked(cos, sin),
+    )
+}
+
+/// Polar form from `r^2` (clamped at zero against rounding) and the tip position.
+#[inline(always)]
+#[must_use]
+pub fn polar(r2: f64, x: f64, y: f64) -> (f64, f64) {
+    (r2.max(0.0).sqrt(), y.atan2(x))
+}
+
+pub use crate::exact::Var::{Qd, Qdd};
+
+/// One exact term; `kind` 0, 1, 2 is `1`, `cos`, `sin`.
+#[must_use]
+pub const fn term(
+    numer: i128,
+    denom: i128,
+    kind: u8,
+    angle: &'static [i32],
+    powers: &'static [(Var, u32)],
+) -> Term {
+    let trig = match kind {
+        0 => Trig::One,
+        1 => Trig::Cos(angle),
+        _ => Trig::Sin(angle),
+    };
+    Term {
+        coeff: Rational::new(numer, denom),
+        trig,
+        powers,
+    }
+}
