@@ -17,13 +17,17 @@ pub use nalgebra;
 pub use planar_arm_core as symbolic;
 pub use planar_arm_derive::PlanarArm;
 
+use kinematics::{DlsOptions, IkTarget, Workspace};
 use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2};
 
 /// Everything a user of a derived arm needs: `use planar_arm::prelude::*;`.
 pub mod prelude {
-    // TEMP pub use crate::kinematics::{ClosedFormIk, TipForce, TipWrench, Workspace};
+    pub use crate::kinematics::{
+        ClosedFormIk, DexterousWorkspace, DlsOptions, IkTarget, TipForce, TipWrench, Workspace,
+    };
     pub use crate::{ArmError, Link, PlanarArm, Revolute};
-    pub use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2};
+    pub use kinematics::{DlsOptions, IkTarget, Workspace};
+use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2};
 }
 
 /// A planar serial arm of `N` revolute links whose dynamics, kinematics and statics were
@@ -78,4 +82,90 @@ pub trait PlanarArm<const N: usize> {
     /// holds: tau = J^T w (gravity is separate, in [`gravity`](Self::gravity)).
     fn joint_torques(&self, q: &SVector<f64, N>, force: &Vector2<f64>, torque: f64)
         -> SVector<f64, N>;
+
+    /// The reachable region: an annulus with inner radius `max(0, 2 max l - sum l)` and outer
+    /// radius `sum l`.
+    fn workspace(&self) -> Workspace {
+        let lengths: [f64; N] = core::array::from_fn(|i| Self::LINKS[i].length);
+        Workspace::of_lengths(&lengths)
+    }
+
+    /// The manipulability measure `sqrt(det(J J^T))` of the task rows (tip position for
+    /// `N <= 2`, position and orientation beyond); zero at a singular configuration.
+    fn manipulability(&self, q: &SVector<f64, N>) -> f64 {
+        kinematics::manipulability(&self.jacobian(q))
+    }
+
+    /// Whether the configuration is singular: manipulability below `threshold` (in the units
+    /// of the measure, for example m^2 for two links).
+    fn is_singular(&self, q: &SVector<f64, N>, threshold: f64) -> bool {
+        kinematics::is_singular(&self.jacobian(q), threshold)
+    }
+
+    /// Damped-least-squares inverse kinematics on the generated Jacobian: the configuration
+    /// reached from `seed` (so the one nearest it, in practice).
+    ///
+    /// # Errors
+    /// [`ArmError::NonFinite`] for NaN or infinite input, [`ArmError::NoConvergence`] when the
+    /// target is not reached within `options.max_iterations`.
+    fn inverse_kinematics_near(
+        &self,
+        target: &IkTarget,
+        seed: &SVector<f64, N>,
+        options: &DlsOptions,
+    ) -> Result<SVector<f64, N>, ArmError> {
+        kinematics::solve_dls(
+            |q| self.tip_pose(q),
+            |q| self.jacobian(q),
+            target,
+            seed,
+            options,
+        )
+    }
+
+    /// [`forward_dynamics`](Self::forward_dynamics) for input that may be bad: NaN or infinite
+    /// states give an `Err` instead of NaN accelerations.
+    ///
+    /// # Errors
+    /// [`ArmError::NonFinite`] naming the first argument that holds NaN or an infinity, or
+    /// `"result"` when finite input overflowed.
+    fn try_forward_dynamics(
+        &self,
+        q: &SVector<f64, N>,
+        qd: &SVector<f64, N>,
+        tau: &SVector<f64, N>,
+    ) -> Result<SVector<f64, N>, ArmError> {
+        finite(q, "q")?;
+        finite(qd, "qd")?;
+        finite(tau, "tau")?;
+        let qdd = self.forward_dynamics(q, qd, tau);
+        finite(&qdd, "result")?;
+        Ok(qdd)
+    }
+
+    /// [`inverse_dynamics`](Self::inverse_dynamics) for input that may be bad.
+    ///
+    /// # Errors
+    /// [`ArmError::NonFinite`] as for [`try_forward_dynamics`](Self::try_forward_dynamics).
+    fn try_inverse_dynamics(
+        &self,
+        q: &SVector<f64, N>,
+        qd: &SVector<f64, N>,
+        qdd: &SVector<f64, N>,
+    ) -> Result<SVector<f64, N>, ArmError> {
+        finite(q, "q")?;
+        finite(qd, "qd")?;
+        finite(qdd, "qdd")?;
+        let tau = self.inverse_dynamics(q, qd, qdd);
+        finite(&tau, "result")?;
+        Ok(tau)
+    }
+}
+
+fn finite<const N: usize>(v: &SVector<f64, N>, argument: &'static str) -> Result<(), ArmError> {
+    if v.iter().all(|x| x.is_finite()) {
+        Ok(())
+    } else {
+        Err(ArmError::NonFinite { argument })
+    }
 }

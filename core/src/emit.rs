@@ -72,6 +72,13 @@ pub struct Method {
 }
 
 impl Method {
+    /// The outputs evaluated by the program interpreter (see [`Program::eval`]).
+    #[must_use]
+    pub fn eval(&self, input: &dyn Fn(Input) -> f64) -> Vec<f64> {
+        let values = self.program.eval(input);
+        self.outputs.iter().map(|(_, id)| values[id.0 as usize]).collect()
+    }
+
     /// The operation count of this method.
     #[must_use]
     pub fn op_count(&self) -> OpCount {

@@ -324,6 +324,30 @@ impl Program {
         self.signed_sum(&outer)
     }
 
+    /// Interprets the program: the value of every node, given the inputs and joint angles.
+    ///
+    /// This is the reference semantics of what [`emit`](crate::emit) renders as Rust, so the
+    /// programs can be tested on arms chosen at run time.
+    #[must_use]
+    pub fn eval(&self, input: &dyn Fn(Input) -> f64) -> Vec<f64> {
+        let mut v: Vec<f64> = Vec::with_capacity(self.nodes.len());
+        for node in &self.nodes {
+            let x = match *node {
+                Node::Input(i) => input(i),
+                Node::Const(ref r) => crate::ring::to_f64(r).unwrap_or(f64::NAN),
+                Node::Sin(j) => input(Input::Q(j)).sin(),
+                Node::Cos(j) => input(Input::Q(j)).cos(),
+                Node::Add(a, b) => v[a.0 as usize] + v[b.0 as usize],
+                Node::Sub(a, b) => v[a.0 as usize] - v[b.0 as usize],
+                Node::Mul(a, b) => v[a.0 as usize] * v[b.0 as usize],
+                Node::Div(a, b) => v[a.0 as usize] / v[b.0 as usize],
+                Node::Neg(a) => -v[a.0 as usize],
+            };
+            v.push(x);
+        }
+        v
+    }
+
     /// How many live nodes use each node, for the given outputs.
     #[must_use]
     pub fn use_counts(&self, outputs: &[Id]) -> Vec<usize> {

@@ -44,7 +44,7 @@ fn try_derive(input: &DeriveInput) -> Result<TokenStream, TokenStream> {
 
 /// Closed-form inverse kinematics and inverse statics, for the arms the paper solves.
 fn extras(d: &Derived, header: &Header) -> TokenStream {
-    let _ = (d, header); TokenStream::new() // TEMP planar_arm_core::generate::closed_forms(d, header)
+    planar_arm_core::generate::closed_forms(d, header)
 }
 
 /// After an error, a stub impl, so uses of the trait do not add a cascade of errors.

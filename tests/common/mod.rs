@@ -1,0 +1,142 @@
+//! Shared checks of a derived arm against the numeric reference and the laws of mechanics.
+#![allow(dead_code)] // each test crate uses a different subset
+
+use planar_arm::nalgebra::{SMatrix, SVector};
+use planar_arm::prelude::*;
+use planar_arm::reference;
+
+/// Relative closeness: `|a - b| <= tol * max(1, scale)`.
+pub fn close(a: f64, b: f64, tol: f64, scale: f64) -> bool {
+    (a - b).abs() <= tol * scale.max(1.0)
+}
+
+/// Every check of one derived arm at one state; panics with a message on failure.
+pub fn check_state<A: PlanarArm<N>, const N: usize>(
+    arm: &A,
+    q: &SVector<f64, N>,
+    qd: &SVector<f64, N>,
+    qdd: &SVector<f64, N>,
+) {
+    let links = A::LINKS;
+    let g = A::GRAVITY;
+    let m = arm.mass_matrix(q);
+    let m_ref = reference::mass_matrix(&links, q);
+    let tau = arm.inverse_dynamics(q, qd, qdd);
+    let tau_ref = reference::inverse_dynamics(&links, g, q, qd, qdd);
+    let scale = m_ref.amax() * (1.0 + qd.amax().powi(2) + qdd.amax()) + tau_ref.amax();
+    let tol = 1e-9;
+    for i in 0..N {
+        assert!(close(tau[i], tau_ref[i], tol, scale), "tau[{i}] {} vs reference {}", tau[i], tau_ref[i]);
+        for j in 0..N {
+            assert!(close(m[(i, j)], m_ref[(i, j)], tol, scale), "M[{i}][{j}]");
+            assert_eq!(m[(i, j)], m[(j, i)], "M is symmetric");
+        }
+    }
+    // Positive definite: Cholesky succeeds.
+    assert!(m.cholesky().is_some(), "M positive definite at q = {q}");
+
+    let c = arm.coriolis(q, qd);
+    let gv = arm.gravity(q);
+    let c_ref = reference::coriolis(&links, q, qd);
+    let g_ref = reference::gravity_torques(&links, g, q);
+    let cm = arm.coriolis_matrix(q, qd);
+    let cqd = cm * qd;
+    for i in 0..N {
+        assert!(close(c[i], c_ref[i], tol, scale), "c[{i}] {} vs {}", c[i], c_ref[i]);
+        assert!(close(gv[i], g_ref[i], tol, scale), "g[{i}] {} vs {}", gv[i], g_ref[i]);
+        assert!(close(cqd[i], c[i], tol, scale), "C qd = c, row {i}");
+    }
+    // tau = M qdd + c + g, three generated methods against a fourth.
+    let assembled = m * qdd + c + gv;
+    for i in 0..N {
+        assert!(close(assembled[i], tau[i], tol, scale), "M qdd + c + g, row {i}");
+    }
+
+    // Forward dynamics inverts inverse dynamics.
+    let back = arm.forward_dynamics(q, qd, &tau);
+    let fd_ref = reference::forward_dynamics(&links, g, q, qd, &tau);
+    let m_inv = m.cholesky().map(|c| c.inverse()).expect("positive definite");
+    #[allow(clippy::cast_precision_loss)]
+    let cond = m.amax() * m_inv.amax() * N as f64;
+    for i in 0..N {
+        assert!(
+            close(back[i], qdd[i], 1e-12 * cond.max(1.0), qdd.amax()),
+            "forward(inverse(qdd))[{i}] = {} vs {}",
+            back[i],
+            qdd[i]
+        );
+        assert!(close(back[i], fd_ref[i], 1e-12 * cond.max(1.0), qdd.amax()), "vs ABA [{i}]");
+    }
+
+    // Mdot - 2C is skew-symmetric; Mdot by central differences along qd.
+    let h = 1e-6;
+    let mdot = (arm.mass_matrix(&(q + qd * h)) - arm.mass_matrix(&(q - qd * h))) / (2.0 * h);
+    let n_mat: SMatrix<f64, N, N> = mdot - cm * 2.0;
+    let skew = n_mat + n_mat.transpose();
+    assert!(skew.amax() <= 1e-6 * scale.max(1.0), "Mdot - 2C not skew: {skew}");
+
+    // Energies: T = qd^T M qd / 2 and g = dV/dq.
+    let t = arm.kinetic_energy(q, qd);
+    let t_quad = 0.5 * (qd.transpose() * m * qd)[(0, 0)];
+    assert!(close(t, t_quad, tol, scale), "T {t} vs qd^T M qd / 2 {t_quad}");
+    assert!(close(t, reference::kinetic_energy(&links, q, qd), tol, scale));
+    assert!(close(arm.potential_energy(q), reference::potential_energy(&links, g, q), tol, scale));
+    for i in 0..N {
+        let mut e = SVector::<f64, N>::zeros();
+        e[i] = h;
+        let dv = (arm.potential_energy(&(q + e)) - arm.potential_energy(&(q - e))) / (2.0 * h);
+        assert!(close(dv, gv[i], 1e-6, scale), "dV/dq[{i}] {dv} vs g {}", gv[i]);
+    }
+
+    // Kinematics: tip, joints and Jacobian.
+    let tip = arm.tip_pose(q);
+    let tip_ref = reference::tip_position(&links, q);
+    assert!(close(tip.translation.x, tip_ref.x, tol, 10.0));
+    assert!(close(tip.translation.y, tip_ref.y, tol, 10.0));
+    let phi: f64 = q.iter().sum();
+    assert!((tip.rotation.angle() - planar_arm::nalgebra::UnitComplex::new(phi).angle()).abs() < 1e-9);
+    let j = arm.jacobian(q);
+    let j_ref = reference::jacobian(&links, q);
+    assert!((j - j_ref).amax() <= 1e-9 * j_ref.amax().max(1.0), "Jacobian");
+    let joints = arm.joint_positions(q);
+    let joints_ref = reference::joint_positions(&links, q);
+    for (a, b) in joints.iter().zip(&joints_ref) {
+        assert!((a - b).norm() <= 1e-9 * (1.0 + b.coords.norm()), "joint positions");
+    }
+}
+
+/// A deterministic pseudo-random state in [-range, range].
+pub fn state<const N: usize>(seed: u64, range: f64) -> SVector<f64, N> {
+    let mut s = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15).wrapping_add(1);
+    SVector::from_fn(|_, _| {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        #[allow(clippy::cast_precision_loss)]
+        let u = (s >> 11) as f64 / (1u64 << 53) as f64;
+        (2.0 * u - 1.0) * range
+    })
+}
+
+/// One test per arm: `name: Type, N;`, each over proptest-drawn states.
+#[macro_export]
+macro_rules! check_arms {
+    ($($name:ident: $ty:ty, $n:literal;)*) => {
+        $(
+            proptest::proptest! {
+                #![proptest_config(proptest::prelude::ProptestConfig { cases: 64, ..Default::default() })]
+                #[test]
+                fn $name(
+                    q in proptest::collection::vec(-4.0f64..4.0, $n),
+                    qd in proptest::collection::vec(-3.0f64..3.0, $n),
+                    qdd in proptest::collection::vec(-5.0f64..5.0, $n),
+                ) {
+                    let arm = <$ty>::default();
+                    let v = |x: &Vec<f64>| planar_arm::nalgebra::SVector::<f64, $n>::from_column_slice(x);
+                    $crate::common::check_state::<$ty, $n>(&arm, &v(&q), &v(&qd), &v(&qdd));
+                }
+            }
+        )*
+    };
+}
+pub use check_arms;
