@@ -23,6 +23,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         impl_generics: quote!(),
         ty: quote!(PaperArm),
         where_clause: quote!(),
+        fields: Vec::new(),
     };
     let mut tokens = generate(&derived, &header)?;
     tokens.extend(closed_forms(&derived, &header));

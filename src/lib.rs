@@ -26,8 +26,7 @@ pub mod prelude {
         ClosedFormIk, DexterousWorkspace, DlsOptions, IkTarget, TipForce, TipWrench, Workspace,
     };
     pub use crate::{ArmError, Link, PlanarArm, Revolute};
-    pub use kinematics::{DlsOptions, IkTarget, Workspace};
-use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2};
+    pub use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2};
 }
 
 /// A planar serial arm of `N` revolute links whose dynamics, kinematics and statics were
@@ -80,8 +79,12 @@ pub trait PlanarArm<const N: usize> {
     fn tip_polar(&self, q: &SVector<f64, N>) -> (f64, f64);
     /// Motor torques that make the tip exert force `force` and torque `torque` on what it
     /// holds: tau = J^T w (gravity is separate, in [`gravity`](Self::gravity)).
-    fn joint_torques(&self, q: &SVector<f64, N>, force: &Vector2<f64>, torque: f64)
-        -> SVector<f64, N>;
+    fn joint_torques(
+        &self,
+        q: &SVector<f64, N>,
+        force: &Vector2<f64>,
+        torque: f64,
+    ) -> SVector<f64, N>;
 
     /// The reachable region: an annulus with inner radius `max(0, 2 max l - sum l)` and outer
     /// radius `sum l`.

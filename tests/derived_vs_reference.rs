@@ -142,7 +142,7 @@ struct Random3b {
     l3: Revolute,
 }
 
-check_arms! {
+planar_arm_tests_check_arms! {
     random1: Random1, 1;
     random2: Random2, 2;
     random3: Random3, 3;

@@ -18,12 +18,14 @@ fn rational(lo: i64, hi: i64, den: i64) -> impl Strategy<Value = (i64, i64)> {
 
 fn link() -> impl Strategy<Value = LinkSpec> {
     (
-        rational(1, 3, 8),   // length 1/8 .. 3
-        rational(1, 5, 4),   // mass 1/4 .. 5
-        rational(0, 1, 16),  // inertia 0 .. 1
+        rational(1, 3, 8),  // length 1/8 .. 3
+        rational(1, 5, 4),  // mass 1/4 .. 5
+        rational(0, 1, 16), // inertia 0 .. 1
         (-2i64..=12, 1i64..=10),
     )
-        .prop_filter("positive length and mass", |(l, m, _, _)| l.0 > 0 && m.0 > 0)
+        .prop_filter("positive length and mass", |(l, m, _, _)| {
+            l.0 > 0 && m.0 > 0
+        })
         .prop_map(|(l, m, i, (c, cd))| {
             let length = ratio(l.0, l.1);
             LinkSpec {
@@ -108,9 +110,24 @@ fn check<const N: usize>(spec: &ArmSpec, raw: &[f64]) -> Result<(), TestCaseErro
     let c_ref = reference::coriolis(&links, &st.q, &st.qd);
     let g_ref = reference::gravity_torques(&links, g, &st.q);
     for i in 0..N {
-        prop_assert!(close(tau[i], tau_ref[i], scale), "tau[{i}]: {} vs {}", tau[i], tau_ref[i]);
-        prop_assert!(close(c[i], c_ref[i], scale), "c[{i}]: {} vs {}", c[i], c_ref[i]);
-        prop_assert!(close(gv[i], g_ref[i], scale), "g[{i}]: {} vs {}", gv[i], g_ref[i]);
+        prop_assert!(
+            close(tau[i], tau_ref[i], scale),
+            "tau[{i}]: {} vs {}",
+            tau[i],
+            tau_ref[i]
+        );
+        prop_assert!(
+            close(c[i], c_ref[i], scale),
+            "c[{i}]: {} vs {}",
+            c[i],
+            c_ref[i]
+        );
+        prop_assert!(
+            close(gv[i], g_ref[i], scale),
+            "g[{i}]: {} vs {}",
+            gv[i],
+            g_ref[i]
+        );
         // forward dynamics is conditioned by M: compare through the reference ABA
         let fd_ref = reference::forward_dynamics(&links, g, &st.q, &st.qd, &tau_ref);
         prop_assert!(

@@ -12,13 +12,12 @@ use std::fmt::Write as _;
 
 use num_traits::{Signed, ToPrimitive, Zero};
 use proc_macro2::{Ident, Literal, Span, TokenStream};
-use quote::{format_ident, quote};
+use quote::quote;
 
-use crate::expr::{Expr, Var};
+use crate::expr::Expr;
 use crate::mechanics::{ArmSpec, Dynamics, Kinematics};
 use crate::ring::{show, to_f64, to_i128_pair, Rational};
 use crate::slp::{Id, Input, Node, OpCount, Program};
-use crate::trig::Trig;
 
 /// Why an arm cannot be emitted.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -76,7 +75,10 @@ impl Method {
     #[must_use]
     pub fn eval(&self, input: &dyn Fn(Input) -> f64) -> Vec<f64> {
         let values = self.program.eval(input);
-        self.outputs.iter().map(|(_, id)| values[id.0 as usize]).collect()
+        self.outputs
+            .iter()
+            .map(|(_, id)| values[id.0 as usize])
+            .collect()
     }
 
     /// The operation count of this method.
@@ -105,7 +107,10 @@ impl Derived {
                 outputs.push((format!("m{}", two(a, b)), id));
             }
         }
-        Method { program: p, outputs }
+        Method {
+            program: p,
+            outputs,
+        }
     }
 
     /// `c(q, qd)`.
@@ -137,13 +142,19 @@ impl Derived {
                 outputs.push((format!("cm{}", two(i, j)), id));
             }
         }
-        Method { program: p, outputs }
+        Method {
+            program: p,
+            outputs,
+        }
     }
 
     /// `T(q, qd)`.
     #[must_use]
     pub fn kinetic_energy_method(&self) -> Method {
-        self.vector_method("kinetic", std::slice::from_ref(&self.dynamics.kinetic_energy))
+        self.vector_method(
+            "kinetic",
+            std::slice::from_ref(&self.dynamics.kinetic_energy),
+        )
     }
 
     /// `V(q)`.
@@ -162,11 +173,18 @@ impl Derived {
             .iter()
             .enumerate()
             .map(|(i, e)| {
-                let label = if single { name.to_string() } else { format!("{name}{}", i + 1) };
+                let label = if single {
+                    name.to_string()
+                } else {
+                    format!("{name}{}", i + 1)
+                };
                 (label, p.expr(e))
             })
             .collect();
-        Method { program: p, outputs }
+        Method {
+            program: p,
+            outputs,
+        }
     }
 
     /// `qdd = M^-1 (tau - c - g)`: Cramer's rule for one and two joints, an unrolled
@@ -218,7 +236,10 @@ impl Derived {
             .enumerate()
             .map(|(i, id)| (format!("qdd{}", i + 1), id))
             .collect();
-        Method { program: p, outputs }
+        Method {
+            program: p,
+            outputs,
+        }
     }
 
     /// Tip `x, y`, then `cos` and `sin` of the last link's angle.
@@ -250,7 +271,10 @@ impl Derived {
                 outputs.push((format!("j{}", two(r, j)), p.expr(e)));
             }
         }
-        Method { program: p, outputs }
+        Method {
+            program: p,
+            outputs,
+        }
     }
 
     /// Joints `1..=N`: `x, y` of each.
@@ -262,7 +286,10 @@ impl Derived {
             outputs.push((format!("x{}", i + 1), p.expr(x)));
             outputs.push((format!("y{}", i + 1), p.expr(y)));
         }
-        Method { program: p, outputs }
+        Method {
+            program: p,
+            outputs,
+        }
     }
 
     /// `r^2`, tip `x`, tip `y`.
@@ -295,7 +322,10 @@ impl Derived {
             let ab = p.add(a, b);
             outputs.push((format!("tau{}", j + 1), p.add(ab, t)));
         }
-        Method { program: p, outputs }
+        Method {
+            program: p,
+            outputs,
+        }
     }
 }
 
@@ -324,7 +354,11 @@ fn ldlt_solve(p: &mut Program, m: &[Vec<Id>], b: &[Id]) -> Vec<Id> {
             // L_ij = (M_ij - sum_k L_ik L_jk d_k) / d_j
             let mut s = m[i][j];
             for k in 0..j {
-                let (lik, ljk, dk) = (l[i][k].unwrap_or(s), l[j][k].unwrap_or(s), d[k].unwrap_or(s));
+                let (lik, ljk, dk) = (
+                    l[i][k].unwrap_or(s),
+                    l[j][k].unwrap_or(s),
+                    d[k].unwrap_or(s),
+                );
                 let w = p.mul(lik, ljk);
                 let w = p.mul(w, dk);
                 s = p.sub(s, w);
@@ -379,7 +413,10 @@ pub fn f64_tokens(r: &Rational) -> Result<TokenStream, EmitError> {
         }
         #[allow(clippy::cast_precision_loss)]
         (Some(a), Some(b)) => {
-            let (a, b) = (Literal::f64_unsuffixed(a as f64), Literal::f64_unsuffixed(b as f64));
+            let (a, b) = (
+                Literal::f64_unsuffixed(a as f64),
+                Literal::f64_unsuffixed(b as f64),
+            );
             quote!((#a / #b))
         }
         _ => {
@@ -387,7 +424,11 @@ pub fn f64_tokens(r: &Rational) -> Result<TokenStream, EmitError> {
             quote!(#v)
         }
     };
-    Ok(if r.is_negative() { quote!((-#body)) } else { body })
+    Ok(if r.is_negative() {
+        quote!((-#body))
+    } else {
+        body
+    })
 }
 
 /// Precedence of an emitted expression, to place parentheses.
@@ -483,8 +524,16 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
     let mut statements = Vec::new();
     for (&j, &(s, c)) in &joints {
         let q = local(&input_name(Input::Q(j)));
-        let s = if s { local(&format!("s{}", j + 1)) } else { local("_") };
-        let c = if c { local(&format!("c{}", j + 1)) } else { local("_") };
+        let s = if s {
+            local(&format!("s{}", j + 1))
+        } else {
+            local("_")
+        };
+        let c = if c {
+            local(&format!("c{}", j + 1))
+        } else {
+            local("_")
+        };
         statements.push(quote!(let (#s, #c) = #q.sin_cos();));
     }
     let mut exprs: Vec<Option<(Prec, TokenStream)>> = vec![None; p.nodes().len()];
@@ -495,18 +544,33 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
         }
         let id = Id(u32::try_from(idx).unwrap_or(u32::MAX));
         let get = |c: Id, exprs: &Vec<Option<(Prec, TokenStream)>>| {
-            exprs[c.0 as usize].clone().unwrap_or((Prec::Atom, quote!(0.0)))
+            exprs[c.0 as usize]
+                .clone()
+                .unwrap_or((Prec::Atom, quote!(0.0)))
         };
         let paren = |(prec, ts): (Prec, TokenStream), min: Prec| {
-            if prec >= min { ts } else { quote!((#ts)) }
+            if prec >= min {
+                ts
+            } else {
+                quote!((#ts))
+            }
         };
         let (prec, ts) = match node {
             Node::Input(i) => (Prec::Atom, local(&input_name(*i)).into_token_stream()),
             Node::Const(r) => (Prec::Atom, f64_tokens(r)?),
-            Node::Sin(j) => (Prec::Atom, local(&format!("s{}", j + 1)).into_token_stream()),
-            Node::Cos(j) => (Prec::Atom, local(&format!("c{}", j + 1)).into_token_stream()),
+            Node::Sin(j) => (
+                Prec::Atom,
+                local(&format!("s{}", j + 1)).into_token_stream(),
+            ),
+            Node::Cos(j) => (
+                Prec::Atom,
+                local(&format!("c{}", j + 1)).into_token_stream(),
+            ),
             Node::Add(a, b) => {
-                let (a, b) = (paren(get(*a, &exprs), Prec::Sum), paren(get(*b, &exprs), Prec::Sum));
+                let (a, b) = (
+                    paren(get(*a, &exprs), Prec::Sum),
+                    paren(get(*b, &exprs), Prec::Sum),
+                );
                 (Prec::Sum, quote!(#a + #b))
             }
             Node::Sub(a, b) => {
@@ -531,7 +595,10 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
                 (Prec::Sum, quote!(-#a))
             }
         };
-        let is_leaf = matches!(node, Node::Input(_) | Node::Const(_) | Node::Sin(_) | Node::Cos(_));
+        let is_leaf = matches!(
+            node,
+            Node::Input(_) | Node::Const(_) | Node::Sin(_) | Node::Cos(_)
+        );
         let named = p.name(id).is_some() && !is_leaf;
         let is_output = output_of.contains_key(&id);
         if !is_leaf && (uses[idx] > 1 || named || is_output) {
@@ -552,7 +619,9 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
     }
     let mut outputs = Vec::new();
     for (name, id) in &method.outputs {
-        let (_, ts) = exprs[id.0 as usize].clone().unwrap_or((Prec::Atom, quote!(0.0)));
+        let (_, ts) = exprs[id.0 as usize]
+            .clone()
+            .unwrap_or((Prec::Atom, quote!(0.0)));
         // Leaves and repeated outputs (the symmetric half of M) get their own readable let.
         let ident = match syn_ident(&ts) {
             Some(existing) => existing,
@@ -594,18 +663,6 @@ pub fn formula_doc(title: &str, rows: &[(String, &Expr)]) -> String {
     s
 }
 
-/// The operand list of `Var` names used in docs.
-#[must_use]
-pub fn var_name(v: Var) -> String {
-    v.to_string()
-}
-
-/// Whether a trig atom appears in docs as the paper writes it.
-#[must_use]
-pub fn atom_name(t: &Trig) -> String {
-    t.to_string()
-}
-
 /// Fails if a derived coefficient cannot be emitted as `const` data (`i128`) or as `f64`.
 ///
 /// # Errors
@@ -639,9 +696,4 @@ pub fn check_representable(d: &Derived) -> Result<(), EmitError> {
         check(&format!("g{}", i + 1), e)?;
     }
     Ok(())
-}
-
-#[doc(hidden)]
-pub fn _unused() -> Ident {
-    format_ident!("unused")
 }

@@ -200,6 +200,12 @@ impl<C: Coefficient> Expr<C> {
         self.terms.len()
     }
 
+    /// Whether this is zero (has no terms).
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.terms.is_empty()
+    }
+
     /// Whether this is zero.
     #[must_use]
     pub fn is_zero(&self) -> bool {
@@ -351,7 +357,9 @@ impl Expr<Rational> {
     #[must_use]
     pub fn eval(&self, q: &[f64], qd: &[f64], qdd: &[f64]) -> f64 {
         self.terms()
-            .map(|(m, t, c)| crate::ring::to_f64(c).unwrap_or(f64::NAN) * t.eval(q) * m.eval(qd, qdd))
+            .map(|(m, t, c)| {
+                crate::ring::to_f64(c).unwrap_or(f64::NAN) * t.eval(q) * m.eval(qd, qdd)
+            })
             .sum()
     }
 }
@@ -378,7 +386,11 @@ impl<C: Coefficient> fmt::Display for Expr<C> {
                     Some(rest) => ("-", rest.to_string()),
                     None => ("+", body.clone()),
                 };
-                let text = if !bare && text == "1" { String::new() } else { text };
+                let text = if !bare && text == "1" {
+                    String::new()
+                } else {
+                    text
+                };
                 let sep = if bare || text.is_empty() { "" } else { " " };
                 match (first_group, sign) {
                     (true, "-") => write!(f, "-{text}{sep}")?,

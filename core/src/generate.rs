@@ -11,7 +11,7 @@ use crate::emit::{
     Method,
 };
 use crate::expr::Expr;
-use crate::ring::{to_i128_pair, Rational};
+use crate::ring::to_i128_pair;
 use crate::slp::Input;
 use crate::trig::Trig;
 
@@ -23,6 +23,9 @@ pub struct Header {
     pub ty: TokenStream,
     /// The where clause.
     pub where_clause: TokenStream,
+    /// The link fields' names: the generated code reads them once, because the marker fields
+    /// are otherwise never read and the user would get `dead_code` warnings.
+    pub fields: Vec<proc_macro2::Ident>,
 }
 
 /// A parameter of a generated method.
@@ -36,14 +39,19 @@ enum Param {
     Torque,
 }
 
+/// Builds a method's return value from its output identifiers.
+type Finish<'a> = Box<dyn std::ops::Fn(&[proc_macro2::Ident]) -> TokenStream + 'a>;
+
 struct Fn<'a> {
     name: &'static str,
     params: &'a [Param],
     ret: TokenStream,
     doc: String,
     method: Method,
+    /// Statements before the body.
+    touch: TokenStream,
     /// Builds the return value from the output identifiers.
-    finish: Box<dyn std::ops::Fn(&[proc_macro2::Ident]) -> TokenStream + 'a>,
+    finish: Finish<'a>,
 }
 
 fn emit_fn(n: usize, f: Fn<'_>) -> Result<TokenStream, EmitError> {
@@ -54,7 +62,9 @@ fn emit_fn(n: usize, f: Fn<'_>) -> Result<TokenStream, EmitError> {
     for p in f.params {
         match *p {
             Param::Joints(name, kind) => {
-                let used: Vec<bool> = (0..n).map(|j| rendered.inputs_used.contains(&kind(j))).collect();
+                let used: Vec<bool> = (0..n)
+                    .map(|j| rendered.inputs_used.contains(&kind(j)))
+                    .collect();
                 let pname = if used.iter().any(|&u| u) {
                     local(name)
                 } else {
@@ -70,13 +80,18 @@ fn emit_fn(n: usize, f: Fn<'_>) -> Result<TokenStream, EmitError> {
                             quote!(_)
                         }
                     });
-                    unpack.push(quote!(let [#(#pats),*] = ::planar_arm::__private::unpack(#pname);));
+                    unpack
+                        .push(quote!(let [#(#pats),*] = ::planar_arm::__private::unpack(#pname);));
                 }
             }
             Param::Force => {
                 let u = rendered.inputs_used.contains(&Input::Force(0));
                 let v = rendered.inputs_used.contains(&Input::Force(1));
-                let pname = if u || v { local("force") } else { local("_force") };
+                let pname = if u || v {
+                    local("force")
+                } else {
+                    local("_force")
+                };
                 params.push(quote!(#pname: &::planar_arm::nalgebra::Vector2<f64>));
                 if u || v {
                     let (u, v) = (local("u"), local("v"));
@@ -94,6 +109,7 @@ fn emit_fn(n: usize, f: Fn<'_>) -> Result<TokenStream, EmitError> {
         }
     }
     let name = quote::format_ident!("{}", f.name);
+    let touch = &f.touch;
     let statements = &rendered.statements;
     let result = (f.finish)(&rendered.outputs);
     let ret = &f.ret;
@@ -102,6 +118,7 @@ fn emit_fn(n: usize, f: Fn<'_>) -> Result<TokenStream, EmitError> {
         #[doc = #doc]
         #[inline]
         fn #name(&self, #(#params),*) -> #ret {
+            #touch
             #(#unpack)*
             #(#statements)*
             #result
@@ -188,6 +205,12 @@ pub fn generate(d: &Derived, header: &Header) -> Result<TokenStream, EmitError> 
     let tau = Param::Joints("tau", Input::Tau);
     let svec = quote!(::planar_arm::nalgebra::SVector<f64, #nn>);
     let smat = quote!(::planar_arm::nalgebra::SMatrix<f64, #nn, #nn>);
+    let fields = &header.fields;
+    let touch = if fields.is_empty() {
+        TokenStream::new()
+    } else {
+        quote!(let _ = (#(&self.#fields),*);)
+    };
 
     let mut m_rows = Vec::new();
     for i in 0..n {
@@ -210,116 +233,179 @@ pub fn generate(d: &Derived, header: &Header) -> Result<TokenStream, EmitError> 
         ret: smat.clone(),
         doc: formula_doc(&format!("The mass matrix M(q), derived exactly (symmetric; upper triangle shown). {conventions}"), &m_rows),
         method: d.mass_matrix_method(),
+        touch: touch.clone(),
         finish: Box::new(|ids| matrix(n, n, ids)),
     })?);
-    fns.push(emit_fn(n, Fn {
-        name: "coriolis",
-        params: &[q, qd],
-        ret: svec.clone(),
-        doc: formula_doc("The velocity-product torques c(q, qd).", &rows_doc("c", &dy.coriolis)),
-        method: d.coriolis_method(),
-        finish: Box::new(vector),
-    })?);
+    fns.push(emit_fn(
+        n,
+        Fn {
+            name: "coriolis",
+            params: &[q, qd],
+            ret: svec.clone(),
+            doc: formula_doc(
+                "The velocity-product torques c(q, qd).",
+                &rows_doc("c", &dy.coriolis),
+            ),
+            method: d.coriolis_method(),
+            touch: TokenStream::new(),
+            finish: Box::new(vector),
+        },
+    )?);
     fns.push(emit_fn(n, Fn {
         name: "coriolis_matrix",
         params: &[q, qd],
         ret: smat.clone(),
         doc: formula_doc("The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.", &cm_rows),
         method: d.coriolis_matrix_method(),
+        touch: TokenStream::new(),
         finish: Box::new(|ids| matrix(n, n, ids)),
     })?);
-    fns.push(emit_fn(n, Fn {
-        name: "gravity",
-        params: &[q],
-        ret: svec.clone(),
-        doc: formula_doc("The gravity torques g(q) = dV/dq.", &rows_doc("g", &dy.gravity)),
-        method: d.gravity_method(),
-        finish: Box::new(vector),
-    })?);
-    fns.push(emit_fn(n, Fn {
-        name: "inverse_dynamics",
-        params: &[q, qd, qdd],
-        ret: svec.clone(),
-        doc: formula_doc("Lagrange's equation, tau_i = d/dt dL/dqd_i - dL/dq_i, expanded.", &rows_doc("tau", &dy.torques)),
-        method: d.inverse_dynamics_method(),
-        finish: Box::new(vector),
-    })?);
+    fns.push(emit_fn(
+        n,
+        Fn {
+            name: "gravity",
+            params: &[q],
+            ret: svec.clone(),
+            doc: formula_doc(
+                "The gravity torques g(q) = dV/dq.",
+                &rows_doc("g", &dy.gravity),
+            ),
+            method: d.gravity_method(),
+            touch: TokenStream::new(),
+            finish: Box::new(vector),
+        },
+    )?);
+    fns.push(emit_fn(
+        n,
+        Fn {
+            name: "inverse_dynamics",
+            params: &[q, qd, qdd],
+            ret: svec.clone(),
+            doc: formula_doc(
+                "Lagrange's equation, tau_i = d/dt dL/dqd_i - dL/dq_i, expanded.",
+                &rows_doc("tau", &dy.torques),
+            ),
+            method: d.inverse_dynamics_method(),
+            touch: TokenStream::new(),
+            finish: Box::new(vector),
+        },
+    )?);
     let fd_doc = match n {
         1 => "qdd = (tau - c - g) / M11.".to_string(),
         2 => "qdd = M^-1 (tau - c - g) in closed form (Cramer's rule, det = M11 M22 - M12^2 > 0).".to_string(),
         _ => "qdd = M^-1 (tau - c - g) by an unrolled L D L^T factorisation of M (no square roots, no allocation).".to_string(),
     };
-    fns.push(emit_fn(n, Fn {
-        name: "forward_dynamics",
-        params: &[q, qd, tau],
-        ret: svec.clone(),
-        doc: fd_doc,
-        method: d.forward_dynamics_method(),
-        finish: Box::new(vector),
-    })?);
-    fns.push(emit_fn(n, Fn {
-        name: "kinetic_energy",
-        params: &[q, qd],
-        ret: quote!(f64),
-        doc: formula_doc("The kinetic energy.", &[("T".into(), &dy.kinetic_energy)]),
-        method: d.kinetic_energy_method(),
-        finish: Box::new(|ids| { let i = &ids[0]; quote!(#i) }),
-    })?);
-    fns.push(emit_fn(n, Fn {
-        name: "potential_energy",
-        params: &[q],
-        ret: quote!(f64),
-        doc: formula_doc("The potential energy (zero at y = 0).", &[("V".into(), &dy.potential_energy)]),
-        method: d.potential_energy_method(),
-        finish: Box::new(|ids| { let i = &ids[0]; quote!(#i) }),
-    })?);
+    fns.push(emit_fn(
+        n,
+        Fn {
+            name: "forward_dynamics",
+            params: &[q, qd, tau],
+            ret: svec.clone(),
+            doc: fd_doc,
+            method: d.forward_dynamics_method(),
+            touch: TokenStream::new(),
+            finish: Box::new(vector),
+        },
+    )?);
+    fns.push(emit_fn(
+        n,
+        Fn {
+            name: "kinetic_energy",
+            params: &[q, qd],
+            ret: quote!(f64),
+            doc: formula_doc("The kinetic energy.", &[("T".into(), &dy.kinetic_energy)]),
+            method: d.kinetic_energy_method(),
+            touch: TokenStream::new(),
+            finish: Box::new(|ids| {
+                let i = &ids[0];
+                quote!(#i)
+            }),
+        },
+    )?);
+    fns.push(emit_fn(
+        n,
+        Fn {
+            name: "potential_energy",
+            params: &[q],
+            ret: quote!(f64),
+            doc: formula_doc(
+                "The potential energy (zero at y = 0).",
+                &[("V".into(), &dy.potential_energy)],
+            ),
+            method: d.potential_energy_method(),
+            touch: TokenStream::new(),
+            finish: Box::new(|ids| {
+                let i = &ids[0];
+                quote!(#i)
+            }),
+        },
+    )?);
     let ki = &d.kinematics;
     let (tx, ty) = &ki.points[n];
-    fns.push(emit_fn(n, Fn {
-        name: "tip_pose",
-        params: &[q],
-        ret: quote!(::planar_arm::nalgebra::Isometry2<f64>),
-        doc: formula_doc(&format!("The tip pose; the orientation is the last link's angle {}.", ki.tip_angle), &[("x".into(), tx), ("y".into(), ty)]),
-        method: d.tip_pose_method(),
-        finish: Box::new(|ids| {
-            let (x, y, c, s) = (&ids[0], &ids[1], &ids[2], &ids[3]);
-            quote!(::planar_arm::__private::pose(#x, #y, #c, #s))
-        }),
-    })?);
+    fns.push(emit_fn(
+        n,
+        Fn {
+            name: "tip_pose",
+            params: &[q],
+            ret: quote!(::planar_arm::nalgebra::Isometry2<f64>),
+            doc: formula_doc(
+                &format!(
+                    "The tip pose; the orientation is the last link's angle {}.",
+                    ki.tip_angle
+                ),
+                &[("x".into(), tx), ("y".into(), ty)],
+            ),
+            method: d.tip_pose_method(),
+            touch: TokenStream::new(),
+            finish: Box::new(|ids| {
+                let (x, y, c, s) = (&ids[0], &ids[1], &ids[2], &ids[3]);
+                quote!(::planar_arm::__private::pose(#x, #y, #c, #s))
+            }),
+        },
+    )?);
     let mut j_rows = Vec::new();
     for (r, row) in ki.jacobian.iter().enumerate() {
         for (j, e) in row.iter().enumerate() {
             j_rows.push((format!("J{}{}", r + 1, j + 1), e));
         }
     }
-    fns.push(emit_fn(n, Fn {
-        name: "jacobian",
-        params: &[q],
-        ret: quote!(::planar_arm::nalgebra::SMatrix<f64, 3, #nn>),
-        doc: formula_doc("The Jacobian d(x, y, phi)/dq.", &j_rows),
-        method: d.jacobian_method(),
-        finish: Box::new(|ids| matrix(3, n, ids)),
-    })?);
-    fns.push(emit_fn(n, Fn {
-        name: "joint_positions",
-        params: &[q],
-        ret: quote!([::planar_arm::nalgebra::Point2<f64>; #nn]),
-        doc: "The position of each joint, joint 1 at the origin.".to_string(),
-        method: d.joint_positions_method(),
-        finish: Box::new(|ids| {
-            let pts = ids.chunks(2).map(|p| {
-                let (x, y) = (&p[0], &p[1]);
-                quote!(::planar_arm::nalgebra::Point2::new(#x, #y))
-            });
-            quote!([#(#pts),*])
-        }),
-    })?);
+    fns.push(emit_fn(
+        n,
+        Fn {
+            name: "jacobian",
+            params: &[q],
+            ret: quote!(::planar_arm::nalgebra::SMatrix<f64, 3, #nn>),
+            doc: formula_doc("The Jacobian d(x, y, phi)/dq.", &j_rows),
+            method: d.jacobian_method(),
+            touch: TokenStream::new(),
+            finish: Box::new(|ids| matrix(3, n, ids)),
+        },
+    )?);
+    fns.push(emit_fn(
+        n,
+        Fn {
+            name: "joint_positions",
+            params: &[q],
+            ret: quote!([::planar_arm::nalgebra::Point2<f64>; #nn]),
+            doc: "The position of each joint, joint 1 at the origin.".to_string(),
+            method: d.joint_positions_method(),
+            touch: TokenStream::new(),
+            finish: Box::new(|ids| {
+                let pts = ids.chunks(2).map(|p| {
+                    let (x, y) = (&p[0], &p[1]);
+                    quote!(::planar_arm::nalgebra::Point2::new(#x, #y))
+                });
+                quote!([#(#pts),*])
+            }),
+        },
+    )?);
     fns.push(emit_fn(n, Fn {
         name: "tip_polar",
         params: &[q],
         ret: quote!((f64, f64)),
         doc: formula_doc("The tip in polar form: r from r^2 (which does not depend on q1), theta = atan2(y, x).", &[("r^2".into(), &ki.radius_squared)]),
         method: d.tip_polar_method(),
+        touch: TokenStream::new(),
         finish: Box::new(|ids| {
             let (r2, x, y) = (&ids[0], &ids[1], &ids[2]);
             quote!(::planar_arm::__private::polar(#r2, #x, #y))
@@ -331,6 +417,7 @@ pub fn generate(d: &Derived, header: &Header) -> Result<TokenStream, EmitError> 
         ret: svec.clone(),
         doc: "Statics: tau = J^T (u, v, torque), the motor torques that make the tip exert force (u, v) and torque `torque`.".to_string(),
         method: d.joint_torques_method(),
+        touch: TokenStream::new(),
         finish: Box::new(vector),
     })?);
 
@@ -344,11 +431,24 @@ pub fn generate(d: &Derived, header: &Header) -> Result<TokenStream, EmitError> 
             Ok(quote!([#(#row),*]))
         })
         .collect::<Result<Vec<_>, EmitError>>()?;
-    let c_exact = dy.coriolis.iter().map(exact_terms).collect::<Result<Vec<_>, _>>()?;
-    let g_exact = dy.gravity.iter().map(exact_terms).collect::<Result<Vec<_>, _>>()?;
+    let c_exact = dy
+        .coriolis
+        .iter()
+        .map(exact_terms)
+        .collect::<Result<Vec<_>, _>>()?;
+    let g_exact = dy
+        .gravity
+        .iter()
+        .map(exact_terms)
+        .collect::<Result<Vec<_>, _>>()?;
     let t_exact = exact_terms(&dy.kinetic_energy)?;
     let v_exact = exact_terms(&dy.potential_energy)?;
-    let Header { impl_generics, ty, where_clause } = header;
+    let Header {
+        impl_generics,
+        ty,
+        where_clause,
+        ..
+    } = header;
     Ok(quote! {
         #[automatically_derived]
         impl #impl_generics ::planar_arm::PlanarArm<#nn> for #ty #where_clause {
@@ -385,14 +485,16 @@ pub fn summary(d: &Derived) -> String {
     s
 }
 
-#[allow(dead_code)]
-fn _rational(_: &Rational) {}
-
 /// Closed-form inverse kinematics and inverse statics for two and three links (the paper's
 /// solutions, specialised by inlining the arm's constant lengths); nothing for other `N`.
 #[must_use]
 pub fn closed_forms(d: &Derived, header: &Header) -> TokenStream {
-    let Header { impl_generics, ty, where_clause } = header;
+    let Header {
+        impl_generics,
+        ty,
+        where_clause,
+        ..
+    } = header;
     let lengths: Vec<TokenStream> = d
         .arm
         .links
@@ -464,7 +566,12 @@ pub fn closed_forms(d: &Derived, header: &Header) -> TokenStream {
 /// so that uses of the trait elsewhere do not add a cascade of errors.
 #[must_use]
 pub fn stub(n: usize, header: &Header) -> TokenStream {
-    let Header { impl_generics, ty, where_clause } = header;
+    let Header {
+        impl_generics,
+        ty,
+        where_clause,
+        ..
+    } = header;
     let nn = Literal::usize_unsuffixed(n);
     let v = quote!(&::planar_arm::nalgebra::SVector<f64, #nn>);
     let m = quote!(::planar_arm::nalgebra::SMatrix<f64, #nn, #nn>);

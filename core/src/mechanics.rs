@@ -186,7 +186,9 @@ impl<C: Coefficient> Dynamics<C> {
             .collect();
         let coriolis: Vec<Expr<C>> = torques
             .iter()
-            .map(|t| t.filter(|m| m.degree() == 2 && m.powers().all(|(v, _)| matches!(v, Var::Qd(_)))))
+            .map(|t| {
+                t.filter(|m| m.degree() == 2 && m.powers().all(|(v, _)| matches!(v, Var::Qd(_))))
+            })
             .collect();
         let coriolis_matrix = christoffel(&mass_matrix);
         Self {
@@ -277,7 +279,10 @@ mod tests {
         assert_eq!(d.mass_matrix[0][0].constant_term(), Some(&ratio(5, 3)));
         assert_eq!(d.mass_matrix[0][0].coefficient(&c(&[0, 1])), Some(&int(1)));
         assert_eq!(d.mass_matrix[0][1].constant_term(), Some(&ratio(1, 3)));
-        assert_eq!(d.mass_matrix[0][1].coefficient(&c(&[0, 1])), Some(&ratio(1, 2)));
+        assert_eq!(
+            d.mass_matrix[0][1].coefficient(&c(&[0, 1])),
+            Some(&ratio(1, 2))
+        );
         assert_eq!(d.mass_matrix[1][1], Expr::constant(ratio(1, 3)));
         assert_eq!(d.mass_matrix[0][1], d.mass_matrix[1][0]);
     }

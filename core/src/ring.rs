@@ -80,7 +80,11 @@ pub fn parse_decimal(text: &str) -> Option<Rational> {
     if int_part.is_empty() && frac_part.is_empty() {
         return None;
     }
-    if !int_part.bytes().chain(frac_part.bytes()).all(|b| b.is_ascii_digit()) {
+    if !int_part
+        .bytes()
+        .chain(frac_part.bytes())
+        .all(|b| b.is_ascii_digit())
+    {
         return None;
     }
     let digits: BigInt = format!("{int_part}{frac_part}0").parse().ok()?;
@@ -90,7 +94,10 @@ pub fn parse_decimal(text: &str) -> Option<Rational> {
     if scale.unsigned_abs() > 100_000 {
         return None;
     }
-    let pow = num_traits::pow(BigInt::from(10), usize::try_from(scale.unsigned_abs()).ok()?);
+    let pow = num_traits::pow(
+        BigInt::from(10),
+        usize::try_from(scale.unsigned_abs()).ok()?,
+    );
     Some(if scale >= 0 {
         Rational::from_integer(digits * pow)
     } else {

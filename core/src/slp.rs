@@ -148,7 +148,10 @@ impl Program {
 
     /// `a + b`, folded and ordered so that `a + b` and `b + a` are one node.
     pub fn add(&mut self, a: Id, b: Id) -> Id {
-        match (self.constant_value(a).cloned(), self.constant_value(b).cloned()) {
+        match (
+            self.constant_value(a).cloned(),
+            self.constant_value(b).cloned(),
+        ) {
             (Some(x), Some(y)) => return self.constant(x + y),
             (Some(x), _) if x.is_zero() => return b,
             (_, Some(y)) if y.is_zero() => return a,
@@ -166,7 +169,10 @@ impl Program {
 
     /// `a - b`, folded.
     pub fn sub(&mut self, a: Id, b: Id) -> Id {
-        match (self.constant_value(a).cloned(), self.constant_value(b).cloned()) {
+        match (
+            self.constant_value(a).cloned(),
+            self.constant_value(b).cloned(),
+        ) {
             (Some(x), Some(y)) => return self.constant(x - y),
             (_, Some(y)) if y.is_zero() => return a,
             (Some(x), _) if x.is_zero() => return self.neg(b),
@@ -180,7 +186,10 @@ impl Program {
 
     /// `a b`, folded and ordered.
     pub fn mul(&mut self, a: Id, b: Id) -> Id {
-        match (self.constant_value(a).cloned(), self.constant_value(b).cloned()) {
+        match (
+            self.constant_value(a).cloned(),
+            self.constant_value(b).cloned(),
+        ) {
             (Some(x), Some(y)) => return self.constant(x * y),
             (Some(x), _) | (_, Some(x)) if x.is_zero() => return self.constant(Rational::zero()),
             (Some(x), _) if x.is_one() => return b,
@@ -192,7 +201,11 @@ impl Program {
         // Constants first, so products read `(1.0 / 2.0) * c2`.
         let a_const = self.constant_value(a).is_some();
         let b_const = self.constant_value(b).is_some();
-        let (a, b) = if (b_const && !a_const) || (a_const == b_const && b < a) { (b, a) } else { (a, b) };
+        let (a, b) = if (b_const && !a_const) || (a_const == b_const && b < a) {
+            (b, a)
+        } else {
+            (a, b)
+        };
         self.intern(Node::Mul(a, b))
     }
 
@@ -283,16 +296,22 @@ impl Program {
         let start = terms.iter().position(|(neg, _)| !neg);
         let mut acc = match start {
             Some(i) => terms[i].1,
-            None => return {
-                let zero = self.constant(Rational::zero());
-                terms.iter().fold(zero, |acc, &(_, x)| self.sub(acc, x))
-            },
+            None => {
+                return {
+                    let zero = self.constant(Rational::zero());
+                    terms.iter().fold(zero, |acc, &(_, x)| self.sub(acc, x))
+                }
+            }
         };
         for (i, &(neg, x)) in terms.iter().enumerate() {
             if Some(i) == start {
                 continue;
             }
-            acc = if neg { self.sub(acc, x) } else { self.add(acc, x) };
+            acc = if neg {
+                self.sub(acc, x)
+            } else {
+                self.add(acc, x)
+            };
         }
         acc
     }

@@ -209,12 +209,7 @@ impl Trig {
     /// Numeric value at joint angles `q`.
     #[must_use]
     pub fn eval(&self, q: &[f64]) -> f64 {
-        let angle = |a: &Angle| -> f64 {
-            a.0.iter()
-                .zip(q)
-                .map(|(&k, &x)| f64::from(k) * x)
-                .sum()
-        };
+        let angle = |a: &Angle| -> f64 { a.0.iter().zip(q).map(|(&k, &x)| f64::from(k) * x).sum() };
         match self {
             Trig::One => 1.0,
             Trig::Cos(a) => angle(a).cos(),
@@ -249,7 +244,10 @@ mod tests {
     #[test]
     fn angles_are_canonical() {
         assert_eq!(Trig::cos(a(&[-1, 1])), (1, Trig::Cos(a(&[1, -1]))));
-        assert_eq!(Trig::sin(a(&[0, -1, -1])), Some((-1, Trig::Sin(a(&[0, 1, 1])))));
+        assert_eq!(
+            Trig::sin(a(&[0, -1, -1])),
+            Some((-1, Trig::Sin(a(&[0, 1, 1]))))
+        );
         assert_eq!(Trig::sin(a(&[0, 0])), None);
         assert_eq!(Trig::cos(a(&[0])), (1, Trig::One));
     }

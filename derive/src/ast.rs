@@ -87,13 +87,20 @@ impl<'a> Arm<'a> {
                     &field.ident,
                     format!(
                         "link `{}` needs its parameters: #[arm(length = ..., mass = ...)]",
-                        field.ident.as_ref().map_or_else(String::new, ToString::to_string)
+                        field
+                            .ident
+                            .as_ref()
+                            .map_or_else(String::new, ToString::to_string)
                     ),
                 ),
             }
         }
         Some(Self {
-            gravity: struct_attrs.entries.into_iter().find(|e| e.0 == attr::GRAVITY).map(|e| e.2),
+            gravity: struct_attrs
+                .entries
+                .into_iter()
+                .find(|e| e.0 == attr::GRAVITY)
+                .map(|e| e.2),
             links,
         })
     }
@@ -108,7 +115,6 @@ impl<'a> Arm<'a> {
             _ => None,
         }
     }
-
 }
 
 fn is_revolute(ty: &syn::Type) -> bool {

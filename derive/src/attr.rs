@@ -109,7 +109,10 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
                 Some(best) => format!("unknown key `{key}`; did you mean `{best}`?"),
                 None => format!(
                     "unknown key `{key}`; expected one of: {}",
-                    own.iter().map(|k| format!("`{k}`")).collect::<Vec<_>>().join(", ")
+                    own.iter()
+                        .map(|k| format!("`{k}`"))
+                        .collect::<Vec<_>>()
+                        .join(", ")
                 ),
             }
         };

@@ -18,11 +18,17 @@ fn standard_gravity() -> Rational {
 fn representable(cx: &Ctxt, what: &str, v: &Value) -> bool {
     match to_f64(&v.value) {
         None => {
-            cx.error_spanned_by(&v.tokens, format!("{what} {} is too large for f64", short(&v.value)));
+            cx.error_spanned_by(
+                &v.tokens,
+                format!("{what} {} is too large for f64", short(&v.value)),
+            );
             false
         }
         Some(x) if x == 0.0 && !v.value.is_zero() => {
-            cx.error_spanned_by(&v.tokens, format!("{what} is too small for f64 (it rounds to zero)"));
+            cx.error_spanned_by(
+                &v.tokens,
+                format!("{what} is too small for f64 (it rounds to zero)"),
+            );
             false
         }
         Some(_) => true,
@@ -64,7 +70,9 @@ pub fn check(cx: &Ctxt, arm: &Arm<'_>) -> Option<ArmSpec> {
             if v.is_none() {
                 cx.error_spanned_by(
                     &link.field.ident,
-                    format!("link `{name}` is missing `{key}`: add `{key} = ...` to its #[arm(...)]"),
+                    format!(
+                        "link `{name}` is missing `{key}`: add `{key} = ...` to its #[arm(...)]"
+                    ),
                 );
             }
             v
@@ -74,11 +82,17 @@ pub fn check(cx: &Ctxt, arm: &Arm<'_>) -> Option<ArmSpec> {
             continue;
         };
         if !length.value.is_positive() {
-            cx.error_spanned_by(&length.tokens, format!("link `{name}`: length must be positive"));
+            cx.error_spanned_by(
+                &length.tokens,
+                format!("link `{name}`: length must be positive"),
+            );
             ok = false;
         }
         if !mass.value.is_positive() {
-            cx.error_spanned_by(&mass.tokens, format!("link `{name}`: mass must be positive"));
+            cx.error_spanned_by(
+                &mass.tokens,
+                format!("link `{name}`: mass must be positive"),
+            );
             ok = false;
         }
         ok &= representable(cx, "length", length) & representable(cx, "mass", mass);
@@ -88,7 +102,9 @@ pub fn check(cx: &Ctxt, arm: &Arm<'_>) -> Option<ArmSpec> {
                 if i.value.is_negative() {
                     cx.error_spanned_by(
                         &i.tokens,
-                        format!("link `{name}`: inertia about the centre of mass cannot be negative"),
+                        format!(
+                            "link `{name}`: inertia about the centre of mass cannot be negative"
+                        ),
                     );
                     ok = false;
                 }
@@ -107,7 +123,9 @@ pub fn check(cx: &Ctxt, arm: &Arm<'_>) -> Option<ArmSpec> {
         if inertia.is_zero() && com.is_zero() {
             // A point mass on the joint axis adds nothing to that joint's inertia, so M would
             // be singular and forward dynamics undefined.
-            let tokens = a.get(INERTIA).map_or_else(|| quote::quote!(), |v| v.tokens.clone());
+            let tokens = a
+                .get(INERTIA)
+                .map_or_else(|| quote::quote!(), |v| v.tokens.clone());
             cx.error_spanned_by(
                 tokens,
                 format!(

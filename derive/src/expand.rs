@@ -34,6 +34,7 @@ fn try_derive(input: &DeriveInput) -> Result<TokenStream, TokenStream> {
         impl_generics: impl_generics.to_token_stream(),
         ty: quote!(#ident #ty_generics),
         where_clause: where_clause.to_token_stream(),
+        fields: field_names(input),
     };
     let derived = Derived::new(&spec);
     let mut tokens = generate(&derived, &header)
@@ -60,6 +61,14 @@ fn fallback(input: &DeriveInput) -> TokenStream {
             impl_generics: impl_generics.to_token_stream(),
             ty: quote!(#ident #ty_generics),
             where_clause: where_clause.to_token_stream(),
+            fields: field_names(input),
         },
     )
+}
+
+fn field_names(input: &DeriveInput) -> Vec<proc_macro2::Ident> {
+    match &input.data {
+        syn::Data::Struct(s) => s.fields.iter().filter_map(|f| f.ident.clone()).collect(),
+        _ => Vec::new(),
+    }
 }

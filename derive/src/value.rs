@@ -56,12 +56,17 @@ pub fn eval(expr: &Expr) -> syn::Result<Rational> {
 }
 
 fn literal(digits: &str, suffix: &str, span: &Lit) -> syn::Result<Rational> {
-    if !matches!(suffix, "" | "f64" | "f32" | "i32" | "i64" | "u32" | "u64" | "usize" | "isize") {
-        return Err(syn::Error::new_spanned(span, format!("unsupported literal suffix `{suffix}`")));
+    if !matches!(
+        suffix,
+        "" | "f64" | "f32" | "i32" | "i64" | "u32" | "u64" | "usize" | "isize"
+    ) {
+        return Err(syn::Error::new_spanned(
+            span,
+            format!("unsupported literal suffix `{suffix}`"),
+        ));
     }
-    parse_decimal(digits).ok_or_else(|| {
-        syn::Error::new_spanned(span, "number out of range for exact evaluation")
-    })
+    parse_decimal(digits)
+        .ok_or_else(|| syn::Error::new_spanned(span, "number out of range for exact evaluation"))
 }
 
 #[cfg(test)]

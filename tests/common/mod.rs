@@ -26,7 +26,12 @@ pub fn check_state<A: PlanarArm<N>, const N: usize>(
     let scale = m_ref.amax() * (1.0 + qd.amax().powi(2) + qdd.amax()) + tau_ref.amax();
     let tol = 1e-9;
     for i in 0..N {
-        assert!(close(tau[i], tau_ref[i], tol, scale), "tau[{i}] {} vs reference {}", tau[i], tau_ref[i]);
+        assert!(
+            close(tau[i], tau_ref[i], tol, scale),
+            "tau[{i}] {} vs reference {}",
+            tau[i],
+            tau_ref[i]
+        );
         for j in 0..N {
             assert!(close(m[(i, j)], m_ref[(i, j)], tol, scale), "M[{i}][{j}]");
             assert_eq!(m[(i, j)], m[(j, i)], "M is symmetric");
@@ -42,20 +47,36 @@ pub fn check_state<A: PlanarArm<N>, const N: usize>(
     let cm = arm.coriolis_matrix(q, qd);
     let cqd = cm * qd;
     for i in 0..N {
-        assert!(close(c[i], c_ref[i], tol, scale), "c[{i}] {} vs {}", c[i], c_ref[i]);
-        assert!(close(gv[i], g_ref[i], tol, scale), "g[{i}] {} vs {}", gv[i], g_ref[i]);
+        assert!(
+            close(c[i], c_ref[i], tol, scale),
+            "c[{i}] {} vs {}",
+            c[i],
+            c_ref[i]
+        );
+        assert!(
+            close(gv[i], g_ref[i], tol, scale),
+            "g[{i}] {} vs {}",
+            gv[i],
+            g_ref[i]
+        );
         assert!(close(cqd[i], c[i], tol, scale), "C qd = c, row {i}");
     }
     // tau = M qdd + c + g, three generated methods against a fourth.
     let assembled = m * qdd + c + gv;
     for i in 0..N {
-        assert!(close(assembled[i], tau[i], tol, scale), "M qdd + c + g, row {i}");
+        assert!(
+            close(assembled[i], tau[i], tol, scale),
+            "M qdd + c + g, row {i}"
+        );
     }
 
     // Forward dynamics inverts inverse dynamics.
     let back = arm.forward_dynamics(q, qd, &tau);
     let fd_ref = reference::forward_dynamics(&links, g, q, qd, &tau);
-    let m_inv = m.cholesky().map(|c| c.inverse()).expect("positive definite");
+    let m_inv = m
+        .cholesky()
+        .map(|c| c.inverse())
+        .expect("positive definite");
     #[allow(clippy::cast_precision_loss)]
     let cond = m.amax() * m_inv.amax() * N as f64;
     for i in 0..N {
@@ -65,7 +86,10 @@ pub fn check_state<A: PlanarArm<N>, const N: usize>(
             back[i],
             qdd[i]
         );
-        assert!(close(back[i], fd_ref[i], 1e-12 * cond.max(1.0), qdd.amax()), "vs ABA [{i}]");
+        assert!(
+            close(back[i], fd_ref[i], 1e-12 * cond.max(1.0), qdd.amax()),
+            "vs ABA [{i}]"
+        );
     }
 
     // Mdot - 2C is skew-symmetric; Mdot by central differences along qd.
@@ -73,19 +97,39 @@ pub fn check_state<A: PlanarArm<N>, const N: usize>(
     let mdot = (arm.mass_matrix(&(q + qd * h)) - arm.mass_matrix(&(q - qd * h))) / (2.0 * h);
     let n_mat: SMatrix<f64, N, N> = mdot - cm * 2.0;
     let skew = n_mat + n_mat.transpose();
-    assert!(skew.amax() <= 1e-6 * scale.max(1.0), "Mdot - 2C not skew: {skew}");
+    assert!(
+        skew.amax() <= 1e-6 * scale.max(1.0),
+        "Mdot - 2C not skew: {skew}"
+    );
 
     // Energies: T = qd^T M qd / 2 and g = dV/dq.
     let t = arm.kinetic_energy(q, qd);
     let t_quad = 0.5 * (qd.transpose() * m * qd)[(0, 0)];
-    assert!(close(t, t_quad, tol, scale), "T {t} vs qd^T M qd / 2 {t_quad}");
-    assert!(close(t, reference::kinetic_energy(&links, q, qd), tol, scale));
-    assert!(close(arm.potential_energy(q), reference::potential_energy(&links, g, q), tol, scale));
+    assert!(
+        close(t, t_quad, tol, scale),
+        "T {t} vs qd^T M qd / 2 {t_quad}"
+    );
+    assert!(close(
+        t,
+        reference::kinetic_energy(&links, q, qd),
+        tol,
+        scale
+    ));
+    assert!(close(
+        arm.potential_energy(q),
+        reference::potential_energy(&links, g, q),
+        tol,
+        scale
+    ));
     for i in 0..N {
         let mut e = SVector::<f64, N>::zeros();
         e[i] = h;
         let dv = (arm.potential_energy(&(q + e)) - arm.potential_energy(&(q - e))) / (2.0 * h);
-        assert!(close(dv, gv[i], 1e-6, scale), "dV/dq[{i}] {dv} vs g {}", gv[i]);
+        assert!(
+            close(dv, gv[i], 1e-6, scale),
+            "dV/dq[{i}] {dv} vs g {}",
+            gv[i]
+        );
     }
 
     // Kinematics: tip, joints and Jacobian.
@@ -94,14 +138,22 @@ pub fn check_state<A: PlanarArm<N>, const N: usize>(
     assert!(close(tip.translation.x, tip_ref.x, tol, 10.0));
     assert!(close(tip.translation.y, tip_ref.y, tol, 10.0));
     let phi: f64 = q.iter().sum();
-    assert!((tip.rotation.angle() - planar_arm::nalgebra::UnitComplex::new(phi).angle()).abs() < 1e-9);
+    assert!(
+        (tip.rotation.angle() - planar_arm::nalgebra::UnitComplex::new(phi).angle()).abs() < 1e-9
+    );
     let j = arm.jacobian(q);
     let j_ref = reference::jacobian(&links, q);
-    assert!((j - j_ref).amax() <= 1e-9 * j_ref.amax().max(1.0), "Jacobian");
+    assert!(
+        (j - j_ref).amax() <= 1e-9 * j_ref.amax().max(1.0),
+        "Jacobian"
+    );
     let joints = arm.joint_positions(q);
     let joints_ref = reference::joint_positions(&links, q);
     for (a, b) in joints.iter().zip(&joints_ref) {
-        assert!((a - b).norm() <= 1e-9 * (1.0 + b.coords.norm()), "joint positions");
+        assert!(
+            (a - b).norm() <= 1e-9 * (1.0 + b.coords.norm()),
+            "joint positions"
+        );
     }
 }
 
@@ -120,7 +172,7 @@ pub fn state<const N: usize>(seed: u64, range: f64) -> SVector<f64, N> {
 
 /// One test per arm: `name: Type, N;`, each over proptest-drawn states.
 #[macro_export]
-macro_rules! check_arms {
+macro_rules! planar_arm_tests_check_arms {
     ($($name:ident: $ty:ty, $n:literal;)*) => {
         $(
             proptest::proptest! {
@@ -139,4 +191,3 @@ macro_rules! check_arms {
         )*
     };
 }
-pub use check_arms;
