@@ -28,9 +28,32 @@ impl fmt::Display for Var {
     }
 }
 
-/// A product of variables with positive exponents, ordered.
-#[derive(Clone, PartialEq, Eq, PartialOrd, Ord, Hash, Debug, Default)]
+/// A product of variables with positive exponents.
+///
+/// Ordered by degree, then with higher powers of earlier variables first, as the paper writes
+/// `qd1^2, qd1 qd2, qd2^2`.
+#[derive(Clone, PartialEq, Eq, Hash, Debug, Default)]
 pub struct Monomial(BTreeMap<Var, u32>);
+
+impl PartialOrd for Monomial {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Monomial {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        self.degree().cmp(&other.degree()).then_with(|| {
+            let mut vars: Vec<Var> = self.0.keys().chain(other.0.keys()).copied().collect();
+            vars.sort_unstable();
+            vars.dedup();
+            vars.iter()
+                .map(|&v| other.exponent(v).cmp(&self.exponent(v)))
+                .find(|o| o.is_ne())
+                .unwrap_or(std::cmp::Ordering::Equal)
+        })
+    }
+}
 
 impl Monomial {
     /// The empty product, 1.
@@ -62,7 +85,9 @@ impl Monomial {
         self.0.get(&v).copied().unwrap_or(0)
     }
 
-    fn mul(&self, other: &Self) -> Self {
+    /// The product of two monomials.
+    #[must_use]
+    pub fn mul(&self, other: &Self) -> Self {
         let mut out = self.0.clone();
         for (&v, &e) in &other.0 {
             *out.entry(v).or_insert(0) += e;

@@ -10,8 +10,30 @@ use core::fmt;
 use crate::ring::{ratio, Rational};
 
 /// An integer combination `k_1 q_1 + k_2 q_2 + ...` of joint angles, trailing zeros trimmed.
-#[derive(Clone, PartialEq, Eq, PartialOrd, Ord, Hash, Debug, Default)]
+///
+/// Ordered as the paper lists its terms: by first joint, then by last joint, so
+/// `c2 < c23 < c3`.
+#[derive(Clone, PartialEq, Eq, Hash, Debug, Default)]
 pub struct Angle(Vec<i32>);
+
+impl Angle {
+    fn order_key(&self) -> (usize, usize, &[i32]) {
+        let first = self.0.iter().position(|&c| c != 0).unwrap_or(0);
+        (first, self.0.len(), &self.0)
+    }
+}
+
+impl PartialOrd for Angle {
+    fn partial_cmp(&self, other: &Self) -> Option<core::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Angle {
+    fn cmp(&self, other: &Self) -> core::cmp::Ordering {
+        self.order_key().cmp(&other.order_key())
+    }
+}
 
 impl Angle {
     /// The angle with the given coefficients (index 0 is q1).
