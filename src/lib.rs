@@ -133,6 +133,11 @@ pub mod reference;
 #[doc(hidden)]
 pub mod __private;
 
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
+
 pub use error::ArmError;
 pub use link::{Link, Revolute};
 pub use nalgebra;
