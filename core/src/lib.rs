@@ -1,4 +1,36 @@
-//! The symbolic engine of `planar_arm`. Crate docs are written at the end.
+//! The symbolic engine of `planar_arm`: exact rationals, trigonometric polynomials,
+//! Lagrangian mechanics of planar serial arms, straight-line programs and their emission as
+//! Rust. The derive macro is a thin front on this crate; it is an ordinary library, usable and
+//! tested on its own.
+//!
+//! - [`ring`]: the coefficient ring. [`Rational`] is a big-integer fraction (no overflow);
+//!   [`Coefficient`] is the trait a later ring (named run-time parameters) would implement.
+//! - [`trig`] and [`expr`]: the canonical form. An [`Expr`] is a sum of
+//!   `coefficient x trig atom x monomial in rates`, with trig products linearised and angles
+//!   normalised, so equal expressions are structurally equal. `diff_q`, `diff_var` and `dt`
+//!   (the chain rule) act on it directly.
+//! - [`mechanics`]: the paper's route. Centre-of-mass velocities by `dt` of their positions,
+//!   kinetic energy (translation plus rotation about the centre of mass), potential energy,
+//!   Lagrange's equation; M, c and g read off the torques; C from Christoffel symbols.
+//! - [`slp`]: hash-consed straight-line programs; trig atoms of angle sums by angle addition
+//!   from one `sin_cos` per joint; operation counts.
+//! - [`emit`] and [`generate`]: programs rendered as Rust, and the `impl PlanarArm<N>` the
+//!   derive emits.
+//!
+//! # Example: the paper's three equal links
+//!
+//! ```
+//! use planar_arm_core::{ArmSpec, Dynamics, Trig, Angle};
+//! use planar_arm_core::ring::ratio;
+//!
+//! let d = Dynamics::derive(&ArmSpec::paper(3)); // unit rods, no gravity
+//! // The paper prints 19/3 for the qd1 qd2 coefficient of L' = 2L; the derivation gives 10/3,
+//! // i.e. M12 = 5/3 + 3/2 c2 + 1/2 c23 + c3.
+//! assert_eq!(d.mass_matrix[0][1].constant_term(), Some(&ratio(5, 3)));
+//! assert_eq!(d.mass_matrix[0][1].coefficient(&Trig::Cos(Angle::new(vec![0, 1]))), Some(&ratio(3, 2)));
+//! assert_eq!(d.mass_matrix[0][1].to_string(), "5/3 + 3/2 c2 + 1/2 c23 + c3");
+//! println!("{d}"); // T, V, L, M, c and g in readable notation
+//! ```
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
