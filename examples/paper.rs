@@ -10,7 +10,9 @@
 use planar_arm::prelude::*;
 use planar_arm::reference;
 use planar_arm::symbolic::ring::{int, ratio, show, Rational};
-use planar_arm::symbolic::{Angle, ArmSpec, Dynamics, Expr, LinkSpec, Monomial, Trig, Var};
+use planar_arm::symbolic::{
+    Angle, ArmSpec, Dynamics, Expr, Kinematics, LinkSpec, Monomial, Trig, Var,
+};
 
 /// The paper's two equal links: uniform unit rods, no gravity for the dynamics.
 #[derive(PlanarArm, Default)]
@@ -110,6 +112,9 @@ fn main() {
     section("Three equal links");
     let d3 = print_dynamics(3);
 
+    section("Kinematics and statics (the first half of the paper)");
+    kinematics_and_statics();
+
     section("Errata: printed in the paper vs derived here");
     let l3 = paper_units(&d3.lagrangian);
     let mut link3 = ArmSpec::paper(3);
@@ -191,6 +196,94 @@ fn main() {
     );
     println!(
         "(tau against Newton-Euler, M against composite rigid body, qdd against articulated body)"
+    );
+}
+
+/// The determinant of a square matrix of expressions, by cofactor expansion (small N only).
+fn det(m: &[Vec<Expr>]) -> Expr {
+    match m.len() {
+        1 => m[0][0].clone(),
+        n => (0..n).fold(Expr::zero(), |acc, j| {
+            let minor: Vec<Vec<Expr>> = m[1..]
+                .iter()
+                .map(|row| {
+                    row.iter()
+                        .enumerate()
+                        .filter(|(k, _)| *k != j)
+                        .map(|(_, e)| e.clone())
+                        .collect()
+                })
+                .collect();
+            let term = m[0][j].mul(&det(&minor));
+            if j % 2 == 0 {
+                acc.add(&term)
+            } else {
+                acc.sub(&term)
+            }
+        }),
+    }
+}
+
+fn kinematics_and_statics() {
+    let mut arm = ArmSpec::paper(2);
+    arm.links[0].length = ratio(3, 2);
+    let k2 = Kinematics::derive(&arm);
+    println!("Two links, l1 = 3/2, l2 = 1:");
+    println!("  x = {}", k2.points[2].0);
+    println!("  y = {}", k2.points[2].1);
+    println!(
+        "  r^2 = x^2 + y^2 = {}   (no q1: the arm is an r-theta generator)",
+        k2.radius_squared
+    );
+    let j2 = vec![k2.jacobian[0].clone(), k2.jacobian[1].clone()];
+    println!(
+        "  statics tau = J^T (u, v): det J = {}   (paper: l1 l2 sin q2; singular at q2 = 0, pi)",
+        det(&j2)
+    );
+    let k3 = Kinematics::derive(&ArmSpec::paper(3));
+    println!("Three equal links: tau = A (u, v, T) with A = J^T,");
+    for (i, row) in (0..3).map(|j| {
+        (
+            j,
+            [&k3.jacobian[0][j], &k3.jacobian[1][j], &k3.jacobian[2][j]],
+        )
+    }) {
+        println!(
+            "  tau{} = ({}) u + ({}) v + ({}) T",
+            i + 1,
+            row[0],
+            row[1],
+            row[2]
+        );
+    }
+    println!("  det A = {}   (paper: l1 l2 sin q2)", det(&k3.jacobian));
+
+    let two = Paper2::default();
+    let target = Point2::new(1.2, 0.9);
+    match two.inverse_kinematics(&target) {
+        Ok([up, down]) => println!(
+            "Inverse kinematics of the paper's two links to (1.2, 0.9): elbow q = ({:.4}, {:.4}) or ({:.4}, {:.4})",
+            up[0], up[1], down[0], down[1]
+        ),
+        Err(e) => println!("inverse kinematics failed: {e}"),
+    }
+    match two.inverse_kinematics(&Point2::new(2.5, 0.0)) {
+        Ok(_) => println!("unexpected: (2.5, 0) reached"),
+        Err(e) => println!("  and to (2.5, 0): {e}"),
+    }
+    let q = Vector2::new(0.4, 1.1);
+    let tau = two.joint_torques(&q, &Vector2::new(1.0, -2.0), 0.0);
+    let back = two.tip_force(&q, &tau).map(|f| (f.x, f.y));
+    println!("Statics at q = (0.4, 1.1): tip force (1, -2) needs tau = ({:.4}, {:.4}); inverted back: {back:.4?}", tau[0], tau[1]);
+    println!(
+        "Work-spaces: two equal links reach a disk of radius {} (inner radius {});",
+        two.workspace().outer_radius(),
+        two.workspace().inner_radius()
+    );
+    let d = DexterousWorkspace::of_lengths(1.0, 1.0, 0.5);
+    println!(
+        "  three links 1, 1, 1/2 reach every orientation within radius {:?} (paper: 2l - l3 = 1.5)",
+        d.disk_radius()
     );
 }
 
