@@ -162,6 +162,16 @@ pub mod prelude {
 /// Conventions: `q[0]` is link 1's angle from +x, `q[i]` (i > 0) is link i+1's angle relative to
 /// link i; all zeros is the arm stretched along +x. Gravity acts along -y. The equations of
 /// motion are `tau = M(q) qdd + c(q, qd) + g(q)`.
+///
+/// # Numeric range
+///
+/// No method panics, whatever its input. For an arm with positive masses every method returns
+/// finite values for every state with `|q|, |qd|, |qdd| <= 1e6` and `|tau| <= 1e12`;
+/// `forward_dynamics` in particular stays finite (M is positive definite by construction and
+/// its factorisation is guarded against rounding). Beyond that range the methods are IEEE
+/// arithmetic on the exact formulas: a torque that exceeds `f64::MAX` (velocity terms grow as
+/// `qd^2`) is infinite. The infallible methods pass NaN through; use the `try_` methods, which
+/// answer NaN or infinite input, and an overflowed result, with [`ArmError::NonFinite`].
 pub trait PlanarArm<const N: usize> {
     /// The numeric link parameters, base first.
     const LINKS: [Link; N];
