@@ -18,6 +18,7 @@ use crate::expr::Expr;
 use crate::mechanics::{ArmSpec, Dynamics, Kinematics};
 use crate::ring::{show, to_f64, to_i128_pair, Rational};
 use crate::slp::{Id, Input, Node, OpCount, Program};
+use crate::trig::Angle;
 
 /// Why an arm cannot be emitted.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -68,6 +69,9 @@ pub struct Method {
     pub program: Program,
     /// The output nodes with the names of their `let`s.
     pub outputs: Vec<(String, Id)>,
+    /// How the program evaluates the method, for its doc comment (empty when it evaluates the
+    /// documented formulas term by term).
+    pub evaluation: String,
 }
 
 impl Method {
@@ -87,6 +91,49 @@ impl Method {
         let outs: Vec<Id> = self.outputs.iter().map(|o| o.1).collect();
         self.program.op_count(&outs)
     }
+
+    /// The longest chain of dependent operations to an output (see [`Program::depth`]).
+    #[must_use]
+    pub fn depth(&self) -> usize {
+        let outs: Vec<Id> = self.outputs.iter().map(|o| o.1).collect();
+        self.program.depth(&outs)
+    }
+
+    fn new(program: Program, outputs: Vec<(String, Id)>) -> Self {
+        Self {
+            program,
+            outputs,
+            evaluation: String::new(),
+        }
+    }
+
+    fn described(mut self, evaluation: &str) -> Self {
+        self.evaluation = evaluation.to_string();
+        self
+    }
+}
+
+/// The estimated run time of a method's program, in units of one multiplication: the
+/// operations (a division costs about four multiplications, a `sin_cos` call about twenty) plus
+/// the longest chain of dependent operations (latency the out-of-order core cannot hide).
+/// The chain is weighted one: weighted two, the expanded three-link torques beat the
+/// Newton-Euler recursion on paper but measured slower (docs/performance.md).
+fn cost(m: &Method) -> usize {
+    let count = m.op_count();
+    count.mul + count.add + 4 * count.div + 20 * count.sin_cos + m.depth()
+}
+
+/// The cheapest candidate by [`cost`]; the first one on a tie (candidates are listed with the
+/// term-by-term form first, so that form is kept when nothing beats it).
+fn cheapest(candidates: Vec<Method>) -> Method {
+    let mut best: Option<(usize, Method)> = None;
+    for m in candidates {
+        let c = cost(&m);
+        if best.as_ref().is_none_or(|(b, _)| c < *b) {
+            best = Some((c, m));
+        }
+    }
+    best.expect("at least one candidate").1
 }
 
 fn two(i: usize, j: usize) -> String {
@@ -95,40 +142,82 @@ fn two(i: usize, j: usize) -> String {
 
 /// The straight-line program of each generated method.
 impl Derived {
-    /// `M(q)`, upper triangle (the lower one is the same nodes).
+    /// `M(q)`: the cheaper (by [`OpCount`]) of the expanded entries and an unrolled
+    /// composite-rigid-body recursion. Upper triangle; the lower one is the same nodes.
     #[must_use]
     pub fn mass_matrix_method(&self) -> Method {
-        let mut p = Program::new();
-        let mut outputs = Vec::new();
-        for i in 0..self.n() {
-            for j in 0..self.n() {
-                let (a, b) = (i.min(j), i.max(j));
-                let id = p.expr(&self.dynamics.mass_matrix[a][b]);
-                outputs.push((format!("m{}", two(a, b)), id));
-            }
-        }
-        Method {
-            program: p,
-            outputs,
-        }
+        cheapest(vec![
+            self.mass_matrix_expanded_method(),
+            self.mass_matrix_composite_method(),
+        ])
     }
 
-    /// `c(q, qd)`.
+    /// `M(q)` evaluated entry by entry from the expanded formulas.
+    #[must_use]
+    pub fn mass_matrix_expanded_method(&self) -> Method {
+        let mut p = Program::new();
+        let m = expanded_mass_matrix(&mut p, &self.dynamics);
+        Method::new(p, matrix_outputs(&m))
+    }
+
+    /// `M(q)` by the composite-rigid-body recursion, unrolled for this arm.
+    #[must_use]
+    pub fn mass_matrix_composite_method(&self) -> Method {
+        let mut p = Program::new();
+        let m = composite_mass_matrix(&mut p, &self.arm);
+        Method::new(p, matrix_outputs(&m)).described(CRBA)
+    }
+
+    /// `c(q, qd)`: the cheaper of the expanded formulas and an unrolled Newton-Euler recursion
+    /// (no gravity, no accelerations).
     #[must_use]
     pub fn coriolis_method(&self) -> Method {
-        self.vector_method("cor", &self.dynamics.coriolis)
+        cheapest(vec![
+            self.vector_method("cor", &self.dynamics.coriolis),
+            self.newton_euler_method("cor", Terms::CORIOLIS),
+        ])
     }
 
-    /// `g(q)`.
+    /// `g(q)`: the cheaper of the expanded formulas and an unrolled static recursion.
     #[must_use]
     pub fn gravity_method(&self) -> Method {
-        self.vector_method("g", &self.dynamics.gravity)
+        cheapest(vec![
+            self.vector_method("g", &self.dynamics.gravity),
+            self.newton_euler_method("g", Terms::GRAVITY),
+        ])
     }
 
-    /// `tau = M qdd + c + g`, in the expanded Lagrangian form.
+    /// `tau = M qdd + c + g`: the cheaper of the expanded Lagrangian torques and an unrolled
+    /// Newton-Euler recursion.
     #[must_use]
     pub fn inverse_dynamics_method(&self) -> Method {
+        cheapest(vec![
+            self.inverse_dynamics_lagrange_method(),
+            self.inverse_dynamics_newton_euler_method(),
+        ])
+    }
+
+    /// `tau` from the expanded Lagrangian torques, term by term.
+    #[must_use]
+    pub fn inverse_dynamics_lagrange_method(&self) -> Method {
         self.vector_method("tau", &self.dynamics.torques)
+    }
+
+    /// `tau` by the planar recursive Newton-Euler algorithm unrolled for this arm.
+    #[must_use]
+    pub fn inverse_dynamics_newton_euler_method(&self) -> Method {
+        self.newton_euler_method("tau", Terms::ALL)
+    }
+
+    fn newton_euler_method(&self, name: &str, terms: Terms) -> Method {
+        let mut p = Program::new();
+        let tau = newton_euler(&mut p, &self.arm, terms);
+        let outputs = tau
+            .into_iter()
+            .enumerate()
+            .map(|(i, id)| (format!("{name}{}", i + 1), id))
+            .collect();
+        Method::new(p, outputs).described(RNEA)
     }
 
     /// `C(q, qd)`.
@@ -142,10 +231,7 @@ impl Derived {
                 outputs.push((format!("cm{}", two(i, j)), id));
             }
         }
-        Method {
-            program: p,
-            outputs,
-        }
+        Method::new(p, outputs)
     }
 
     /// `T(q, qd)`.
@@ -181,30 +267,99 @@ impl Derived {
                 (label, p.expr(e))
             })
             .collect();
-        Method {
-            program: p,
-            outputs,
-        }
+        Method::new(p, outputs)
     }
 
     /// `qdd = M^-1 (tau - c - g)`: Cramer's rule for one and two joints, an unrolled
-    /// `L D L^T` factorisation (no square roots, one division per joint) beyond.
+    /// `L D L^T` factorisation (no square roots, one division per joint) beyond. `M`, `c` and
+    /// `g` are evaluated exactly as [`mass_matrix_method`](Self::mass_matrix_method),
+    /// [`coriolis_method`](Self::coriolis_method) and [`gravity_method`](Self::gravity_method)
+    /// evaluate them (whichever of the expanded formulas and the unrolled recursions each
+    /// chose), so the result solves the very system those methods return: `tau - c - g` is
+    /// formed in the same order, bit for bit.
     #[must_use]
     pub fn forward_dynamics_method(&self) -> Method {
+        let recursive = |m: Method| !m.evaluation.is_empty();
+        self.forward_dynamics_with(
+            recursive(self.mass_matrix_method()),
+            recursive(self.coriolis_method()),
+            recursive(self.gravity_method()),
+        )
+    }
+
+    /// `det M` of a two-link arm as `det0 + f^2 sin^2 q2`: with `M11 = a + b cos q2`,
+    /// `M12 = e + f cos q2`, `M22 = d` and `b d = 2 e f` (always so for a planar arm),
+    /// `M11 M22 - M12^2 = (a d - e^2 - f^2) + f^2 sin^2 q2`, where `det0 = det M(q2 = 0) > 0`.
+    /// Both terms are non-negative, so unlike `M11 M22 - M12^2` it never cancels to zero or
+    /// below. `None` if `M` does not have that form.
+    fn two_link_det(&self, p: &mut Program) -> Option<Id> {
+        use crate::trig::Trig;
+        let q2 = Angle::new(vec![0, 1]);
+        let split = |e: &Expr| -> Option<(Rational, Rational)> {
+            let (mut k, mut c) = (Rational::zero(), Rational::zero());
+            for (mono, t, coeff) in e.terms() {
+                if mono.degree() != 0 {
+                    return None;
+                }
+                match t {
+                    Trig::One => k += coeff,
+                    Trig::Cos(a) if *a == q2 => c += coeff,
+                    _ => return None,
+                }
+            }
+            Some((k, c))
+        };
+        let mm = &self.dynamics.mass_matrix;
+        let (a, b) = split(&mm[0][0])?;
+        let (e, f) = split(&mm[0][1])?;
+        let (d, d_cos) = split(&mm[1][1])?;
+        let two = Rational::from_integer(2.into());
+        if !d_cos.is_zero() || &b * &d != two * &e * &f {
+            return None;
+        }
+        let det0 = &a * &d - &e * &e - &f * &f;
+        if !det0.is_positive() {
+            return None;
+        }
+        let det0 = p.constant(det0);
+        let f2 = p.constant(&f * &f);
+        let (_, s2) = p.trig_pair(&q2);
+        let s2s2 = p.mul(s2, s2);
+        let varying = p.mul(f2, s2s2);
+        Some(p.add(det0, varying))
+    }
+
+    /// Forward dynamics with `M` from the composite-rigid-body recursion or the expanded
+    /// entries, and `c` and `g` each from the Newton-Euler recursion or the expanded formulas.
+    #[must_use]
+    pub fn forward_dynamics_with(
+        &self,
+        composite: bool,
+        recursive_c: bool,
+        recursive_g: bool,
+    ) -> Method {
         let n = self.n();
         let mut p = Program::new();
-        let m: Vec<Vec<Id>> = (0..n)
-            .map(|i| {
-                (0..n)
-                    .map(|j| p.expr(&self.dynamics.mass_matrix[i.min(j)][i.max(j)]))
-                    .collect()
-            })
-            .collect();
+        let m = if composite {
+            composite_mass_matrix(&mut p, &self.arm)
+        } else {
+            expanded_mass_matrix(&mut p, &self.dynamics)
+        };
+        let c: Vec<Id> = if recursive_c {
+            newton_euler(&mut p, &self.arm, Terms::CORIOLIS)
+        } else {
+            self.dynamics.coriolis.iter().map(|e| p.expr(e)).collect()
+        };
+        let g: Vec<Id> = if recursive_g {
+            newton_euler(&mut p, &self.arm, Terms::GRAVITY)
+        } else {
+            self.dynamics.gravity.iter().map(|e| p.expr(e)).collect()
+        };
         let rhs: Vec<Id> = (0..n)
             .map(|i| {
-                let bias = p.expr(&self.dynamics.coriolis[i].add(&self.dynamics.gravity[i]));
                 let tau = p.input(Input::Tau(i));
-                p.sub(tau, bias)
+                let r = p.sub(tau, c[i]);
+                p.sub(r, g[i])
             })
             .collect();
         for (i, &r) in rhs.iter().enumerate() {
@@ -213,9 +368,11 @@ impl Derived {
         let qdd = match n {
             1 => vec![p.div(rhs[0], m[0][0])],
             2 => {
-                let a = p.mul(m[0][0], m[1][1]);
-                let b = p.mul(m[0][1], m[0][1]);
-                let det = p.sub(a, b);
+                let det = self.two_link_det(&mut p).unwrap_or_else(|| {
+                    let a = p.mul(m[0][0], m[1][1]);
+                    let b = p.mul(m[0][1], m[0][1]);
+                    p.sub(a, b)
+                });
                 p.set_name(det, "det".into());
                 let x0 = {
                     let u = p.mul(m[1][1], rhs[0]);
@@ -229,17 +386,37 @@ impl Derived {
                 };
                 vec![p.div(x0, det), p.div(x1, det)]
             }
-            _ => ldlt_solve(&mut p, &m, &rhs),
+            _ => {
+                let floors: Vec<Rational> = (0..n)
+                    .map(|i| pivot_floor(&self.dynamics.mass_matrix[i][i]))
+                    .collect();
+                ldlt_solve(&mut p, &m, &rhs, &floors)
+            }
         };
         let outputs = qdd
             .into_iter()
             .enumerate()
             .map(|(i, id)| (format!("qdd{}", i + 1), id))
             .collect();
-        Method {
-            program: p,
-            outputs,
-        }
+        let form = |recursive: bool, how: &str| {
+            if recursive {
+                format!("by the {how} unrolled for this arm")
+            } else {
+                "from the formulas".to_string()
+            }
+        };
+        let evaluation = if composite || recursive_c || recursive_g {
+            format!(
+                "M, c and g evaluated as `mass_matrix`, `coriolis` and `gravity` evaluate them: \
+                 M {}, c {}, g {}.",
+                form(composite, "composite-rigid-body algorithm"),
+                form(recursive_c, "recursive Newton-Euler algorithm"),
+                form(recursive_g, "static recursion"),
+            )
+        } else {
+            String::new()
+        };
+        Method::new(p, outputs).described(&evaluation)
     }
 
     /// Tip `x, y`, then `cos` and `sin` of the last link's angle.
@@ -250,15 +427,15 @@ impl Derived {
         let x = p.expr(x);
         let y = p.expr(y);
         let (c, s) = p.trig_pair(&self.kinematics.tip_angle);
-        Method {
-            program: p,
-            outputs: vec![
+        Method::new(
+            p,
+            vec![
                 ("x".into(), x),
                 ("y".into(), y),
                 ("cos_phi".into(), c),
                 ("sin_phi".into(), s),
             ],
-        }
+        )
     }
 
     /// The 3 x N Jacobian, row-major.
@@ -271,10 +448,7 @@ impl Derived {
                 outputs.push((format!("j{}", two(r, j)), p.expr(e)));
             }
         }
-        Method {
-            program: p,
-            outputs,
-        }
+        Method::new(p, outputs)
     }
 
     /// Joints `1..=N`: `x, y` of each.
@@ -286,10 +460,7 @@ impl Derived {
             outputs.push((format!("x{}", i + 1), p.expr(x)));
             outputs.push((format!("y{}", i + 1), p.expr(y)));
         }
-        Method {
-            program: p,
-            outputs,
-        }
+        Method::new(p, outputs)
     }
 
     /// `r^2`, tip `x`, tip `y`.
@@ -300,10 +471,7 @@ impl Derived {
         let (x, y) = &self.kinematics.points[self.n()];
         let x = p.expr(x);
         let y = p.expr(y);
-        Method {
-            program: p,
-            outputs: vec![("r2".into(), r2), ("x".into(), x), ("y".into(), y)],
-        }
+        Method::new(p, vec![("r2".into(), r2), ("x".into(), x), ("y".into(), y)])
     }
 
     /// `tau = J^T (u, v, torque)`.
@@ -322,74 +490,303 @@ impl Derived {
             let ab = p.add(a, b);
             outputs.push((format!("tau{}", j + 1), p.add(ab, t)));
         }
-        Method {
-            program: p,
-            outputs,
-        }
+        Method::new(p, outputs)
     }
 }
 
-/// Solves `M x = b` with `M = L D L^T` unrolled.
-fn ldlt_solve(p: &mut Program, m: &[Vec<Id>], b: &[Id]) -> Vec<Id> {
-    let n = m.len();
-    let mut l = vec![vec![None::<Id>; n]; n];
-    let mut d = vec![None::<Id>; n];
-    let mut inv_d = vec![None::<Id>; n];
-    for j in 0..n {
-        // d_j = M_jj - sum_k L_jk^2 d_k
-        let mut dj = m[j][j];
-        for k in 0..j {
-            let ljk = l[j][k].unwrap_or(dj);
-            let w = p.mul(ljk, ljk);
-            let w = p.mul(w, d[k].unwrap_or(dj));
-            dj = p.sub(dj, w);
+/// The doc-comment note of a method evaluated by the unrolled Newton-Euler recursion.
+const RNEA: &str = "Evaluated not term by term but by the planar recursive Newton-Euler \
+                    algorithm unrolled for this arm (the same function, fewer operations): \
+                    link-frame velocities and accelerations outwards, forces and moments \
+                    inwards, one rotation by each joint's (cos, sin) per pass, the link \
+                    constants folded in.";
+
+/// The doc-comment note of a mass matrix evaluated by the unrolled composite-rigid-body
+/// algorithm.
+const CRBA: &str = "Evaluated not term by term but by the composite-rigid-body algorithm \
+                    unrolled for this arm (the same function, fewer operations): the mass, \
+                    first moment and rotational inertia of each tail of the chain, in link \
+                    frames, the link constants folded in.";
+
+/// Which terms of `tau = M qdd + c + g` an unrolled Newton-Euler recursion evaluates.
+#[derive(Clone, Copy, Debug)]
+struct Terms {
+    rates: bool,
+    accelerations: bool,
+    gravity: bool,
+}
+
+impl Terms {
+    const ALL: Self = Self {
+        rates: true,
+        accelerations: true,
+        gravity: true,
+    };
+    const CORIOLIS: Self = Self {
+        rates: true,
+        accelerations: false,
+        gravity: false,
+    };
+    const GRAVITY: Self = Self {
+        rates: false,
+        accelerations: false,
+        gravity: true,
+    };
+}
+
+/// A planar vector of program nodes.
+type V2 = (Id, Id);
+
+/// `(cos q_j, sin q_j)`: joint `j`'s own `sin_cos`.
+fn joint_trig(p: &mut Program, j: usize) -> V2 {
+    p.trig_pair(&Angle::range(j, j + 1))
+}
+
+/// `R(q) v`: a vector of link `j`'s frame in link `j - 1`'s frame (`cs = (cos q_j, sin q_j)`).
+fn rotate(p: &mut Program, cs: V2, v: V2) -> V2 {
+    let (c, s) = cs;
+    let (a, b) = (p.mul(c, v.0), p.mul(s, v.1));
+    let x = p.sub(a, b);
+    let (a, b) = (p.mul(s, v.0), p.mul(c, v.1));
+    (x, p.add(a, b))
+}
+
+/// `R(-q) v`: a vector of link `j - 1`'s frame in link `j`'s frame.
+fn rotate_back(p: &mut Program, cs: V2, v: V2) -> V2 {
+    let (c, s) = cs;
+    let (a, b) = (p.mul(c, v.0), p.mul(s, v.1));
+    let x = p.add(a, b);
+    let (a, b) = (p.mul(c, v.1), p.mul(s, v.0));
+    (x, p.sub(a, b))
+}
+
+/// Joint torques by the planar recursive Newton-Euler algorithm, unrolled for the arm, in link
+/// frames (x along the link): each link's angular velocity `w` and acceleration `al`, and the
+/// acceleration `a` of its joint, outwards (gravity as an upward acceleration of the base);
+/// the force each link's tail exerts on it and the moment about its joint, inwards.
+fn newton_euler(p: &mut Program, arm: &ArmSpec, terms: Terms) -> Vec<Id> {
+    let n = arm.links.len();
+    let zero = p.constant(Rational::zero());
+    let k = |p: &mut Program, r: Rational| p.constant(r);
+    let g = k(
+        p,
+        if terms.gravity {
+            arm.gravity.clone()
+        } else {
+            Rational::zero()
+        },
+    );
+    // Acceleration of the current joint in the previous link's frame.
+    let mut end: V2 = (zero, g);
+    let (mut w, mut al) = (zero, zero);
+    let mut trig = Vec::with_capacity(n);
+    let mut force = Vec::with_capacity(n);
+    let mut alpha = Vec::with_capacity(n);
+    let mut accel = Vec::with_capacity(n);
+    for (i, link) in arm.links.iter().enumerate() {
+        let cs = joint_trig(p, i);
+        let a = rotate_back(p, cs, end);
+        p.set_name(a.0, format!("ax{}", i + 1));
+        p.set_name(a.1, format!("ay{}", i + 1));
+        if terms.rates {
+            let qd = p.input(Input::Qd(i));
+            w = p.add(w, qd);
+            p.set_name(w, format!("w{}", i + 1));
         }
-        p.set_name(dj, format!("d{}", j + 1));
-        let one = p.constant(Rational::from_integer(1.into()));
-        let inv = p.div(one, dj);
-        p.set_name(inv, format!("inv_d{}", j + 1));
-        d[j] = Some(dj);
-        inv_d[j] = Some(inv);
-        for i in j + 1..n {
-            // L_ij = (M_ij - sum_k L_ik L_jk d_k) / d_j
-            let mut s = m[i][j];
-            for k in 0..j {
-                let (lik, ljk, dk) = (
-                    l[i][k].unwrap_or(s),
-                    l[j][k].unwrap_or(s),
-                    d[k].unwrap_or(s),
-                );
-                let w = p.mul(lik, ljk);
-                let w = p.mul(w, dk);
-                s = p.sub(s, w);
+        if terms.accelerations {
+            let qdd = p.input(Input::Qdd(i));
+            al = p.add(al, qdd);
+            p.set_name(al, format!("al{}", i + 1));
+        }
+        let w2 = p.mul(w, w);
+        // The force on the link's centre of mass, m (a + com (-w^2, al)).
+        let m = k(p, link.mass.clone());
+        let mc = k(p, &link.mass * &link.com);
+        let fx = {
+            let (u, v) = (p.mul(m, a.0), p.mul(mc, w2));
+            p.sub(u, v)
+        };
+        let fy = {
+            let (u, v) = (p.mul(m, a.1), p.mul(mc, al));
+            p.add(u, v)
+        };
+        // The far end of the link: a + l (-w^2, al).
+        let l = k(p, link.length.clone());
+        end = {
+            let (u, v) = (p.mul(l, w2), p.mul(l, al));
+            (p.sub(a.0, u), p.add(a.1, v))
+        };
+        p.set_name(end.0, format!("ex{}", i + 1));
+        p.set_name(end.1, format!("ey{}", i + 1));
+        trig.push(cs);
+        force.push((fx, fy));
+        alpha.push(al);
+        accel.push(a.1);
+    }
+    let mut tau = vec![zero; n];
+    let mut tail: Option<V2> = None;
+    let mut moment = zero;
+    for i in (0..n).rev() {
+        let link = &arm.links[i];
+        // Moment about the joint of the link's own inertia forces:
+        // (I + m com^2) al + m com ay (the centripetal force passes through the joint).
+        let inertia = k(p, &link.inertia + &link.mass * &link.com * &link.com);
+        let mc = k(p, &link.mass * &link.com);
+        let (u, v) = (p.mul(inertia, alpha[i]), p.mul(mc, accel[i]));
+        let mut here = p.add(u, v);
+        let mut f = force[i];
+        if let Some(child) = tail {
+            // The force the tail exerts at the far end of the link, in this link's frame.
+            let r = rotate(p, trig[i + 1], child);
+            let l = k(p, link.length.clone());
+            let lever = p.mul(l, r.1);
+            here = p.add(here, lever);
+            f = (p.add(f.0, r.0), p.add(f.1, r.1));
+        }
+        p.set_name(f.0, format!("fx{}", i + 1));
+        p.set_name(f.1, format!("fy{}", i + 1));
+        moment = p.add(moment, here);
+        tau[i] = moment;
+        tail = Some(f);
+    }
+    tau
+}
+
+/// The mass matrix by the composite-rigid-body algorithm, unrolled for the arm, in link frames:
+/// for each tail of the chain (links `j..`), its mass, first moment `h` about joint `j` and
+/// rotational inertia about joint `j` (`M_jj`); `M_ij = M_(i+1)j + l_i (h in link i's frame).x`.
+fn composite_mass_matrix(p: &mut Program, arm: &ArmSpec) -> Vec<Vec<Id>> {
+    let n = arm.links.len();
+    let zero = p.constant(Rational::zero());
+    let trig: Vec<V2> = (0..n).map(|j| joint_trig(p, j)).collect();
+    let mut m = vec![vec![zero; n]; n];
+    let mut tail_mass = Rational::zero();
+    let mut tail: Option<(V2, Id)> = None;
+    for j in (0..n).rev() {
+        let link = &arm.links[j];
+        let own = &link.mass * &link.com;
+        let hx = p.constant(&own + &tail_mass * &link.length);
+        let rot =
+            p.constant(&link.inertia + &own * &link.com + &tail_mass * &link.length * &link.length);
+        let (h, rot) = match tail {
+            None => ((hx, zero), rot),
+            Some((child, child_rot)) => {
+                let r = rotate(p, trig[j + 1], child);
+                let two_l = p.constant(&link.length * Rational::from_integer(2.into()));
+                let shift = p.mul(two_l, r.0);
+                let rot = p.add(rot, child_rot);
+                ((p.add(hx, r.0), r.1), p.add(rot, shift))
             }
-            let lij = p.mul(s, inv);
-            p.set_name(lij, format!("l{}", two(i, j)));
-            l[i][j] = Some(lij);
+        };
+        p.set_name(h.0, format!("hx{}", j + 1));
+        p.set_name(h.1, format!("hy{}", j + 1));
+        tail_mass += &link.mass;
+        m[j][j] = rot;
+        let (mut v, mut mij) = (h, rot);
+        for i in (0..j).rev() {
+            v = rotate(p, trig[i + 1], v);
+            let l = p.constant(arm.links[i].length.clone());
+            let step = p.mul(l, v.0);
+            mij = p.add(mij, step);
+            m[i][j] = mij;
+            m[j][i] = mij;
         }
+        tail = Some((h, rot));
+    }
+    m
+}
+
+/// The mass matrix from the expanded entries (upper triangle; the lower is the same nodes).
+fn expanded_mass_matrix(p: &mut Program, d: &Dynamics) -> Vec<Vec<Id>> {
+    let n = d.n;
+    (0..n)
+        .map(|i| {
+            (0..n)
+                .map(|j| p.expr(&d.mass_matrix[i.min(j)][i.max(j)]))
+                .collect()
+        })
+        .collect()
+}
+
+/// Row-major outputs `m11, m12, ...` of a symmetric matrix (repeated nodes below the diagonal).
+fn matrix_outputs(m: &[Vec<Id>]) -> Vec<(String, Id)> {
+    let mut outputs = Vec::new();
+    for (i, row) in m.iter().enumerate() {
+        for (j, &id) in row.iter().enumerate() {
+            outputs.push((format!("m{}", two(i.min(j), i.max(j))), id));
+        }
+    }
+    outputs
+}
+
+/// Solves `M x = b` with `M = L D L^T` unrolled (Crout's order, one multiplication per
+/// inner-product term): `s_ij = M_ij - sum_k L_ik s_jk` is `L_ij d_j`, so `L_ij = s_ij / d_j`
+/// and `d_i = M_ii - sum_k L_ik s_ik`; then `L y = b`, `z = y / d`, `L^T x = z`.
+/// The floor under pivot `d_i` of `L D L^T`: 2^-52 times a bound on `|M_ii|` over all
+/// configurations (the sum of its coefficients' magnitudes), the level of the rounding noise in
+/// the computed pivot. `M` is positive definite, so its exact pivots are positive; a computed
+/// one at or below the floor only means `M` is too ill-conditioned for `f64` there, and the
+/// floor keeps the accelerations finite instead of infinite or NaN.
+fn pivot_floor(m_ii: &Expr) -> Rational {
+    let bound = m_ii
+        .terms()
+        .fold(Rational::zero(), |acc, (_, _, c)| acc + c.abs());
+    bound / Rational::from_integer(num_bigint::BigInt::from(1u64 << 52))
+}
+
+fn ldlt_solve(p: &mut Program, m: &[Vec<Id>], b: &[Id], floors: &[Rational]) -> Vec<Id> {
+    let n = m.len();
+    let zero = p.constant(Rational::zero());
+    let one = p.constant(Rational::from_integer(1.into()));
+    // s[i][j] = L_ij d_j and l[i][j] = L_ij for j < i.
+    let mut s = vec![vec![zero; n]; n];
+    let mut l = vec![vec![zero; n]; n];
+    let mut inv_d = vec![zero; n];
+    for i in 0..n {
+        for j in 0..i {
+            let mut sij = m[i][j];
+            for k in 0..j {
+                let w = p.mul(l[i][k], s[j][k]);
+                sij = p.sub(sij, w);
+            }
+            s[i][j] = sij;
+            let lij = p.mul(sij, inv_d[j]);
+            p.set_name(lij, format!("l{}", two(i, j)));
+            l[i][j] = lij;
+        }
+        let mut di = m[i][i];
+        for k in 0..i {
+            let w = p.mul(l[i][k], s[i][k]);
+            di = p.sub(di, w);
+        }
+        let floor = p.constant(floors[i].clone());
+        let di = p.max(di, floor);
+        p.set_name(di, format!("d{}", i + 1));
+        let inv = p.div(one, di);
+        p.set_name(inv, format!("inv_d{}", i + 1));
+        inv_d[i] = inv;
     }
     // L y = b
     let mut y = Vec::with_capacity(n);
     for i in 0..n {
         let mut yi = b[i];
         for (k, &yk) in y.iter().enumerate() {
-            let w = p.mul(l[i][k].unwrap_or(yk), yk);
+            let w = p.mul(l[i][k], yk);
             yi = p.sub(yi, w);
         }
         y.push(yi);
     }
     // D z = y, L^T x = z
-    let mut x = vec![None::<Id>; n];
+    let mut x = vec![zero; n];
     for i in (0..n).rev() {
-        let mut xi = p.mul(y[i], inv_d[i].unwrap_or(y[i]));
+        let mut xi = p.mul(y[i], inv_d[i]);
         for k in i + 1..n {
-            let xk = x[k].unwrap_or(xi);
-            let w = p.mul(l[k][i].unwrap_or(xk), xk);
+            let w = p.mul(l[k][i], x[k]);
             xi = p.sub(xi, w);
         }
-        x[i] = Some(xi);
+        x[i] = xi;
     }
-    x.into_iter().map(|v| v.unwrap_or(b[0])).collect()
+    x
 }
 
 /// `f64` tokens of an exact constant: `2.0`, `(10.0 / 3.0)`, or the nearest `f64` when the
@@ -452,7 +849,10 @@ pub struct Rendered {
 /// A local identifier that neither captures nor is captured by the user's names.
 #[must_use]
 pub fn local(name: &str) -> Ident {
-    Ident::new(name, Span::mixed_site())
+    if name == "_" {
+        return Ident::new(name, Span::mixed_site());
+    }
+    Ident::new(&format!("__{name}"), Span::mixed_site())
 }
 
 /// The local name of an input.
@@ -590,6 +990,11 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
                 let b = paren(get(*b, &exprs), Prec::Atom);
                 (Prec::Product, quote!(#a / #b))
             }
+            Node::Max(a, b) => {
+                let a = paren(get(*a, &exprs), Prec::Atom);
+                let (_, b) = get(*b, &exprs);
+                (Prec::Atom, quote!(#a.max(#b)))
+            }
             Node::Neg(a) => {
                 let a = paren(get(*a, &exprs), Prec::Atom);
                 (Prec::Sum, quote!(-#a))
@@ -696,4 +1101,125 @@ pub fn check_representable(d: &Derived) -> Result<(), EmitError> {
         check(&format!("g{}", i + 1), e)?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mechanics::LinkSpec;
+    use crate::ring::ratio;
+
+    /// An arm with uneven parameters (an offset centre of mass, a counterweight).
+    fn arm(n: usize) -> ArmSpec {
+        let k = |i: usize| i64::try_from(i).unwrap_or(0);
+        ArmSpec {
+            links: (0..n)
+                .map(|i| LinkSpec {
+                    length: ratio(k(i) + 3, 4),
+                    mass: ratio(2 * k(i) + 1, 3),
+                    inertia: ratio(1, k(i) + 5),
+                    com: ratio(k(i % 3) - 1, 2),
+                })
+                .collect(),
+            gravity: ratio(981, 100),
+        }
+    }
+
+    fn eval(m: &Method, n: usize) -> Vec<f64> {
+        #[allow(clippy::cast_precision_loss)]
+        let at = |j: usize, k: f64| (j as f64 + 1.0).mul_add(0.37, k).sin() * 2.0;
+        m.eval(&|i| match i {
+            Input::Q(j) => at(j, 0.1),
+            Input::Qd(j) => at(j, 1.3),
+            Input::Qdd(j) => at(j, 2.9),
+            Input::Tau(j) => at(j + n, 4.1) * 10.0,
+            Input::Force(_) | Input::TipTorque => 0.0,
+        })
+    }
+
+    #[track_caller]
+    fn same(a: &[f64], b: &[f64], what: &str) {
+        let scale = a.iter().chain(b).fold(1.0_f64, |m, x| m.max(x.abs()));
+        for (x, y) in a.iter().zip(b) {
+            assert!((x - y).abs() <= 1e-11 * scale, "{what}: {a:?} vs {b:?}");
+        }
+    }
+
+    #[test]
+    fn every_candidate_agrees() {
+        for n in 1..=7 {
+            let d = Derived::new(&arm(n));
+            let tau = eval(&d.inverse_dynamics_lagrange_method(), n);
+            same(
+                &tau,
+                &eval(&d.inverse_dynamics_newton_euler_method(), n),
+                "tau",
+            );
+            let m = eval(&d.mass_matrix_expanded_method(), n);
+            same(&m, &eval(&d.mass_matrix_composite_method(), n), "M");
+            same(
+                &eval(&d.vector_method("c", &d.dynamics.coriolis), n),
+                &eval(&d.newton_euler_method("c", Terms::CORIOLIS), n),
+                "c",
+            );
+            same(
+                &eval(&d.vector_method("g", &d.dynamics.gravity), n),
+                &eval(&d.newton_euler_method("g", Terms::GRAVITY), n),
+                "g",
+            );
+            let fd = eval(&d.forward_dynamics_with(false, false, false), n);
+            for k in 1..8 {
+                let with = d.forward_dynamics_with(k & 1 == 1, k & 2 == 2, k & 4 == 4);
+                same(&fd, &eval(&with, n), "qdd");
+            }
+        }
+    }
+
+    #[test]
+    #[ignore = "prints a table"]
+    fn print_op_counts() {
+        for n in 1..=8 {
+            let d = Derived::new(&arm(n));
+            let show =
+                |m: Method| format!("{} depth {} cost {}", m.op_count(), m.depth(), cost(&m));
+            println!("N = {n}");
+            println!(
+                "  tau lagrange     {}",
+                show(d.inverse_dynamics_lagrange_method())
+            );
+            println!(
+                "  tau newton-euler {}",
+                show(d.inverse_dynamics_newton_euler_method())
+            );
+            println!(
+                "  M expanded       {}",
+                show(d.mass_matrix_expanded_method())
+            );
+            println!(
+                "  M composite      {}",
+                show(d.mass_matrix_composite_method())
+            );
+            println!(
+                "  c expanded       {}",
+                show(d.vector_method("c", &d.dynamics.coriolis))
+            );
+            println!(
+                "  c newton-euler   {}",
+                show(d.newton_euler_method("c", Terms::CORIOLIS))
+            );
+            println!(
+                "  g expanded       {}",
+                show(d.vector_method("g", &d.dynamics.gravity))
+            );
+            println!(
+                "  g recursion      {}",
+                show(d.newton_euler_method("g", Terms::GRAVITY))
+            );
+            for k in 0..8 {
+                let (a, b, c) = (k & 1 == 1, k & 2 == 2, k & 4 == 4);
+                let fd = d.forward_dynamics_with(a, b, c);
+                println!("  fd M-crba={a} c-rnea={b} g-rec={c} {}", show(fd));
+            }
+        }
+    }
 }

@@ -68,7 +68,7 @@ fn emit_fn(n: usize, f: Fn<'_>) -> Result<TokenStream, EmitError> {
                 let pname = if used.iter().any(|&u| u) {
                     local(name)
                 } else {
-                    local(&format!("_{name}"))
+                    local("_")
                 };
                 params.push(quote!(#pname: &::planar_arm::nalgebra::SVector<f64, #nn>));
                 if used.iter().any(|&u| u) {
@@ -87,11 +87,7 @@ fn emit_fn(n: usize, f: Fn<'_>) -> Result<TokenStream, EmitError> {
             Param::Force => {
                 let u = rendered.inputs_used.contains(&Input::Force(0));
                 let v = rendered.inputs_used.contains(&Input::Force(1));
-                let pname = if u || v {
-                    local("force")
-                } else {
-                    local("_force")
-                };
+                let pname = if u || v { local("force") } else { local("_") };
                 params.push(quote!(#pname: &::planar_arm::nalgebra::Vector2<f64>));
                 if u || v {
                     let (u, v) = (local("u"), local("v"));
@@ -102,7 +98,7 @@ fn emit_fn(n: usize, f: Fn<'_>) -> Result<TokenStream, EmitError> {
                 let pname = if rendered.inputs_used.contains(&Input::TipTorque) {
                     local("torque")
                 } else {
-                    local("_torque")
+                    local("_")
                 };
                 params.push(quote!(#pname: f64));
             }
@@ -113,7 +109,12 @@ fn emit_fn(n: usize, f: Fn<'_>) -> Result<TokenStream, EmitError> {
     let statements = &rendered.statements;
     let result = (f.finish)(&rendered.outputs);
     let ret = &f.ret;
-    let doc = format!("{}\n\nCost: {}.", f.doc, f.method.op_count());
+    let evaluation = if f.method.evaluation.is_empty() {
+        String::new()
+    } else {
+        format!("{}\n\n", f.method.evaluation)
+    };
+    let doc = format!("{}\n\n{evaluation}Cost: {}.", f.doc, f.method.op_count());
     Ok(quote! {
         #[doc = #doc]
         #[inline]
@@ -579,7 +580,6 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
     let body = quote!({ ::core::unreachable!() });
     quote! {
         #[automatically_derived]
-        #[allow(unused_variables)]
         impl #impl_generics ::planar_arm::PlanarArm<#nn> for #ty #where_clause {
             const LINKS: [::planar_arm::Link; #nn] = [::planar_arm::Link { length: 1.0, mass: 1.0, inertia: 1.0, com: 0.0 }; #nn];
             const GRAVITY: f64 = 0.0;
@@ -590,19 +590,19 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
                 coriolis: [&[]; #nn],
                 gravity: [&[]; #nn],
             };
-            fn mass_matrix(&self, q: #v) -> #m #body
-            fn coriolis(&self, q: #v, qd: #v) -> #sv #body
-            fn coriolis_matrix(&self, q: #v, qd: #v) -> #m #body
-            fn gravity(&self, q: #v) -> #sv #body
-            fn inverse_dynamics(&self, q: #v, qd: #v, qdd: #v) -> #sv #body
-            fn forward_dynamics(&self, q: #v, qd: #v, tau: #v) -> #sv #body
-            fn kinetic_energy(&self, q: #v, qd: #v) -> f64 #body
-            fn potential_energy(&self, q: #v) -> f64 #body
-            fn tip_pose(&self, q: #v) -> ::planar_arm::nalgebra::Isometry2<f64> #body
-            fn jacobian(&self, q: #v) -> ::planar_arm::nalgebra::SMatrix<f64, 3, #nn> #body
-            fn joint_positions(&self, q: #v) -> [::planar_arm::nalgebra::Point2<f64>; #nn] #body
-            fn tip_polar(&self, q: #v) -> (f64, f64) #body
-            fn joint_torques(&self, q: #v, force: &::planar_arm::nalgebra::Vector2<f64>, torque: f64) -> #sv #body
+            fn mass_matrix(&self, _: #v) -> #m #body
+            fn coriolis(&self, _: #v, _: #v) -> #sv #body
+            fn coriolis_matrix(&self, _: #v, _: #v) -> #m #body
+            fn gravity(&self, _: #v) -> #sv #body
+            fn inverse_dynamics(&self, _: #v, _: #v, _: #v) -> #sv #body
+            fn forward_dynamics(&self, _: #v, _: #v, _: #v) -> #sv #body
+            fn kinetic_energy(&self, _: #v, _: #v) -> f64 #body
+            fn potential_energy(&self, _: #v) -> f64 #body
+            fn tip_pose(&self, _: #v) -> ::planar_arm::nalgebra::Isometry2<f64> #body
+            fn jacobian(&self, _: #v) -> ::planar_arm::nalgebra::SMatrix<f64, 3, #nn> #body
+            fn joint_positions(&self, _: #v) -> [::planar_arm::nalgebra::Point2<f64>; #nn] #body
+            fn tip_polar(&self, _: #v) -> (f64, f64) #body
+            fn joint_torques(&self, _: #v, _: &::planar_arm::nalgebra::Vector2<f64>, _: f64) -> #sv #body
         }
     }
 }

@@ -13,6 +13,10 @@ use crate::expr::{Expr, Monomial, Var};
 use crate::ring::Rational;
 use crate::trig::{Angle, Trig};
 
+/// The latency of a division in units of an addition's or multiplication's (about 13-15
+/// cycles against 4 on current x86-64 cores).
+pub const DIV_LATENCY: usize = 3;
+
 /// A node index.
 #[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Debug)]
 pub struct Id(pub u32);
@@ -55,6 +59,8 @@ pub enum Node {
     Div(Id, Id),
     /// Negation.
     Neg(Id),
+    /// The larger of two values, `a.max(b)`: keeps a pivot above its rounding noise.
+    Max(Id, Id),
 }
 
 /// Operation counts of a program (or of the part that reaches given outputs).
@@ -219,6 +225,11 @@ impl Program {
         self.intern(Node::Div(a, b))
     }
 
+    /// `a.max(b)`.
+    pub fn max(&mut self, a: Id, b: Id) -> Id {
+        self.intern(Node::Max(a, b))
+    }
+
     /// `-a`, folded.
     pub fn neg(&mut self, a: Id) -> Id {
         if let Some(x) = self.constant_value(a).cloned() {
@@ -291,29 +302,39 @@ impl Program {
         acc
     }
 
-    /// `sum_k (sign_k x_k)`, starting from a positive term so the output reads as a difference.
+    /// `sum_k (sign_k x_k)`: the positive terms summed as a balanced tree, minus the negative
+    /// ones summed likewise, so that the chain of dependent additions grows like `log2` of the
+    /// number of terms, not linearly (a long sum is latency-bound otherwise).
     pub fn signed_sum(&mut self, terms: &[(bool, Id)]) -> Id {
-        let start = terms.iter().position(|(neg, _)| !neg);
-        let mut acc = match start {
-            Some(i) => terms[i].1,
-            None => {
-                return {
-                    let zero = self.constant(Rational::zero());
-                    terms.iter().fold(zero, |acc, &(_, x)| self.sub(acc, x))
+        let positive: Vec<Id> = terms.iter().filter(|t| !t.0).map(|t| t.1).collect();
+        let negative: Vec<Id> = terms.iter().filter(|t| t.0).map(|t| t.1).collect();
+        match (self.balanced_sum(&positive), self.balanced_sum(&negative)) {
+            (Some(p), Some(n)) => self.sub(p, n),
+            (Some(p), None) => p,
+            // All negative: `-a - (b + c + ...)` reads better than `-(a + b + c + ...)`.
+            (None, Some(_)) => {
+                let first = self.neg(negative[0]);
+                match self.balanced_sum(&negative[1..]) {
+                    Some(rest) => self.sub(first, rest),
+                    None => first,
                 }
             }
-        };
-        for (i, &(neg, x)) in terms.iter().enumerate() {
-            if Some(i) == start {
-                continue;
-            }
-            acc = if neg {
-                self.sub(acc, x)
-            } else {
-                self.add(acc, x)
-            };
+            (None, None) => self.constant(Rational::zero()),
         }
-        acc
+    }
+
+    /// `x_0 + x_1 + ...` as a balanced tree of additions (halves, in order), or `None` if empty.
+    pub fn balanced_sum(&mut self, terms: &[Id]) -> Option<Id> {
+        match terms {
+            [] => None,
+            [x] => Some(*x),
+            _ => {
+                let (left, right) = terms.split_at(terms.len().div_ceil(2));
+                let l = self.balanced_sum(left)?;
+                let r = self.balanced_sum(right)?;
+                Some(self.add(l, r))
+            }
+        }
     }
 
     /// The value of an exact expression: `sum over monomials m of m x (sum c_t atom_t)`,
@@ -361,6 +382,7 @@ impl Program {
                 Node::Mul(a, b) => v[a.0 as usize] * v[b.0 as usize],
                 Node::Div(a, b) => v[a.0 as usize] / v[b.0 as usize],
                 Node::Neg(a) => -v[a.0 as usize],
+                Node::Max(a, b) => v[a.0 as usize].max(v[b.0 as usize]),
             };
             v.push(x);
         }
@@ -390,6 +412,34 @@ impl Program {
         uses
     }
 
+    /// The length of the longest chain of dependent operations from the inputs and the
+    /// `sin_cos` results to an output (a division counts as [`DIV_LATENCY`] operations): the
+    /// latency-bound part of the run time, where [`op_count`](Self::op_count) is the
+    /// throughput-bound part.
+    #[must_use]
+    pub fn depth(&self, outputs: &[Id]) -> usize {
+        let mut depth = vec![0usize; self.nodes.len()];
+        for (i, node) in self.nodes.iter().enumerate() {
+            let below = children(node)
+                .iter()
+                .map(|c| depth[c.0 as usize])
+                .max()
+                .unwrap_or(0);
+            depth[i] = match node {
+                Node::Div(..) => below + DIV_LATENCY,
+                Node::Add(..) | Node::Sub(..) | Node::Mul(..) | Node::Neg(..) | Node::Max(..) => {
+                    below + 1
+                }
+                Node::Input(_) | Node::Const(_) | Node::Sin(_) | Node::Cos(_) => 0,
+            };
+        }
+        outputs
+            .iter()
+            .map(|o| depth[o.0 as usize])
+            .max()
+            .unwrap_or(0)
+    }
+
     /// Operation counts of the part of the program the outputs need.
     #[must_use]
     pub fn op_count(&self, outputs: &[Id]) -> OpCount {
@@ -402,7 +452,7 @@ impl Program {
             }
             match node {
                 Node::Mul(..) => count.mul += 1,
-                Node::Add(..) | Node::Sub(..) | Node::Neg(..) => count.add += 1,
+                Node::Add(..) | Node::Sub(..) | Node::Neg(..) | Node::Max(..) => count.add += 1,
                 Node::Div(..) => count.div += 1,
                 Node::Sin(j) | Node::Cos(j) => {
                     joints.insert(*j);
@@ -419,7 +469,9 @@ impl Program {
 #[must_use]
 pub fn children(node: &Node) -> Vec<Id> {
     match *node {
-        Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => vec![a, b],
+        Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) | Node::Max(a, b) => {
+            vec![a, b]
+        }
         Node::Neg(a) => vec![a],
         Node::Input(_) | Node::Const(_) | Node::Sin(_) | Node::Cos(_) => vec![],
     }

@@ -133,15 +133,15 @@ Cost: 1 multiplications, 2 additions, 0 divisions, 1 sin_cos calls.*/
     #[inline]
     fn mass_matrix(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
     ) -> ::planar_arm::nalgebra::SMatrix<f64, 2, 2> {
         let _ = (&self.upper, &self.fore);
-        let [_, q2] = ::planar_arm::__private::unpack(q);
-        let (_, c2) = q2.sin_cos();
-        let m11 = (5.0 / 3.0) + c2;
-        let m12 = (1.0 / 3.0) + (1.0 / 2.0) * c2;
-        let m22 = (1.0 / 3.0);
-        ::planar_arm::__private::matrix([[m11, m12], [m12, m22]])
+        let [_, __q2] = ::planar_arm::__private::unpack(__q);
+        let (_, __c2) = __q2.sin_cos();
+        let __m11 = (5.0 / 3.0) + __c2;
+        let __m12 = (1.0 / 3.0) + (1.0 / 2.0) * __c2;
+        let __m22 = (1.0 / 3.0);
+        ::planar_arm::__private::matrix([[__m11, __m12], [__m12, __m22]])
     }
     /**The velocity-product torques c(q, qd).
 
@@ -155,16 +155,16 @@ Cost: 7 multiplications, 2 additions, 0 divisions, 1 sin_cos calls.*/
     #[inline]
     fn coriolis(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 2>,
-        qd: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<f64, 2>,
     ) -> ::planar_arm::nalgebra::SVector<f64, 2> {
-        let [_, q2] = ::planar_arm::__private::unpack(q);
-        let [qd1, qd2] = ::planar_arm::__private::unpack(qd);
-        let (s2, _) = q2.sin_cos();
-        let t1 = (1.0 / 2.0) * s2;
-        let cor1 = -(s2 * qd1 * qd2) - t1 * qd2 * qd2;
-        let cor2 = t1 * qd1 * qd1;
-        ::planar_arm::__private::vector([cor1, cor2])
+        let [_, __q2] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
+        let (__s2, _) = __q2.sin_cos();
+        let __t1 = (1.0 / 2.0) * __s2;
+        let __cor1 = -(__s2 * __qd1 * __qd2) - __t1 * __qd2 * __qd2;
+        let __cor2 = __t1 * __qd1 * __qd1;
+        ::planar_arm::__private::vector([__cor1, __cor2])
     }
     /**The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.
 
@@ -180,19 +180,19 @@ Cost: 3 multiplications, 3 additions, 0 divisions, 1 sin_cos calls.*/
     #[inline]
     fn coriolis_matrix(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 2>,
-        qd: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<f64, 2>,
     ) -> ::planar_arm::nalgebra::SMatrix<f64, 2, 2> {
-        let [_, q2] = ::planar_arm::__private::unpack(q);
-        let [qd1, qd2] = ::planar_arm::__private::unpack(qd);
-        let (s2, _) = q2.sin_cos();
-        let t1 = (1.0 / 2.0) * s2;
-        let t2 = t1 * qd2;
-        let cm11 = -t2;
-        let cm21 = t1 * qd1;
-        let cm12 = -cm21 - t2;
-        let cm22 = 0.0;
-        ::planar_arm::__private::matrix([[cm11, cm12], [cm21, cm22]])
+        let [_, __q2] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
+        let (__s2, _) = __q2.sin_cos();
+        let __t1 = (1.0 / 2.0) * __s2;
+        let __t2 = __t1 * __qd2;
+        let __cm11 = -__t2;
+        let __cm21 = __t1 * __qd1;
+        let __cm12 = -__cm21 - __t2;
+        let __cm22 = 0.0;
+        ::planar_arm::__private::matrix([[__cm11, __cm12], [__cm21, __cm22]])
     }
     /**The gravity torques g(q) = dV/dq.
 
@@ -206,15 +206,15 @@ Cost: 4 multiplications, 2 additions, 0 divisions, 2 sin_cos calls.*/
     #[inline]
     fn gravity(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
     ) -> ::planar_arm::nalgebra::SVector<f64, 2> {
-        let [q1, q2] = ::planar_arm::__private::unpack(q);
-        let (s1, c1) = q1.sin_cos();
-        let (s2, c2) = q2.sin_cos();
-        let c12 = c1 * c2 - s1 * s2;
-        let g2 = (981.0 / 200.0) * c12;
-        let g1 = (2943.0 / 200.0) * c1 + g2;
-        ::planar_arm::__private::vector([g1, g2])
+        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
+        let (__s1, __c1) = __q1.sin_cos();
+        let (__s2, __c2) = __q2.sin_cos();
+        let __c12 = __c1 * __c2 - __s1 * __s2;
+        let __g2 = (981.0 / 200.0) * __c12;
+        let __g1 = (2943.0 / 200.0) * __c1 + __g2;
+        ::planar_arm::__private::vector([__g1, __g2])
     }
     /**Lagrange's equation, tau_i = d/dt dL/dqd_i - dL/dq_i, expanded.
 
@@ -228,50 +228,51 @@ Cost: 16 multiplications, 11 additions, 0 divisions, 2 sin_cos calls.*/
     #[inline]
     fn inverse_dynamics(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 2>,
-        qd: &::planar_arm::nalgebra::SVector<f64, 2>,
-        qdd: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __qdd: &::planar_arm::nalgebra::SVector<f64, 2>,
     ) -> ::planar_arm::nalgebra::SVector<f64, 2> {
-        let [q1, q2] = ::planar_arm::__private::unpack(q);
-        let [qd1, qd2] = ::planar_arm::__private::unpack(qd);
-        let [qdd1, qdd2] = ::planar_arm::__private::unpack(qdd);
-        let (s1, c1) = q1.sin_cos();
-        let (s2, c2) = q2.sin_cos();
-        let c12 = c1 * c2 - s1 * s2;
-        let t1 = (981.0 / 200.0) * c12;
-        let t2 = (1.0 / 3.0) + (1.0 / 2.0) * c2;
-        let t3 = (1.0 / 2.0) * s2;
-        let tau1 = t2 * qdd2 + (2943.0 / 200.0) * c1 + t1 + (c2 + (5.0 / 3.0)) * qdd1
-            - s2 * qd1 * qd2 - t3 * qd2 * qd2;
-        let tau2 = t3 * qd1 * qd1 + (1.0 / 3.0) * qdd2 + t1 + qdd1 * t2;
-        ::planar_arm::__private::vector([tau1, tau2])
+        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
+        let [__qdd1, __qdd2] = ::planar_arm::__private::unpack(__qdd);
+        let (__s1, __c1) = __q1.sin_cos();
+        let (__s2, __c2) = __q2.sin_cos();
+        let __c12 = __c1 * __c2 - __s1 * __s2;
+        let __t1 = (981.0 / 200.0) * __c12;
+        let __t2 = (1.0 / 3.0) + (1.0 / 2.0) * __c2;
+        let __t3 = (1.0 / 2.0) * __s2;
+        let __tau1 = __t2 * __qdd2 + (2943.0 / 200.0) * __c1 + __t1
+            + (__c2 + (5.0 / 3.0)) * __qdd1
+            - (__s2 * __qd1 * __qd2 + __t3 * __qd2 * __qd2);
+        let __tau2 = __t1 + __qdd1 * __t2 + (1.0 / 3.0) * __qdd2 + __t3 * __qd1 * __qd1;
+        ::planar_arm::__private::vector([__tau1, __tau2])
     }
     /**qdd = M^-1 (tau - c - g) in closed form (Cramer's rule, det = M11 M22 - M12^2 > 0).
 
-Cost: 18 multiplications, 12 additions, 2 divisions, 2 sin_cos calls.*/
+Cost: 18 multiplications, 13 additions, 2 divisions, 2 sin_cos calls.*/
     #[inline]
     fn forward_dynamics(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 2>,
-        qd: &::planar_arm::nalgebra::SVector<f64, 2>,
-        tau: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __tau: &::planar_arm::nalgebra::SVector<f64, 2>,
     ) -> ::planar_arm::nalgebra::SVector<f64, 2> {
-        let [q1, q2] = ::planar_arm::__private::unpack(q);
-        let [qd1, qd2] = ::planar_arm::__private::unpack(qd);
-        let [tau1, tau2] = ::planar_arm::__private::unpack(tau);
-        let (s1, c1) = q1.sin_cos();
-        let (s2, c2) = q2.sin_cos();
-        let t1 = (5.0 / 3.0) + c2;
-        let t2 = (1.0 / 3.0) + (1.0 / 2.0) * c2;
-        let c12 = c2 * c1 - s2 * s1;
-        let t3 = (981.0 / 200.0) * c12;
-        let t4 = (1.0 / 2.0) * s2;
-        let rhs1 = tau1 - ((2943.0 / 200.0) * c1 + t3 - s2 * qd1 * qd2 - t4 * qd2 * qd2);
-        let rhs2 = tau2 - (t3 + t4 * qd1 * qd1);
-        let det = (1.0 / 3.0) * t1 - t2 * t2;
-        let qdd1 = ((1.0 / 3.0) * rhs1 - t2 * rhs2) / det;
-        let qdd2 = (t1 * rhs2 - t2 * rhs1) / det;
-        ::planar_arm::__private::vector([qdd1, qdd2])
+        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
+        let [__tau1, __tau2] = ::planar_arm::__private::unpack(__tau);
+        let (__s1, __c1) = __q1.sin_cos();
+        let (__s2, __c2) = __q2.sin_cos();
+        let __t1 = (1.0 / 3.0) + (1.0 / 2.0) * __c2;
+        let __t2 = (1.0 / 2.0) * __s2;
+        let __c12 = __c2 * __c1 - __s2 * __s1;
+        let __t3 = (981.0 / 200.0) * __c12;
+        let __rhs1 = __tau1 - (-(__s2 * __qd1 * __qd2) - __t2 * __qd2 * __qd2)
+            - ((2943.0 / 200.0) * __c1 + __t3);
+        let __rhs2 = __tau2 - __t2 * __qd1 * __qd1 - __t3;
+        let __det = (7.0 / 36.0) + (1.0 / 4.0) * __s2 * __s2;
+        let __qdd1 = ((1.0 / 3.0) * __rhs1 - __t1 * __rhs2) / __det;
+        let __qdd2 = (((5.0 / 3.0) + __c2) * __rhs2 - __t1 * __rhs1) / __det;
+        ::planar_arm::__private::vector([__qdd1, __qdd2])
     }
     /**The kinetic energy.
 
@@ -284,16 +285,17 @@ Cost: 7 multiplications, 4 additions, 0 divisions, 1 sin_cos calls.*/
     #[inline]
     fn kinetic_energy(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 2>,
-        qd: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<f64, 2>,
     ) -> f64 {
-        let [_, q2] = ::planar_arm::__private::unpack(q);
-        let [qd1, qd2] = ::planar_arm::__private::unpack(qd);
-        let (_, c2) = q2.sin_cos();
-        let t1 = (1.0 / 2.0) * c2;
-        let kinetic = (1.0 / 6.0) * qd2 * qd2 + ((5.0 / 6.0) + t1) * qd1 * qd1
-            + (t1 + (1.0 / 3.0)) * qd1 * qd2;
-        kinetic
+        let [_, __q2] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
+        let (_, __c2) = __q2.sin_cos();
+        let __t1 = (1.0 / 2.0) * __c2;
+        let __kinetic = (1.0 / 6.0) * __qd2 * __qd2
+            + ((5.0 / 6.0) + __t1) * __qd1 * __qd1
+            + (__t1 + (1.0 / 3.0)) * __qd1 * __qd2;
+        __kinetic
     }
     /**The potential energy (zero at y = 0).
 
@@ -304,13 +306,13 @@ V = 2943/200 s1 + 981/200 s12
 
 Cost: 4 multiplications, 2 additions, 0 divisions, 2 sin_cos calls.*/
     #[inline]
-    fn potential_energy(&self, q: &::planar_arm::nalgebra::SVector<f64, 2>) -> f64 {
-        let [q1, q2] = ::planar_arm::__private::unpack(q);
-        let (s1, c1) = q1.sin_cos();
-        let (s2, c2) = q2.sin_cos();
-        let s12 = s1 * c2 + c1 * s2;
-        let potential = (2943.0 / 200.0) * s1 + (981.0 / 200.0) * s12;
-        potential
+    fn potential_energy(&self, __q: &::planar_arm::nalgebra::SVector<f64, 2>) -> f64 {
+        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
+        let (__s1, __c1) = __q1.sin_cos();
+        let (__s2, __c2) = __q2.sin_cos();
+        let __s12 = __s1 * __c2 + __c1 * __s2;
+        let __potential = (2943.0 / 200.0) * __s1 + (981.0 / 200.0) * __s12;
+        __potential
     }
     /**The tip pose; the orientation is the last link's angle q1 + q2.
 
@@ -324,16 +326,16 @@ Cost: 4 multiplications, 4 additions, 0 divisions, 2 sin_cos calls.*/
     #[inline]
     fn tip_pose(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
     ) -> ::planar_arm::nalgebra::Isometry2<f64> {
-        let [q1, q2] = ::planar_arm::__private::unpack(q);
-        let (s1, c1) = q1.sin_cos();
-        let (s2, c2) = q2.sin_cos();
-        let cos_phi = c1 * c2 - s1 * s2;
-        let sin_phi = s1 * c2 + c1 * s2;
-        let x = c1 + cos_phi;
-        let y = s1 + sin_phi;
-        ::planar_arm::__private::pose(x, y, cos_phi, sin_phi)
+        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
+        let (__s1, __c1) = __q1.sin_cos();
+        let (__s2, __c2) = __q2.sin_cos();
+        let __cos_phi = __c1 * __c2 - __s1 * __s2;
+        let __sin_phi = __s1 * __c2 + __c1 * __s2;
+        let __x = __c1 + __cos_phi;
+        let __y = __s1 + __sin_phi;
+        ::planar_arm::__private::pose(__x, __y, __cos_phi, __sin_phi)
     }
     /**The Jacobian d(x, y, phi)/dq.
 
@@ -351,18 +353,18 @@ Cost: 4 multiplications, 6 additions, 0 divisions, 2 sin_cos calls.*/
     #[inline]
     fn jacobian(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
     ) -> ::planar_arm::nalgebra::SMatrix<f64, 3, 2> {
-        let [q1, q2] = ::planar_arm::__private::unpack(q);
-        let (s1, c1) = q1.sin_cos();
-        let (s2, c2) = q2.sin_cos();
-        let j22 = c1 * c2 - s1 * s2;
-        let s12 = s1 * c2 + c1 * s2;
-        let j11 = -s1 - s12;
-        let j12 = -s12;
-        let j21 = c1 + j22;
-        let j31 = 1.0;
-        ::planar_arm::__private::matrix([[j11, j12], [j21, j22], [j31, j31]])
+        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
+        let (__s1, __c1) = __q1.sin_cos();
+        let (__s2, __c2) = __q2.sin_cos();
+        let __j22 = __c1 * __c2 - __s1 * __s2;
+        let __s12 = __s1 * __c2 + __c1 * __s2;
+        let __j11 = -__s1 - __s12;
+        let __j12 = -__s12;
+        let __j21 = __c1 + __j22;
+        let __j31 = 1.0;
+        ::planar_arm::__private::matrix([[__j11, __j12], [__j21, __j22], [__j31, __j31]])
     }
     /**The position of each joint, joint 1 at the origin.
 
@@ -370,14 +372,14 @@ Cost: 0 multiplications, 0 additions, 0 divisions, 1 sin_cos calls.*/
     #[inline]
     fn joint_positions(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
     ) -> [::planar_arm::nalgebra::Point2<f64>; 2] {
-        let [q1, _] = ::planar_arm::__private::unpack(q);
-        let (s1, c1) = q1.sin_cos();
-        let x1 = 0.0;
+        let [__q1, _] = ::planar_arm::__private::unpack(__q);
+        let (__s1, __c1) = __q1.sin_cos();
+        let __x1 = 0.0;
         [
-            ::planar_arm::nalgebra::Point2::new(x1, x1),
-            ::planar_arm::nalgebra::Point2::new(c1, s1),
+            ::planar_arm::nalgebra::Point2::new(__x1, __x1),
+            ::planar_arm::nalgebra::Point2::new(__c1, __s1),
         ]
     }
     /**The tip in polar form: r from r^2 (which does not depend on q1), theta = atan2(y, x).
@@ -389,16 +391,16 @@ r^2 = 2 + 2 c2
 
 Cost: 5 multiplications, 5 additions, 0 divisions, 2 sin_cos calls.*/
     #[inline]
-    fn tip_polar(&self, q: &::planar_arm::nalgebra::SVector<f64, 2>) -> (f64, f64) {
-        let [q1, q2] = ::planar_arm::__private::unpack(q);
-        let (s1, c1) = q1.sin_cos();
-        let (s2, c2) = q2.sin_cos();
-        let r2 = 2.0 + 2.0 * c2;
-        let c12 = c2 * c1 - s2 * s1;
-        let s12 = c2 * s1 + s2 * c1;
-        let x = c1 + c12;
-        let y = s1 + s12;
-        ::planar_arm::__private::polar(r2, x, y)
+    fn tip_polar(&self, __q: &::planar_arm::nalgebra::SVector<f64, 2>) -> (f64, f64) {
+        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
+        let (__s1, __c1) = __q1.sin_cos();
+        let (__s2, __c2) = __q2.sin_cos();
+        let __r2 = 2.0 + 2.0 * __c2;
+        let __c12 = __c2 * __c1 - __s2 * __s1;
+        let __s12 = __c2 * __s1 + __s2 * __c1;
+        let __x = __c1 + __c12;
+        let __y = __s1 + __s12;
+        ::planar_arm::__private::polar(__r2, __x, __y)
     }
     /**Statics: tau = J^T (u, v, torque), the motor torques that make the tip exert force (u, v) and torque `torque`.
 
@@ -406,19 +408,19 @@ Cost: 8 multiplications, 10 additions, 0 divisions, 2 sin_cos calls.*/
     #[inline]
     fn joint_torques(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 2>,
-        force: &::planar_arm::nalgebra::Vector2<f64>,
-        torque: f64,
+        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __force: &::planar_arm::nalgebra::Vector2<f64>,
+        __torque: f64,
     ) -> ::planar_arm::nalgebra::SVector<f64, 2> {
-        let [q1, q2] = ::planar_arm::__private::unpack(q);
-        let [u, v] = ::planar_arm::__private::unpack(force);
-        let (s1, c1) = q1.sin_cos();
-        let (s2, c2) = q2.sin_cos();
-        let c12 = c1 * c2 - s1 * s2;
-        let s12 = s1 * c2 + c1 * s2;
-        let tau1 = torque + u * (-s1 - s12) + v * (c1 + c12);
-        let tau2 = torque + u * (-s12) + v * c12;
-        ::planar_arm::__private::vector([tau1, tau2])
+        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
+        let [__u, __v] = ::planar_arm::__private::unpack(__force);
+        let (__s1, __c1) = __q1.sin_cos();
+        let (__s2, __c2) = __q2.sin_cos();
+        let __c12 = __c1 * __c2 - __s1 * __s2;
+        let __s12 = __s1 * __c2 + __c1 * __s2;
+        let __tau1 = __torque + __u * (-__s1 - __s12) + __v * (__c1 + __c12);
+        let __tau2 = __torque + __u * (-__s12) + __v * __c12;
+        ::planar_arm::__private::vector([__tau1, __tau2])
     }
 }
 #[automatically_derived]
@@ -428,12 +430,12 @@ impl ::planar_arm::kinematics::ClosedFormIk<2> for Paper2 {
     #[inline]
     fn inverse_kinematics(
         &self,
-        target: &::planar_arm::nalgebra::Point2<f64>,
+        __target: &::planar_arm::nalgebra::Point2<f64>,
     ) -> ::core::result::Result<
         [::planar_arm::nalgebra::SVector<f64, 2>; 2],
         ::planar_arm::ArmError,
     > {
-        ::planar_arm::kinematics::ik2_equal(1.0, target)
+        ::planar_arm::kinematics::ik2_equal(1.0, __target)
     }
 }
 #[automatically_derived]
@@ -441,12 +443,12 @@ impl ::planar_arm::kinematics::TipForce for Paper2 {
     #[inline]
     fn tip_force(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 2>,
-        tau: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __tau: &::planar_arm::nalgebra::SVector<f64, 2>,
     ) -> ::core::result::Result<
         ::planar_arm::nalgebra::Vector2<f64>,
         ::planar_arm::ArmError,
     > {
-        ::planar_arm::kinematics::tip_force2(1.0, 1.0, q, tau)
+        ::planar_arm::kinematics::tip_force2(1.0, 1.0, __q, __tau)
     }
 }

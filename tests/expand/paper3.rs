@@ -414,25 +414,25 @@ Cost: 6 multiplications, 11 additions, 0 divisions, 2 sin_cos calls.*/
     #[inline]
     fn mass_matrix(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
     ) -> ::planar_arm::nalgebra::SMatrix<f64, 3, 3> {
         let _ = (&self.upper, &self.fore, &self.hand);
-        let [_, q2, q3] = ::planar_arm::__private::unpack(q);
-        let (s2, c2) = q2.sin_cos();
-        let (s3, c3) = q3.sin_cos();
-        let c23 = c2 * c3 - s2 * s3;
-        let m11 = c3 + c23 + 4.0 + 3.0 * c2;
-        let t1 = (1.0 / 2.0) * c23;
-        let m12 = c3 + t1 + (5.0 / 3.0) + (3.0 / 2.0) * c2;
-        let t2 = (1.0 / 2.0) * c3;
-        let m13 = t2 + t1 + (1.0 / 3.0);
-        let m22 = c3 + (5.0 / 3.0);
-        let m23 = (1.0 / 3.0) + t2;
-        let m33 = (1.0 / 3.0);
+        let [_, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let (__s2, __c2) = __q2.sin_cos();
+        let (__s3, __c3) = __q3.sin_cos();
+        let __c23 = __c2 * __c3 - __s2 * __s3;
+        let __m11 = 4.0 + 3.0 * __c2 + __c3 + __c23;
+        let __t1 = (1.0 / 2.0) * __c23;
+        let __m12 = (5.0 / 3.0) + (3.0 / 2.0) * __c2 + __c3 + __t1;
+        let __t2 = (1.0 / 2.0) * __c3;
+        let __m13 = __t2 + __t1 + (1.0 / 3.0);
+        let __m22 = __c3 + (5.0 / 3.0);
+        let __m23 = (1.0 / 3.0) + __t2;
+        let __m33 = (1.0 / 3.0);
         ::planar_arm::__private::matrix([
-            [m11, m12, m13],
-            [m12, m22, m23],
-            [m13, m23, m33],
+            [__m11, __m12, __m13],
+            [__m12, __m22, __m23],
+            [__m13, __m23, __m33],
         ])
     }
     /**The velocity-product torques c(q, qd).
@@ -444,33 +444,38 @@ c3 = (1/2 s23 + 1/2 s3) qd1^2 + s3 qd1 qd2 + 1/2 s3 qd2^2
 ```
 
 
-Cost: 24 multiplications, 20 additions, 0 divisions, 2 sin_cos calls.*/
+Evaluated not term by term but by the planar recursive Newton-Euler algorithm unrolled for this arm (the same function, fewer operations): link-frame velocities and accelerations outwards, forces and moments inwards, one rotation by each joint's (cos, sin) per pass, the link constants folded in.
+
+Cost: 19 multiplications, 17 additions, 0 divisions, 2 sin_cos calls.*/
     #[inline]
     fn coriolis(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 3>,
-        qd: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<f64, 3>,
     ) -> ::planar_arm::nalgebra::SVector<f64, 3> {
-        let [_, q2, q3] = ::planar_arm::__private::unpack(q);
-        let [qd1, qd2, qd3] = ::planar_arm::__private::unpack(qd);
-        let (s2, c2) = q2.sin_cos();
-        let (s3, c3) = q3.sin_cos();
-        let s23 = s2 * c3 + c2 * s3;
-        let t1 = qd1 * qd2;
-        let t2 = -s23 - s3;
-        let t3 = qd1 * qd3;
-        let t4 = (3.0 / 2.0) * s2;
-        let t5 = (1.0 / 2.0) * s23;
-        let t6 = qd2 * qd2;
-        let t7 = qd2 * qd3;
-        let t8 = (1.0 / 2.0) * s3;
-        let t9 = qd3 * qd3;
-        let cor1 = (-t5 - t8) * t9 + t2 * t7 + (-t4 - t5) * t6 + (-(3.0 * s2) - s23) * t1
-            + t2 * t3;
-        let t10 = qd1 * qd1;
-        let cor2 = (t4 + t5) * t10 - s3 * t3 - s3 * t7 - t8 * t9;
-        let cor3 = t6 * t8 + t10 * (t5 + t8) + s3 * t1;
-        ::planar_arm::__private::vector([cor1, cor2, cor3])
+        let [_, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
+        let (__s2, __c2) = __q2.sin_cos();
+        let (__s3, __c3) = __q3.sin_cos();
+        let __ex1 = -(__qd1 * __qd1);
+        let __ax2 = __ex1 * __c2;
+        let __t1 = __ex1 * __s2;
+        let __ay2 = -__t1;
+        let __w2 = __qd1 + __qd2;
+        let __t2 = __w2 * __w2;
+        let __ex2 = __ax2 - __t2;
+        let __ax3 = __ex2 * __c3 + __ay2 * __s3;
+        let __ay3 = __ay2 * __c3 - __ex2 * __s3;
+        let __w3 = __w2 + __qd3;
+        let __fx3 = __ax3 - (1.0 / 2.0) * __w3 * __w3;
+        let __cor3 = (1.0 / 2.0) * __ay3;
+        let __t3 = __s3 * __fx3 + __c3 * __ay3;
+        let __fx2 = __ax2 - (1.0 / 2.0) * __t2 + __c3 * __fx3 - __s3 * __ay3;
+        let __fy2 = __t3 - __t1;
+        let __cor2 = __cor3 + (1.0 / 2.0) * __ay2 + __t3;
+        let __fy1 = __s2 * __fx2 + __c2 * __fy2;
+        let __cor1 = __cor2 + __fy1;
+        ::planar_arm::__private::vector([__cor1, __cor2, __cor3])
     }
     /**The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.
 
@@ -491,37 +496,37 @@ Cost: 15 multiplications, 19 additions, 0 divisions, 2 sin_cos calls.*/
     #[inline]
     fn coriolis_matrix(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 3>,
-        qd: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<f64, 3>,
     ) -> ::planar_arm::nalgebra::SMatrix<f64, 3, 3> {
-        let [_, q2, q3] = ::planar_arm::__private::unpack(q);
-        let [qd1, qd2, qd3] = ::planar_arm::__private::unpack(qd);
-        let (s2, c2) = q2.sin_cos();
-        let (s3, c3) = q3.sin_cos();
-        let t1 = (3.0 / 2.0) * s2;
-        let s23 = s2 * c3 + c2 * s3;
-        let t2 = (1.0 / 2.0) * s23;
-        let t3 = -t1 - t2;
-        let t4 = t3 * qd2;
-        let t5 = (1.0 / 2.0) * s3;
-        let t6 = -t2 - t5;
-        let t7 = t6 * qd3;
-        let cm11 = t4 + t7;
-        let cm12 = t7 + t4 + t3 * qd1;
-        let cm13 = t7 + t6 * qd1 + qd2 * t6;
-        let t8 = t5 * qd3;
-        let cm21 = qd1 * (t1 + t2) - t8;
-        let cm22 = -t8;
-        let t9 = t5 * qd1;
-        let t10 = qd2 * t5;
-        let cm23 = -t9 - t10 - t8;
-        let cm31 = t10 + qd1 * (t2 + t5);
-        let cm32 = t9 + t10;
-        let cm33 = 0.0;
+        let [_, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
+        let (__s2, __c2) = __q2.sin_cos();
+        let (__s3, __c3) = __q3.sin_cos();
+        let __t1 = (3.0 / 2.0) * __s2;
+        let __s23 = __s2 * __c3 + __c2 * __s3;
+        let __t2 = (1.0 / 2.0) * __s23;
+        let __t3 = -__t1 - __t2;
+        let __t4 = __t3 * __qd2;
+        let __t5 = (1.0 / 2.0) * __s3;
+        let __t6 = -__t2 - __t5;
+        let __t7 = __t6 * __qd3;
+        let __cm11 = __t4 + __t7;
+        let __cm12 = __t7 + __t4 + __t3 * __qd1;
+        let __cm13 = __t7 + __t6 * __qd1 + __qd2 * __t6;
+        let __t8 = __t5 * __qd3;
+        let __cm21 = (__t1 + __t2) * __qd1 - __t8;
+        let __cm22 = -__t8;
+        let __t9 = __t5 * __qd1;
+        let __t10 = __qd2 * __t5;
+        let __cm32 = __t9 + __t10;
+        let __cm23 = -__t9 - (__t8 + __t10);
+        let __cm31 = __t10 + (__t2 + __t5) * __qd1;
+        let __cm33 = 0.0;
         ::planar_arm::__private::matrix([
-            [cm11, cm12, cm13],
-            [cm21, cm22, cm23],
-            [cm31, cm32, cm33],
+            [__cm11, __cm12, __cm13],
+            [__cm21, __cm22, __cm23],
+            [__cm31, __cm32, __cm33],
         ])
     }
     /**The gravity torques g(q) = dV/dq.
@@ -537,20 +542,20 @@ Cost: 9 multiplications, 6 additions, 0 divisions, 3 sin_cos calls.*/
     #[inline]
     fn gravity(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
     ) -> ::planar_arm::nalgebra::SVector<f64, 3> {
-        let [q1, q2, q3] = ::planar_arm::__private::unpack(q);
-        let (s1, c1) = q1.sin_cos();
-        let (s2, c2) = q2.sin_cos();
-        let (s3, c3) = q3.sin_cos();
-        let c12 = c1 * c2 - s1 * s2;
-        let s12 = s1 * c2 + c1 * s2;
-        let t1 = (2943.0 / 200.0) * c12;
-        let c123 = c12 * c3 - s12 * s3;
-        let g3 = (981.0 / 200.0) * c123;
-        let g1 = g3 + (981.0 / 40.0) * c1 + t1;
-        let g2 = t1 + g3;
-        ::planar_arm::__private::vector([g1, g2, g3])
+        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let (__s1, __c1) = __q1.sin_cos();
+        let (__s2, __c2) = __q2.sin_cos();
+        let (__s3, __c3) = __q3.sin_cos();
+        let __c12 = __c1 * __c2 - __s1 * __s2;
+        let __s12 = __s1 * __c2 + __c1 * __s2;
+        let __t1 = (2943.0 / 200.0) * __c12;
+        let __c123 = __c12 * __c3 - __s12 * __s3;
+        let __g3 = (981.0 / 200.0) * __c123;
+        let __g1 = __g3 + (981.0 / 40.0) * __c1 + __t1;
+        let __g2 = __t1 + __g3;
+        ::planar_arm::__private::vector([__g1, __g2, __g3])
     }
     /**Lagrange's equation, tau_i = d/dt dL/dqd_i - dL/dq_i, expanded.
 
@@ -561,105 +566,112 @@ tau3 = 981/200 c123 + (1/3 + 1/2 c23 + 1/2 c3) qdd1 + (1/3 + 1/2 c3) qdd2 + 1/3 
 ```
 
 
-Cost: 48 multiplications, 49 additions, 0 divisions, 3 sin_cos calls.*/
+Evaluated not term by term but by the planar recursive Newton-Euler algorithm unrolled for this arm (the same function, fewer operations): link-frame velocities and accelerations outwards, forces and moments inwards, one rotation by each joint's (cos, sin) per pass, the link constants folded in.
+
+Cost: 29 multiplications, 28 additions, 0 divisions, 3 sin_cos calls.*/
     #[inline]
     fn inverse_dynamics(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 3>,
-        qd: &::planar_arm::nalgebra::SVector<f64, 3>,
-        qdd: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __qdd: &::planar_arm::nalgebra::SVector<f64, 3>,
     ) -> ::planar_arm::nalgebra::SVector<f64, 3> {
-        let [q1, q2, q3] = ::planar_arm::__private::unpack(q);
-        let [qd1, qd2, qd3] = ::planar_arm::__private::unpack(qd);
-        let [qdd1, qdd2, qdd3] = ::planar_arm::__private::unpack(qdd);
-        let (s1, c1) = q1.sin_cos();
-        let (s2, c2) = q2.sin_cos();
-        let (s3, c3) = q3.sin_cos();
-        let c12 = c1 * c2 - s1 * s2;
-        let s12 = s1 * c2 + c1 * s2;
-        let t1 = (2943.0 / 200.0) * c12;
-        let c123 = c12 * c3 - s12 * s3;
-        let t2 = (981.0 / 200.0) * c123;
-        let c23 = c2 * c3 - s2 * s3;
-        let s23 = s2 * c3 + c2 * s3;
-        let t3 = (1.0 / 2.0) * c23;
-        let t4 = c3 + t3 + (5.0 / 3.0) + (3.0 / 2.0) * c2;
-        let t5 = (1.0 / 2.0) * c3;
-        let t6 = t5 + t3 + (1.0 / 3.0);
-        let t7 = qd1 * qd2;
-        let t8 = -s23 - s3;
-        let t9 = qd1 * qd3;
-        let t10 = (3.0 / 2.0) * s2;
-        let t11 = (1.0 / 2.0) * s23;
-        let t12 = qd2 * qd2;
-        let t13 = qd2 * qd3;
-        let t14 = (1.0 / 2.0) * s3;
-        let t15 = qd3 * qd3;
-        let tau1 = (-t11 - t14) * t15 + t8 * t13 + (-t10 - t11) * t12 + t8 * t9
-            + (-(3.0 * s2) - s23) * t7 + t6 * qdd3 + t4 * qdd2 + t2 + (981.0 / 40.0) * c1
-            + t1 + (c3 + c23 + 4.0 + 3.0 * c2) * qdd1;
-        let t16 = (1.0 / 3.0) + t5;
-        let t17 = qd1 * qd1;
-        let tau2 = (t10 + t11) * t17 + qdd3 * t16 + qdd2 * (c3 + (5.0 / 3.0)) + t1 + t2
-            + qdd1 * t4 - s3 * t9 - s3 * t13 - t14 * t15;
-        let tau3 = t12 * t14 + s3 * t7 + t17 * (t11 + t14) + (1.0 / 3.0) * qdd3
-            + qdd2 * t16 + t2 + qdd1 * t6;
-        ::planar_arm::__private::vector([tau1, tau2, tau3])
+        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
+        let [__qdd1, __qdd2, __qdd3] = ::planar_arm::__private::unpack(__qdd);
+        let (__s1, __c1) = __q1.sin_cos();
+        let (__s2, __c2) = __q2.sin_cos();
+        let (__s3, __c3) = __q3.sin_cos();
+        let __ax1 = (981.0 / 100.0) * __s1;
+        let __ay1 = (981.0 / 100.0) * __c1;
+        let __ex1 = __ax1 - __qd1 * __qd1;
+        let __ey1 = __ay1 + __qdd1;
+        let __ax2 = __ex1 * __c2 + __ey1 * __s2;
+        let __ay2 = __ey1 * __c2 - __ex1 * __s2;
+        let __w2 = __qd1 + __qd2;
+        let __al2 = __qdd1 + __qdd2;
+        let __t1 = __w2 * __w2;
+        let __ex2 = __ax2 - __t1;
+        let __ey2 = __ay2 + __al2;
+        let __ax3 = __ex2 * __c3 + __ey2 * __s3;
+        let __ay3 = __ey2 * __c3 - __ex2 * __s3;
+        let __w3 = __w2 + __qd3;
+        let __al3 = __al2 + __qdd3;
+        let __fx3 = __ax3 - (1.0 / 2.0) * __w3 * __w3;
+        let __fy3 = __ay3 + (1.0 / 2.0) * __al3;
+        let __tau3 = (1.0 / 3.0) * __al3 + (1.0 / 2.0) * __ay3;
+        let __t2 = __s3 * __fx3 + __c3 * __fy3;
+        let __fx2 = __ax2 - (1.0 / 2.0) * __t1 + __c3 * __fx3 - __s3 * __fy3;
+        let __fy2 = __ay2 + (1.0 / 2.0) * __al2 + __t2;
+        let __tau2 = __tau3 + (1.0 / 3.0) * __al2 + (1.0 / 2.0) * __ay2 + __t2;
+        let __tau1 = __tau2 + (1.0 / 3.0) * __qdd1 + (1.0 / 2.0) * __ay1 + __s2 * __fx2
+            + __c2 * __fy2;
+        ::planar_arm::__private::vector([__tau1, __tau2, __tau3])
     }
     /**qdd = M^-1 (tau - c - g) by an unrolled L D L^T factorisation of M (no square roots, no allocation).
 
-Cost: 59 multiplications, 53 additions, 3 divisions, 3 sin_cos calls.*/
+M, c and g evaluated as `mass_matrix`, `coriolis` and `gravity` evaluate them: M from the formulas, c by the recursive Newton-Euler algorithm unrolled for this arm, g from the formulas.
+
+Cost: 50 multiplications, 53 additions, 3 divisions, 3 sin_cos calls.*/
     #[inline]
     fn forward_dynamics(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 3>,
-        qd: &::planar_arm::nalgebra::SVector<f64, 3>,
-        tau: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __tau: &::planar_arm::nalgebra::SVector<f64, 3>,
     ) -> ::planar_arm::nalgebra::SVector<f64, 3> {
-        let [q1, q2, q3] = ::planar_arm::__private::unpack(q);
-        let [qd1, qd2, qd3] = ::planar_arm::__private::unpack(qd);
-        let [tau1, tau2, tau3] = ::planar_arm::__private::unpack(tau);
-        let (s1, c1) = q1.sin_cos();
-        let (s2, c2) = q2.sin_cos();
-        let (s3, c3) = q3.sin_cos();
-        let c23 = c2 * c3 - s2 * s3;
-        let s23 = s2 * c3 + c2 * s3;
-        let d1 = c3 + c23 + 4.0 + 3.0 * c2;
-        let t1 = (1.0 / 2.0) * c23;
-        let t2 = (1.0 / 2.0) * c3;
-        let c12 = c2 * c1 - s2 * s1;
-        let s12 = c2 * s1 + s2 * c1;
-        let t3 = (2943.0 / 200.0) * c12;
-        let c123 = c3 * c12 - s3 * s12;
-        let t4 = (981.0 / 200.0) * c123;
-        let t5 = qd1 * qd2;
-        let t6 = -s23 - s3;
-        let t7 = qd1 * qd3;
-        let t8 = (3.0 / 2.0) * s2;
-        let t9 = (1.0 / 2.0) * s23;
-        let t10 = qd2 * qd2;
-        let t11 = qd2 * qd3;
-        let t12 = (1.0 / 2.0) * s3;
-        let t13 = qd3 * qd3;
-        let rhs1 = tau1
-            - ((-t9 - t12) * t13 + t6 * t11 + (-t8 - t9) * t10 + t6 * t7 + t4
-                + (981.0 / 40.0) * c1 + t3 + (-(3.0 * s2) - s23) * t5);
-        let t14 = qd1 * qd1;
-        let rhs2 = tau2 - (t3 + t4 + (t8 + t9) * t14 - s3 * t7 - s3 * t11 - t12 * t13);
-        let rhs3 = tau3 - (t10 * t12 + s3 * t5 + t4 + t14 * (t9 + t12));
-        let inv_d1 = 1.0 / d1;
-        let l21 = (c3 + t1 + (5.0 / 3.0) + (3.0 / 2.0) * c2) * inv_d1;
-        let l31 = (t2 + t1 + (1.0 / 3.0)) * inv_d1;
-        let d2 = c3 + (5.0 / 3.0) - d1 * l21 * l21;
-        let inv_d2 = 1.0 / d2;
-        let l32 = inv_d2 * ((1.0 / 3.0) + t2 - d1 * l21 * l31);
-        let d3 = (1.0 / 3.0) - d1 * l31 * l31 - d2 * l32 * l32;
-        let inv_d3 = 1.0 / d3;
-        let t15 = rhs2 - rhs1 * l21;
-        let qdd3 = inv_d3 * (rhs3 - rhs1 * l31 - l32 * t15);
-        let qdd2 = inv_d2 * t15 - l32 * qdd3;
-        let qdd1 = rhs1 * inv_d1 - l21 * qdd2 - l31 * qdd3;
-        ::planar_arm::__private::vector([qdd1, qdd2, qdd3])
+        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
+        let [__tau1, __tau2, __tau3] = ::planar_arm::__private::unpack(__tau);
+        let (__s1, __c1) = __q1.sin_cos();
+        let (__s2, __c2) = __q2.sin_cos();
+        let (__s3, __c3) = __q3.sin_cos();
+        let __c23 = __c2 * __c3 - __s2 * __s3;
+        let __t1 = (1.0 / 2.0) * __c23;
+        let __t2 = (5.0 / 3.0) + (3.0 / 2.0) * __c2 + __c3 + __t1;
+        let __t3 = (1.0 / 2.0) * __c3;
+        let __t4 = __t3 + __t1 + (1.0 / 3.0);
+        let __ex1 = -(__qd1 * __qd1);
+        let __ax2 = __c2 * __ex1;
+        let __t5 = __s2 * __ex1;
+        let __ay2 = -__t5;
+        let __w2 = __qd1 + __qd2;
+        let __t6 = __w2 * __w2;
+        let __ex2 = __ax2 - __t6;
+        let __ax3 = __c3 * __ex2 + __s3 * __ay2;
+        let __ay3 = __c3 * __ay2 - __s3 * __ex2;
+        let __w3 = __w2 + __qd3;
+        let __fx3 = __ax3 - (1.0 / 2.0) * __w3 * __w3;
+        let __t7 = (1.0 / 2.0) * __ay3;
+        let __t8 = __s3 * __fx3 + __c3 * __ay3;
+        let __fx2 = __ax2 - (1.0 / 2.0) * __t6 + __c3 * __fx3 - __s3 * __ay3;
+        let __fy2 = __t8 - __t5;
+        let __t9 = __t7 + (1.0 / 2.0) * __ay2 + __t8;
+        let __fy1 = __s2 * __fx2 + __c2 * __fy2;
+        let __c12 = __c2 * __c1 - __s2 * __s1;
+        let __s12 = __c2 * __s1 + __s2 * __c1;
+        let __t10 = (2943.0 / 200.0) * __c12;
+        let __c123 = __c3 * __c12 - __s3 * __s12;
+        let __t11 = (981.0 / 200.0) * __c123;
+        let __rhs1 = __tau1 - (__t9 + __fy1) - (__t11 + (981.0 / 40.0) * __c1 + __t10);
+        let __rhs2 = __tau2 - __t9 - (__t10 + __t11);
+        let __rhs3 = __tau3 - __t7 - __t11;
+        let __d1 = (4.0 + 3.0 * __c2 + __c3 + __c23).max((9.0 / 4503599627370496.0));
+        let __inv_d1 = 1.0 / __d1;
+        let __l21 = __t2 * __inv_d1;
+        let __d2 = (__c3 + (5.0 / 3.0) - __t2 * __l21).max((1.0 / 1688849860263936.0));
+        let __inv_d2 = 1.0 / __d2;
+        let __l31 = __t4 * __inv_d1;
+        let __t12 = (1.0 / 3.0) + __t3 - __t2 * __l31;
+        let __l32 = __inv_d2 * __t12;
+        let __d3 = ((1.0 / 3.0) - __t4 * __l31 - __t12 * __l32)
+            .max(0.00000000000000007401486830834377);
+        let __inv_d3 = 1.0 / __d3;
+        let __t13 = __rhs2 - __rhs1 * __l21;
+        let __qdd3 = __inv_d3 * (__rhs3 - __rhs1 * __l31 - __l32 * __t13);
+        let __qdd2 = __inv_d2 * __t13 - __l32 * __qdd3;
+        let __qdd1 = __rhs1 * __inv_d1 - __l21 * __qdd2 - __l31 * __qdd3;
+        ::planar_arm::__private::vector([__qdd1, __qdd2, __qdd3])
     }
     /**The kinetic energy.
 
@@ -672,22 +684,23 @@ Cost: 17 multiplications, 16 additions, 0 divisions, 2 sin_cos calls.*/
     #[inline]
     fn kinetic_energy(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 3>,
-        qd: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<f64, 3>,
     ) -> f64 {
-        let [_, q2, q3] = ::planar_arm::__private::unpack(q);
-        let [qd1, qd2, qd3] = ::planar_arm::__private::unpack(qd);
-        let (s2, c2) = q2.sin_cos();
-        let (s3, c3) = q3.sin_cos();
-        let t1 = (3.0 / 2.0) * c2;
-        let c23 = c2 * c3 - s2 * s3;
-        let t2 = (1.0 / 2.0) * c23;
-        let t3 = (1.0 / 2.0) * c3;
-        let kinetic = (1.0 / 6.0) * qd3 * qd3 + (t3 + (1.0 / 3.0)) * qd2 * qd3
-            + (t3 + (5.0 / 6.0)) * qd2 * qd2 + (t3 + t2 + (1.0 / 3.0)) * qd1 * qd3
-            + (t3 + t2 + 2.0 + t1) * qd1 * qd1
-            + (c3 + t2 + t1 + (5.0 / 3.0)) * qd1 * qd2;
-        kinetic
+        let [_, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
+        let (__s2, __c2) = __q2.sin_cos();
+        let (__s3, __c3) = __q3.sin_cos();
+        let __t1 = (3.0 / 2.0) * __c2;
+        let __c23 = __c2 * __c3 - __s2 * __s3;
+        let __t2 = (1.0 / 2.0) * __c23;
+        let __t3 = (1.0 / 2.0) * __c3;
+        let __kinetic = (__t3 + __t2 + (1.0 / 3.0)) * __qd1 * __qd3
+            + (2.0 + __t1 + __t2 + __t3) * __qd1 * __qd1
+            + (__t1 + (5.0 / 3.0) + __c3 + __t2) * __qd1 * __qd2
+            + (1.0 / 6.0) * __qd3 * __qd3 + (__t3 + (5.0 / 6.0)) * __qd2 * __qd2
+            + (__t3 + (1.0 / 3.0)) * __qd2 * __qd3;
+        __kinetic
     }
     /**The potential energy (zero at y = 0).
 
@@ -698,17 +711,17 @@ V = 981/40 s1 + 2943/200 s12 + 981/200 s123
 
 Cost: 9 multiplications, 5 additions, 0 divisions, 3 sin_cos calls.*/
     #[inline]
-    fn potential_energy(&self, q: &::planar_arm::nalgebra::SVector<f64, 3>) -> f64 {
-        let [q1, q2, q3] = ::planar_arm::__private::unpack(q);
-        let (s1, c1) = q1.sin_cos();
-        let (s2, c2) = q2.sin_cos();
-        let (s3, c3) = q3.sin_cos();
-        let c12 = c1 * c2 - s1 * s2;
-        let s12 = s1 * c2 + c1 * s2;
-        let s123 = s12 * c3 + c12 * s3;
-        let potential = (981.0 / 200.0) * s123 + (981.0 / 40.0) * s1
-            + (2943.0 / 200.0) * s12;
-        potential
+    fn potential_energy(&self, __q: &::planar_arm::nalgebra::SVector<f64, 3>) -> f64 {
+        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let (__s1, __c1) = __q1.sin_cos();
+        let (__s2, __c2) = __q2.sin_cos();
+        let (__s3, __c3) = __q3.sin_cos();
+        let __c12 = __c1 * __c2 - __s1 * __s2;
+        let __s12 = __s1 * __c2 + __c1 * __s2;
+        let __s123 = __s12 * __c3 + __c12 * __s3;
+        let __potential = (981.0 / 200.0) * __s123 + (981.0 / 40.0) * __s1
+            + (2943.0 / 200.0) * __s12;
+        __potential
     }
     /**The tip pose; the orientation is the last link's angle q1 + q2 + q3.
 
@@ -722,19 +735,19 @@ Cost: 8 multiplications, 8 additions, 0 divisions, 3 sin_cos calls.*/
     #[inline]
     fn tip_pose(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
     ) -> ::planar_arm::nalgebra::Isometry2<f64> {
-        let [q1, q2, q3] = ::planar_arm::__private::unpack(q);
-        let (s1, c1) = q1.sin_cos();
-        let (s2, c2) = q2.sin_cos();
-        let (s3, c3) = q3.sin_cos();
-        let c12 = c1 * c2 - s1 * s2;
-        let s12 = s1 * c2 + c1 * s2;
-        let cos_phi = c12 * c3 - s12 * s3;
-        let sin_phi = s12 * c3 + c12 * s3;
-        let x = cos_phi + c1 + c12;
-        let y = sin_phi + s1 + s12;
-        ::planar_arm::__private::pose(x, y, cos_phi, sin_phi)
+        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let (__s1, __c1) = __q1.sin_cos();
+        let (__s2, __c2) = __q2.sin_cos();
+        let (__s3, __c3) = __q3.sin_cos();
+        let __c12 = __c1 * __c2 - __s1 * __s2;
+        let __s12 = __s1 * __c2 + __c1 * __s2;
+        let __cos_phi = __c12 * __c3 - __s12 * __s3;
+        let __sin_phi = __s12 * __c3 + __c12 * __s3;
+        let __x = __cos_phi + __c1 + __c12;
+        let __y = __sin_phi + __s1 + __s12;
+        ::planar_arm::__private::pose(__x, __y, __cos_phi, __sin_phi)
     }
     /**The Jacobian d(x, y, phi)/dq.
 
@@ -755,26 +768,26 @@ Cost: 8 multiplications, 13 additions, 0 divisions, 3 sin_cos calls.*/
     #[inline]
     fn jacobian(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
     ) -> ::planar_arm::nalgebra::SMatrix<f64, 3, 3> {
-        let [q1, q2, q3] = ::planar_arm::__private::unpack(q);
-        let (s1, c1) = q1.sin_cos();
-        let (s2, c2) = q2.sin_cos();
-        let (s3, c3) = q3.sin_cos();
-        let c12 = c1 * c2 - s1 * s2;
-        let s12 = s1 * c2 + c1 * s2;
-        let j23 = c12 * c3 - s12 * s3;
-        let s123 = s12 * c3 + c12 * s3;
-        let j11 = -s1 - s12 - s123;
-        let j12 = -s12 - s123;
-        let j13 = -s123;
-        let j21 = j23 + c1 + c12;
-        let j22 = c12 + j23;
-        let j31 = 1.0;
+        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let (__s1, __c1) = __q1.sin_cos();
+        let (__s2, __c2) = __q2.sin_cos();
+        let (__s3, __c3) = __q3.sin_cos();
+        let __c12 = __c1 * __c2 - __s1 * __s2;
+        let __s12 = __s1 * __c2 + __c1 * __s2;
+        let __j23 = __c12 * __c3 - __s12 * __s3;
+        let __s123 = __s12 * __c3 + __c12 * __s3;
+        let __j11 = -__s1 - (__s12 + __s123);
+        let __j12 = -__s12 - __s123;
+        let __j13 = -__s123;
+        let __j21 = __j23 + __c1 + __c12;
+        let __j22 = __c12 + __j23;
+        let __j31 = 1.0;
         ::planar_arm::__private::matrix([
-            [j11, j12, j13],
-            [j21, j22, j23],
-            [j31, j31, j31],
+            [__j11, __j12, __j13],
+            [__j21, __j22, __j23],
+            [__j31, __j31, __j31],
         ])
     }
     /**The position of each joint, joint 1 at the origin.
@@ -783,20 +796,20 @@ Cost: 4 multiplications, 4 additions, 0 divisions, 2 sin_cos calls.*/
     #[inline]
     fn joint_positions(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
     ) -> [::planar_arm::nalgebra::Point2<f64>; 3] {
-        let [q1, q2, _] = ::planar_arm::__private::unpack(q);
-        let (s1, c1) = q1.sin_cos();
-        let (s2, c2) = q2.sin_cos();
-        let c12 = c1 * c2 - s1 * s2;
-        let s12 = s1 * c2 + c1 * s2;
-        let x3 = c1 + c12;
-        let y3 = s1 + s12;
-        let x1 = 0.0;
+        let [__q1, __q2, _] = ::planar_arm::__private::unpack(__q);
+        let (__s1, __c1) = __q1.sin_cos();
+        let (__s2, __c2) = __q2.sin_cos();
+        let __c12 = __c1 * __c2 - __s1 * __s2;
+        let __s12 = __s1 * __c2 + __c1 * __s2;
+        let __x3 = __c1 + __c12;
+        let __y3 = __s1 + __s12;
+        let __x1 = 0.0;
         [
-            ::planar_arm::nalgebra::Point2::new(x1, x1),
-            ::planar_arm::nalgebra::Point2::new(c1, s1),
-            ::planar_arm::nalgebra::Point2::new(x3, y3),
+            ::planar_arm::nalgebra::Point2::new(__x1, __x1),
+            ::planar_arm::nalgebra::Point2::new(__c1, __s1),
+            ::planar_arm::nalgebra::Point2::new(__x3, __y3),
         ]
     }
     /**The tip in polar form: r from r^2 (which does not depend on q1), theta = atan2(y, x).
@@ -808,20 +821,20 @@ r^2 = 3 + 2 c2 + 2 c23 + 2 c3
 
 Cost: 13 multiplications, 12 additions, 0 divisions, 3 sin_cos calls.*/
     #[inline]
-    fn tip_polar(&self, q: &::planar_arm::nalgebra::SVector<f64, 3>) -> (f64, f64) {
-        let [q1, q2, q3] = ::planar_arm::__private::unpack(q);
-        let (s1, c1) = q1.sin_cos();
-        let (s2, c2) = q2.sin_cos();
-        let (s3, c3) = q3.sin_cos();
-        let c23 = c2 * c3 - s2 * s3;
-        let r2 = 2.0 * c3 + 2.0 * c23 + 3.0 + 2.0 * c2;
-        let c12 = c2 * c1 - s2 * s1;
-        let s12 = c2 * s1 + s2 * c1;
-        let c123 = c3 * c12 - s3 * s12;
-        let s123 = c3 * s12 + s3 * c12;
-        let x = c123 + c1 + c12;
-        let y = s123 + s1 + s12;
-        ::planar_arm::__private::polar(r2, x, y)
+    fn tip_polar(&self, __q: &::planar_arm::nalgebra::SVector<f64, 3>) -> (f64, f64) {
+        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let (__s1, __c1) = __q1.sin_cos();
+        let (__s2, __c2) = __q2.sin_cos();
+        let (__s3, __c3) = __q3.sin_cos();
+        let __c23 = __c2 * __c3 - __s2 * __s3;
+        let __r2 = 3.0 + 2.0 * __c2 + 2.0 * __c23 + 2.0 * __c3;
+        let __c12 = __c2 * __c1 - __s2 * __s1;
+        let __s12 = __c2 * __s1 + __s2 * __c1;
+        let __c123 = __c3 * __c12 - __s3 * __s12;
+        let __s123 = __c3 * __s12 + __s3 * __c12;
+        let __x = __c123 + __c1 + __c12;
+        let __y = __s123 + __s1 + __s12;
+        ::planar_arm::__private::polar(__r2, __x, __y)
     }
     /**Statics: tau = J^T (u, v, torque), the motor torques that make the tip exert force (u, v) and torque `torque`.
 
@@ -829,23 +842,24 @@ Cost: 14 multiplications, 19 additions, 0 divisions, 3 sin_cos calls.*/
     #[inline]
     fn joint_torques(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 3>,
-        force: &::planar_arm::nalgebra::Vector2<f64>,
-        torque: f64,
+        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __force: &::planar_arm::nalgebra::Vector2<f64>,
+        __torque: f64,
     ) -> ::planar_arm::nalgebra::SVector<f64, 3> {
-        let [q1, q2, q3] = ::planar_arm::__private::unpack(q);
-        let [u, v] = ::planar_arm::__private::unpack(force);
-        let (s1, c1) = q1.sin_cos();
-        let (s2, c2) = q2.sin_cos();
-        let (s3, c3) = q3.sin_cos();
-        let c12 = c1 * c2 - s1 * s2;
-        let s12 = s1 * c2 + c1 * s2;
-        let c123 = c12 * c3 - s12 * s3;
-        let s123 = s12 * c3 + c12 * s3;
-        let tau1 = torque + u * (-s1 - s12 - s123) + v * (c123 + c1 + c12);
-        let tau2 = torque + u * (-s12 - s123) + v * (c12 + c123);
-        let tau3 = torque + u * (-s123) + v * c123;
-        ::planar_arm::__private::vector([tau1, tau2, tau3])
+        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let [__u, __v] = ::planar_arm::__private::unpack(__force);
+        let (__s1, __c1) = __q1.sin_cos();
+        let (__s2, __c2) = __q2.sin_cos();
+        let (__s3, __c3) = __q3.sin_cos();
+        let __c12 = __c1 * __c2 - __s1 * __s2;
+        let __s12 = __s1 * __c2 + __c1 * __s2;
+        let __c123 = __c12 * __c3 - __s12 * __s3;
+        let __s123 = __s12 * __c3 + __c12 * __s3;
+        let __tau1 = __torque + __u * (-__s1 - (__s12 + __s123))
+            + __v * (__c123 + __c1 + __c12);
+        let __tau2 = __torque + __u * (-__s12 - __s123) + __v * (__c12 + __c123);
+        let __tau3 = __torque + __u * (-__s123) + __v * __c123;
+        ::planar_arm::__private::vector([__tau1, __tau2, __tau3])
     }
 }
 #[automatically_derived]
@@ -856,12 +870,12 @@ impl ::planar_arm::kinematics::ClosedFormIk<3> for Paper3 {
     #[inline]
     fn inverse_kinematics(
         &self,
-        target: &::planar_arm::nalgebra::Isometry2<f64>,
+        __target: &::planar_arm::nalgebra::Isometry2<f64>,
     ) -> ::core::result::Result<
         [::planar_arm::nalgebra::SVector<f64, 3>; 2],
         ::planar_arm::ArmError,
     > {
-        ::planar_arm::kinematics::ik3(1.0, 1.0, 1.0, target)
+        ::planar_arm::kinematics::ik3(1.0, 1.0, 1.0, __target)
     }
 }
 #[automatically_derived]
@@ -869,12 +883,12 @@ impl ::planar_arm::kinematics::TipWrench for Paper3 {
     #[inline]
     fn tip_wrench(
         &self,
-        q: &::planar_arm::nalgebra::SVector<f64, 3>,
-        tau: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __tau: &::planar_arm::nalgebra::SVector<f64, 3>,
     ) -> ::core::result::Result<
         (::planar_arm::nalgebra::Vector2<f64>, f64),
         ::planar_arm::ArmError,
     > {
-        ::planar_arm::kinematics::tip_wrench3(1.0, 1.0, 1.0, q, tau)
+        ::planar_arm::kinematics::tip_wrench3(1.0, 1.0, 1.0, __q, __tau)
     }
 }
