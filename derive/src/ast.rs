@@ -53,7 +53,7 @@ impl<'a> Arm<'a> {
             Fields::Unnamed(unnamed) => {
                 cx.error_spanned_by(
                     unnamed,
-                    "links must be named fields, e.g. `#[arm(length = 1, mass = 1)] upper: Revolute`",
+                    "links must be named fields, not tuple fields: write `{ #[arm(length = 1, mass = 1)] upper: Revolute }`",
                 );
                 return None;
             }
@@ -78,7 +78,7 @@ impl<'a> Arm<'a> {
             if !is_revolute(&field.ty) {
                 cx.error_spanned_by(
                     &field.ty,
-                    "link fields must have type `planar_arm::Revolute` (the only joint kind so far)",
+                    "link fields must have type `planar_arm::Revolute`, the only joint kind so far; the link's parameters go in its #[arm(...)]",
                 );
             }
             match attrs {
@@ -86,7 +86,7 @@ impl<'a> Arm<'a> {
                 None => cx.error_spanned_by(
                     &field.ident,
                     format!(
-                        "link `{}` needs its parameters: #[arm(length = ..., mass = ...)]",
+                        "link `{}` needs its parameters: add #[arm(length = ..., mass = ...)] to the field",
                         field
                             .ident
                             .as_ref()
@@ -99,8 +99,8 @@ impl<'a> Arm<'a> {
             gravity: struct_attrs
                 .entries
                 .into_iter()
-                .find(|e| e.0 == attr::GRAVITY)
-                .map(|e| e.2),
+                .find(|e| e.key == attr::GRAVITY)
+                .map(|e| e.value),
             links,
         })
     }

@@ -1,8 +1,11 @@
-//! The `#[arm(...)]` attribute: keywords and parsing of one attribute list.
+//! The `#[arm(...)]` attribute: keywords and parsing of one item's attribute lists.
 
 use planar_arm_core::ring::Rational;
+use proc_macro2::TokenStream;
+use quote::ToTokens;
 use syn::meta::ParseNestedMeta;
-use syn::spanned::Spanned;
+use syn::parse::ParseStream;
+use syn::Token;
 
 use crate::ctxt::Ctxt;
 use crate::value;
@@ -21,7 +24,7 @@ pub const FIELD_KEYS: &[&str] = &[LENGTH, MASS, INERTIA, COM];
 pub struct Value {
     pub value: Rational,
     /// The value's tokens, for errors about the value.
-    pub tokens: proc_macro2::TokenStream,
+    pub tokens: TokenStream,
 }
 
 /// Where an `#[arm(...)]` list appears.
@@ -31,15 +34,33 @@ pub enum Place {
     Field,
 }
 
+/// One `key = value` that parsed.
+pub struct Entry {
+    pub key: &'static str,
+    pub value: Value,
+}
+
 /// Key-value pairs of all `#[arm(...)]` attributes on one item, each key at most once.
 #[derive(Default)]
 pub struct Attrs {
-    pub entries: Vec<(String, proc_macro2::Span, Value)>,
+    pub entries: Vec<Entry>,
+    /// Keys that were written (perhaps misspelt, perhaps with a bad value): a missing-key error
+    /// for them would only repeat the error already reported.
+    pub mentioned: Vec<&'static str>,
+    /// Some `#[arm ...]` could not be read to its end; what it lacks is not reported.
+    pub malformed: bool,
+    /// The first `#[arm(...)]`, for errors about the list as a whole.
+    pub tokens: TokenStream,
 }
 
 impl Attrs {
     pub fn get(&self, key: &str) -> Option<&Value> {
-        self.entries.iter().find(|e| e.0 == key).map(|e| &e.2)
+        self.entries.iter().find(|e| e.key == key).map(|e| &e.value)
+    }
+
+    /// Whether an error about `key` has been reported already, or the key was given.
+    pub fn accounted_for(&self, key: &str) -> bool {
+        self.malformed || self.mentioned.contains(&key)
     }
 }
 
@@ -48,9 +69,14 @@ pub fn parse(cx: &Ctxt, attrs: &[syn::Attribute], place: Place) -> Option<Attrs>
     let mut out = Attrs::default();
     let mut found = false;
     for attr in attrs.iter().filter(|a| a.path().is_ident(ARM)) {
+        if !found {
+            out.tokens = attr.to_token_stream();
+        }
         found = true;
-        if let syn::Meta::Path(_) = attr.meta {
+        if !matches!(attr.meta, syn::Meta::List(_)) {
+            // #[arm] or #[arm = ...]
             cx.error_spanned_by(attr, expected_syntax(place));
+            out.malformed = true;
             continue;
         }
         let result = attr.parse_nested_meta(|meta| {
@@ -59,6 +85,7 @@ pub fn parse(cx: &Ctxt, attrs: &[syn::Attribute], place: Place) -> Option<Attrs>
         });
         if let Err(err) = result {
             cx.syn_error(err);
+            out.malformed = true;
         }
     }
     found.then_some(out)
@@ -66,25 +93,38 @@ pub fn parse(cx: &Ctxt, attrs: &[syn::Attribute], place: Place) -> Option<Attrs>
 
 fn expected_syntax(place: Place) -> &'static str {
     match place {
-        Place::Struct => "expected #[arm(gravity = ...)]",
-        Place::Field => "expected #[arm(length = ..., mass = ...)]",
+        Place::Struct => "expected #[arm(gravity = ...)], for example #[arm(gravity = 9.81)]",
+        Place::Field => {
+            "expected #[arm(length = ..., mass = ...)], for example #[arm(length = 0.5, mass = 2)]"
+        }
     }
+}
+
+/// Skips the rest of a malformed `key = value` so parsing goes on with the next key.
+fn skip_to_comma(input: ParseStream<'_>) {
+    while !input.is_empty() && !input.peek(Token![,]) {
+        if input.parse::<proc_macro2::TokenTree>().is_err() {
+            break;
+        }
+    }
+}
+
+fn path_text(path: &syn::Path) -> String {
+    path.segments
+        .iter()
+        .map(|s| s.ident.to_string())
+        .collect::<Vec<_>>()
+        .join("::")
 }
 
 fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut Attrs) {
     let path = &meta.path;
-    let key = path
-        .get_ident()
-        .map(ToString::to_string)
-        .unwrap_or_else(|| quote::quote!(#path).to_string());
+    let key = path_text(path);
     // Consume the value first so that parsing can go on to the next key after an error.
     let value = match meta.value().and_then(|v| v.parse::<syn::Expr>()) {
         Ok(expr) => Some(expr),
-        Err(err) => {
-            cx.syn_error(syn::Error::new(
-                err.span(),
-                format!("expected `{key} = <number>`"),
-            ));
+        Err(_) => {
+            skip_to_comma(meta.input);
             None
         }
     };
@@ -92,53 +132,60 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
         Place::Struct => (STRUCT_KEYS, FIELD_KEYS),
         Place::Field => (FIELD_KEYS, STRUCT_KEYS),
     };
-    if !own.contains(&key.as_str()) {
+    let Some(&known) = own.iter().find(|k| **k == key) else {
         let msg = if other.contains(&key.as_str()) {
             match place {
                 // #[arm(length = 1)] on the struct
                 Place::Struct => format!(
-                    "`{key}` is a link parameter; it belongs on a link field, not on the struct"
+                    "`{key}` is a link parameter; it belongs in the #[arm(...)] of a link field, not on the struct"
                 ),
                 // #[arm(gravity = 9.81)] on a field
                 Place::Field => format!(
                     "`{key}` is a property of the whole arm; it belongs in #[arm({key} = ...)] on the struct, not on a link field"
                 ),
             }
+        } else if let Some(best) = nearest(&key, own) {
+            out.mentioned.push(best);
+            format!("unknown key `{key}`; did you mean `{best}`?")
         } else {
-            match nearest(&key, own) {
-                Some(best) => format!("unknown key `{key}`; did you mean `{best}`?"),
-                None => format!(
-                    "unknown key `{key}`; expected one of: {}",
-                    own.iter()
-                        .map(|k| format!("`{k}`"))
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                ),
-            }
+            format!(
+                "unknown key `{key}`; expected {}",
+                own.iter()
+                    .map(|k| format!("`{k}`"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
         };
         cx.error_spanned_by(path, msg);
         return;
-    }
-    if out.get(&key).is_some() {
-        cx.error_spanned_by(path, format!("duplicate key `{key}`"));
+    };
+    out.mentioned.push(known);
+    if out.get(known).is_some() {
+        cx.error_spanned_by(path, format!("duplicate key `{key}`; give it once"));
         return;
     }
-    let Some(expr) = value else { return };
+    // #[arm(length = 0.5)]
+    let Some(expr) = value else {
+        cx.error_spanned_by(
+            path,
+            format!("expected `{key} = <number>`, for example `{key} = 0.5`"),
+        );
+        return;
+    };
     match value::eval(&expr) {
-        Ok(v) => out.entries.push((
-            key,
-            path.span(),
-            Value {
+        Ok(v) => out.entries.push(Entry {
+            key: known,
+            value: Value {
                 value: v,
-                tokens: quote::quote!(#expr),
+                tokens: expr.to_token_stream(),
             },
-        )),
+        }),
         Err(err) => cx.syn_error(err),
     }
 }
 
 /// The known key closest to `key` by edit distance, if it is close enough to be a typo.
-fn nearest<'a>(key: &str, known: &[&'a str]) -> Option<&'a str> {
+fn nearest(key: &str, known: &[&'static str]) -> Option<&'static str> {
     known
         .iter()
         .map(|k| (levenshtein(key, k), *k))

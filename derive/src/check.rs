@@ -2,10 +2,10 @@
 //! get wrong. Produces the engine's exact [`ArmSpec`].
 
 use num_traits::{Signed, Zero};
-use planar_arm_core::ring::{parse_decimal, ratio, show, to_f64, Rational};
+use planar_arm_core::ring::{parse_decimal, ratio, to_f64, Rational};
 use planar_arm_core::{ArmSpec, LinkSpec};
 
-use crate::ast::Arm;
+use crate::ast::{Arm, Link};
 use crate::attr::{Value, COM, INERTIA, LENGTH, MASS};
 use crate::ctxt::Ctxt;
 
@@ -14,33 +14,26 @@ fn standard_gravity() -> Rational {
     parse_decimal("9.80665").unwrap_or_else(|| ratio(980_665, 100_000))
 }
 
-/// Rejects values that are not finite, non-zero `f64`s when they are non-zero exactly.
+/// Rejects values outside the finite range of `f64`, and non-zero values that round to zero.
 fn representable(cx: &Ctxt, what: &str, v: &Value) -> bool {
     match to_f64(&v.value) {
         None => {
             cx.error_spanned_by(
                 &v.tokens,
-                format!("{what} {} is too large for f64", short(&v.value)),
+                format!("{what} is too large for f64; use a value below 1e308"),
             );
             false
         }
         Some(x) if x == 0.0 && !v.value.is_zero() => {
             cx.error_spanned_by(
                 &v.tokens,
-                format!("{what} is too small for f64 (it rounds to zero)"),
+                format!(
+                    "{what} is too small for f64 (it rounds to zero); use a value above 1e-308"
+                ),
             );
             false
         }
         Some(_) => true,
-    }
-}
-
-fn short(r: &Rational) -> String {
-    let s = show(r);
-    if s.len() > 40 {
-        format!("{}...", &s[..40])
-    } else {
-        s
     }
 }
 
@@ -49,6 +42,7 @@ pub fn check(cx: &Ctxt, arm: &Arm<'_>) -> Option<ArmSpec> {
     let mut ok = true;
     let gravity = match &arm.gravity {
         Some(g) => {
+            // #[arm(gravity = 9.81)]
             if g.value.is_negative() {
                 cx.error_spanned_by(
                     &g.tokens,
@@ -63,84 +57,101 @@ pub fn check(cx: &Ctxt, arm: &Arm<'_>) -> Option<ArmSpec> {
     };
     let mut links = Vec::new();
     for link in &arm.links {
-        let name = link.name();
-        let a = &link.attrs;
-        let required = |key: &str| -> Option<&Value> {
-            let v = a.get(key);
-            if v.is_none() {
-                cx.error_spanned_by(
-                    &link.field.ident,
-                    format!(
-                        "link `{name}` is missing `{key}`: add `{key} = ...` to its #[arm(...)]"
-                    ),
-                );
-            }
-            v
-        };
-        let (Some(length), Some(mass)) = (required(LENGTH), required(MASS)) else {
-            ok = false;
-            continue;
-        };
-        if !length.value.is_positive() {
-            cx.error_spanned_by(
-                &length.tokens,
-                format!("link `{name}`: length must be positive"),
-            );
-            ok = false;
+        match check_link(cx, link) {
+            Some(spec) => links.push(spec),
+            None => ok = false,
         }
-        if !mass.value.is_positive() {
-            cx.error_spanned_by(
-                &mass.tokens,
-                format!("link `{name}`: mass must be positive"),
-            );
-            ok = false;
-        }
-        ok &= representable(cx, "length", length) & representable(cx, "mass", mass);
-        let rod = LinkSpec::rod(length.value.clone(), mass.value.clone());
-        let inertia = match a.get(INERTIA) {
-            Some(i) => {
-                if i.value.is_negative() {
-                    cx.error_spanned_by(
-                        &i.tokens,
-                        format!(
-                            "link `{name}`: inertia about the centre of mass cannot be negative"
-                        ),
-                    );
-                    ok = false;
-                }
-                ok &= representable(cx, "inertia", i);
-                i.value.clone()
-            }
-            None => rod.inertia.clone(),
-        };
-        let com = match a.get(COM) {
-            Some(c) => {
-                ok &= representable(cx, "com", c);
-                c.value.clone()
-            }
-            None => rod.com.clone(),
-        };
-        if inertia.is_zero() && com.is_zero() {
-            // A point mass on the joint axis adds nothing to that joint's inertia, so M would
-            // be singular and forward dynamics undefined.
-            let tokens = a
-                .get(INERTIA)
-                .map_or_else(|| quote::quote!(), |v| v.tokens.clone());
-            cx.error_spanned_by(
-                tokens,
-                format!(
-                    "link `{name}`: zero inertia with the centre of mass on the joint makes the mass matrix singular; \
-                     give it a positive inertia or move `com` off the joint"
-                ),
-            );
-            ok = false;
-        }
-        links.push(LinkSpec {
-            length: length.value.clone(),
-            mass: mass.value.clone(),
-            inertia,
-            com,
-        });
     }
     (ok && links.len() == arm.links.len()).then_some(ArmSpec { links, gravity })
+}
+
+/// Validates one link: every problem is reported, not only the first.
+fn check_link(cx: &Ctxt, link: &Link<'_>) -> Option<LinkSpec> {
+    let name = link.name();
+    let a = &link.attrs;
+    let mut ok = true;
+
+    let missing: Vec<&str> = [LENGTH, MASS]
+        .into_iter()
+        .filter(|k| a.get(k).is_none() && !a.accounted_for(k))
+        .collect();
+    match missing.as_slice() {
+        [] => {}
+        [key] => cx.error_spanned_by(
+            &a.tokens,
+            format!("link `{name}` is missing `{key}`: add `{key} = ...` to its #[arm(...)]"),
+        ),
+        _ => cx.error_spanned_by(
+            &a.tokens,
+            format!(
+                "link `{name}` is missing `length` and `mass`: write #[arm(length = ..., mass = ...)]"
+            ),
+        ),
+    }
+
+    // #[arm(length = 0.5)], #[arm(mass = 2)]: positive.
+    let mut positive = |key: &str| -> Option<Rational> {
+        let v = a.get(key)?;
+        let mut good = representable(cx, key, v);
+        if !v.value.is_positive() {
+            cx.error_spanned_by(
+                &v.tokens,
+                format!("link `{name}`: {key} must be positive, for example `{key} = 0.5`"),
+            );
+            good = false;
+        }
+        ok &= good;
+        good.then(|| v.value.clone())
+    };
+    let length = positive(LENGTH);
+    let mass = positive(MASS);
+
+    // #[arm(inertia = 0.02)]: about the centre of mass, not negative.
+    let inertia = a.get(INERTIA).and_then(|i| {
+        let mut good = representable(cx, "inertia", i);
+        if i.value.is_negative() {
+            cx.error_spanned_by(
+                &i.tokens,
+                format!("link `{name}`: inertia about the centre of mass cannot be negative; use 0 for a point mass"),
+            );
+            good = false;
+        }
+        ok &= good;
+        good.then(|| i.value.clone())
+    });
+    // #[arm(com = 0.25)]: any sign (a counterweight lies behind the joint).
+    let com = a.get(COM).and_then(|c| {
+        let good = representable(cx, "com", c);
+        ok &= good;
+        good.then(|| c.value.clone())
+    });
+    if !ok {
+        return None;
+    }
+    let rod = LinkSpec::rod(length?, mass?);
+    let inertia = inertia.unwrap_or(rod.inertia);
+    let com = com.unwrap_or(rod.com);
+    if inertia.is_zero() && com.is_zero() {
+        // Joint k then moves none of link k's mass: with nothing after it (or nothing after it
+        // that resists) M is singular and forward dynamics undefined. Both keys are explicit
+        // here, since a positive rod's defaults are positive.
+        let tokens = a
+            .get(INERTIA)
+            .or_else(|| a.get(COM))
+            .map_or_else(|| a.tokens.clone(), |v| v.tokens.clone());
+        cx.error_spanned_by(
+            tokens,
+            format!(
+                "link `{name}`: zero inertia with `com = 0` puts the link's mass on its joint axis, \
+                 which can make the mass matrix singular; give it a positive inertia or a non-zero `com`"
+            ),
+        );
+        return None;
+    }
+    Some(LinkSpec {
+        length: rod.length,
+        mass: rod.mass,
+        inertia,
+        com,
+    })
 }

@@ -1,13 +1,17 @@
 //! Expansion: a valid arm goes to the engine; an invalid one gets its errors and a stub impl.
 
+use num_traits::Signed;
 use proc_macro2::TokenStream;
 use quote::{quote, ToTokens};
 use syn::DeriveInput;
 
-use planar_arm_core::emit::Derived;
+use planar_arm_core::emit::{Derived, EmitError};
 use planar_arm_core::generate::{generate, Header};
+use planar_arm_core::ring::{to_i128_pair, Rational};
+use planar_arm_core::Expr;
 
 use crate::ast::Arm;
+use crate::attr::Value;
 use crate::check::check;
 use crate::ctxt::Ctxt;
 
@@ -21,49 +25,212 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
     }
 }
 
-fn try_derive(input: &DeriveInput) -> Result<TokenStream, TokenStream> {
-    let cx = Ctxt::new();
-    let spec = Arm::from_ast(&cx, input).and_then(|arm| check(&cx, &arm));
-    cx.check()?;
-    let Some(spec) = spec else {
-        return Err(syn::Error::new_spanned(&input.ident, "invalid arm").to_compile_error());
-    };
+fn header(input: &DeriveInput) -> Header {
     let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
     let ident = &input.ident;
-    let header = Header {
+    Header {
         impl_generics: impl_generics.to_token_stream(),
         ty: quote!(#ident #ty_generics),
         where_clause: where_clause.to_token_stream(),
         fields: field_names(input),
+    }
+}
+
+fn try_derive(input: &DeriveInput) -> Result<TokenStream, TokenStream> {
+    let cx = Ctxt::new();
+    let arm = Arm::from_ast(&cx, input);
+    let spec = arm.as_ref().and_then(|arm| check(&cx, arm));
+    cx.check()?;
+    let (Some(arm), Some(spec)) = (arm, spec) else {
+        // Unreachable: `check` reports every reason it returns `None`.
+        return Err(syn::Error::new_spanned(&input.ident, "invalid arm").to_compile_error());
     };
+    let header = header(input);
     let derived = Derived::new(&spec);
     let mut tokens = generate(&derived, &header)
-        .map_err(|e| syn::Error::new_spanned(ident, e.message).to_compile_error())?;
-    tokens.extend(extras(&derived, &header));
+        .map_err(|e| emit_error(&arm, &derived, &e).to_compile_error())?;
+    tokens.extend(planar_arm_core::generate::closed_forms(&derived, &header));
     Ok(tokens)
 }
 
-/// Closed-form inverse kinematics and inverse statics, for the arms the paper solves.
-fn extras(d: &Derived, header: &Header) -> TokenStream {
-    planar_arm_core::generate::closed_forms(d, header)
+/// The engine could not emit the arm: some exact coefficient is too large for the generated
+/// `const` data. Every parameter contributes, so the error points at the one with the most
+/// digits, the likeliest culprit, and says which coefficient overflowed.
+fn emit_error(arm: &Arm<'_>, derived: &Derived, err: &EmitError) -> syn::Error {
+    let mut values: Vec<(String, &Value)> = Vec::new();
+    if let Some(g) = &arm.gravity {
+        values.push(("this gravity".to_string(), g));
+    }
+    for link in &arm.links {
+        for entry in &link.attrs.entries {
+            values.push((
+                format!("link `{}`: this {}", link.name(), entry.key),
+                &entry.value,
+            ));
+        }
+    }
+    // The first value of greatest height: the likeliest culprit.
+    let mut worst: Option<&(String, &Value)> = None;
+    for candidate in &values {
+        if worst.is_none_or(|w| height(&candidate.1.value) > height(&w.1.value)) {
+            worst = Some(candidate);
+        }
+    }
+    let (what, tokens) = worst.map_or_else(
+        || ("the arm".to_string(), quote!()),
+        |(what, v)| (what.clone(), v.tokens.clone()),
+    );
+    let message = match overflowing_coefficient(derived) {
+        Some((place, c)) => format!(
+            "{what} makes the exact equations of motion too large to emit: the coefficient {} in {place} \
+             has {} digits, more than the 38 of i128; use values nearer 1 with fewer digits, \
+             for example between 0.001 and 1000",
+            abbreviate(c),
+            digits(c),
+        ),
+        None => format!("{what}: {}", abbreviate_digits(&err.message)),
+    };
+    syn::Error::new_spanned(tokens, message)
 }
 
-/// After an error, a stub impl, so uses of the trait do not add a cascade of errors.
+/// Bits in the larger of numerator and denominator.
+fn height(r: &Rational) -> u64 {
+    r.numer().abs().bits().max(r.denom().bits())
+}
+
+/// The first coefficient of the emitted `const` data that does not fit in `i128`, in the
+/// order the engine checks them.
+fn overflowing_coefficient(d: &Derived) -> Option<(String, &Rational)> {
+    let dy = &d.dynamics;
+    let mut entries: Vec<(String, &Expr)> = vec![
+        ("the kinetic energy".to_string(), &dy.kinetic_energy),
+        ("the potential energy".to_string(), &dy.potential_energy),
+    ];
+    for (i, row) in dy.mass_matrix.iter().enumerate() {
+        for (j, e) in row.iter().enumerate() {
+            entries.push((format!("M{}{}", i + 1, j + 1), e));
+        }
+    }
+    for (i, e) in dy.coriolis.iter().enumerate() {
+        entries.push((format!("c{}", i + 1), e));
+    }
+    for (i, e) in dy.gravity.iter().enumerate() {
+        entries.push((format!("g{}", i + 1), e));
+    }
+    entries.into_iter().find_map(|(place, e)| {
+        e.terms()
+            .find(|(_, _, c)| to_i128_pair(c).is_none())
+            .map(|(_, _, c)| (place, c))
+    })
+}
+
+/// A rational with its long digit strings shortened: `25000000...0000/3`.
+fn abbreviate(r: &Rational) -> String {
+    if r.is_integer() {
+        shorten(&r.numer().to_string())
+    } else {
+        format!(
+            "{}/{}",
+            shorten(&r.numer().to_string()),
+            shorten(&r.denom().to_string())
+        )
+    }
+}
+
+/// Decimal digits of the larger of numerator and denominator.
+fn digits(r: &Rational) -> usize {
+    r.numer()
+        .abs()
+        .to_string()
+        .len()
+        .max(r.denom().to_string().len())
+}
+
+fn shorten(s: &str) -> String {
+    if s.len() <= 16 {
+        s.to_string()
+    } else {
+        format!("{}...{}", &s[..8], &s[s.len() - 4..])
+    }
+}
+
+/// Shortens every run of more than 16 digits in a message.
+fn abbreviate_digits(message: &str) -> String {
+    let mut out = String::new();
+    let mut run = String::new();
+    for ch in message.chars().chain(std::iter::once(' ')) {
+        if ch.is_ascii_digit() {
+            run.push(ch);
+        } else {
+            out.push_str(&shorten(&run));
+            run.clear();
+            out.push(ch);
+        }
+    }
+    out.pop();
+    out
+}
+
+/// After an error, a stub impl of every trait the derive would implement, so uses of the
+/// traits do not add a cascade of errors.
 fn fallback(input: &DeriveInput) -> TokenStream {
     let Some(n) = Arm::field_count(input) else {
         return TokenStream::new();
     };
-    let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
-    let ident = &input.ident;
-    planar_arm_core::generate::stub(
-        n,
-        &Header {
-            impl_generics: impl_generics.to_token_stream(),
-            ty: quote!(#ident #ty_generics),
-            where_clause: where_clause.to_token_stream(),
-            fields: field_names(input),
-        },
-    )
+    let header = header(input);
+    let mut tokens = planar_arm_core::generate::stub(n, &header);
+    let Header {
+        impl_generics,
+        ty,
+        where_clause,
+        ..
+    } = &header;
+    let unreachable = quote!({ ::core::unreachable!() });
+    let svec = |k: usize| {
+        let k = proc_macro2::Literal::usize_unsuffixed(k);
+        quote!(::planar_arm::nalgebra::SVector<f64, #k>)
+    };
+    let result = |t: TokenStream| quote!(::core::result::Result<#t, ::planar_arm::ArmError>);
+    match n {
+        2 => {
+            let (v, ik) = (
+                svec(2),
+                result(quote!([::planar_arm::nalgebra::SVector<f64, 2>; 2])),
+            );
+            let force = result(quote!(::planar_arm::nalgebra::Vector2<f64>));
+            tokens.extend(quote! {
+                #[automatically_derived]
+                impl #impl_generics ::planar_arm::kinematics::ClosedFormIk<2> for #ty #where_clause {
+                    type Target = ::planar_arm::nalgebra::Point2<f64>;
+                    fn inverse_kinematics(&self, _: &::planar_arm::nalgebra::Point2<f64>) -> #ik #unreachable
+                }
+                #[automatically_derived]
+                impl #impl_generics ::planar_arm::kinematics::TipForce for #ty #where_clause {
+                    fn tip_force(&self, _: &#v, _: &#v) -> #force #unreachable
+                }
+            });
+        }
+        3 => {
+            let (v, ik) = (
+                svec(3),
+                result(quote!([::planar_arm::nalgebra::SVector<f64, 3>; 2])),
+            );
+            let wrench = result(quote!((::planar_arm::nalgebra::Vector2<f64>, f64)));
+            tokens.extend(quote! {
+                #[automatically_derived]
+                impl #impl_generics ::planar_arm::kinematics::ClosedFormIk<3> for #ty #where_clause {
+                    type Target = ::planar_arm::nalgebra::Isometry2<f64>;
+                    fn inverse_kinematics(&self, _: &::planar_arm::nalgebra::Isometry2<f64>) -> #ik #unreachable
+                }
+                #[automatically_derived]
+                impl #impl_generics ::planar_arm::kinematics::TipWrench for #ty #where_clause {
+                    fn tip_wrench(&self, _: &#v, _: &#v) -> #wrench #unreachable
+                }
+            });
+        }
+        _ => {}
+    }
+    tokens
 }
 
 fn field_names(input: &DeriveInput) -> Vec<proc_macro2::Ident> {

@@ -31,7 +31,7 @@ pub fn eval(expr: &Expr) -> syn::Result<Rational> {
                 BinOp::Mul(_) => Ok(l * r),
                 BinOp::Div(_) if r.is_zero() => Err(syn::Error::new_spanned(
                     &b.right,
-                    "division by zero in a link parameter",
+                    "division by zero; the divisor of a link parameter must not be zero",
                 )),
                 BinOp::Div(_) => Ok(l / r),
                 _ => Err(syn::Error::new_spanned(
@@ -43,10 +43,19 @@ pub fn eval(expr: &Expr) -> syn::Result<Rational> {
         Expr::Path(p) => Err(syn::Error::new_spanned(
             p,
             format!(
-                "expected a number, found `{}`; link parameters must be written as numbers \
-                 (1, 0.35, 3/2), not names, so they can be derived exactly at compile time",
+                "expected a number, found `{}`; write the value itself (1, 0.35, 3/2): \
+                 parameters are evaluated exactly at compile time and cannot name constants",
                 quote::quote!(#p).to_string().replace(' ', "")
             ),
+        )),
+        Expr::Call(_) | Expr::MethodCall(_) | Expr::Macro(_) => Err(syn::Error::new_spanned(
+            expr,
+            "expected a number, found a call; parameters are evaluated exactly at compile time, \
+             so only numbers, + - * / and parentheses are allowed",
+        )),
+        Expr::Cast(c) => Err(syn::Error::new_spanned(
+            c,
+            "expected a number, found a cast; remove the `as ...`",
         )),
         other => Err(syn::Error::new_spanned(
             other,
@@ -62,11 +71,15 @@ fn literal(digits: &str, suffix: &str, span: &Lit) -> syn::Result<Rational> {
     ) {
         return Err(syn::Error::new_spanned(
             span,
-            format!("unsupported literal suffix `{suffix}`"),
+            format!("unsupported suffix `{suffix}`; write the number without it"),
         ));
     }
-    parse_decimal(digits)
-        .ok_or_else(|| syn::Error::new_spanned(span, "number out of range for exact evaluation"))
+    parse_decimal(digits).ok_or_else(|| {
+        syn::Error::new_spanned(
+            span,
+            "number out of range; link parameters must be ordinary magnitudes such as 0.001 to 1000",
+        )
+    })
 }
 
 #[cfg(test)]

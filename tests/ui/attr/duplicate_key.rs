@@ -1,0 +1,9 @@
+use planar_arm::prelude::*;
+
+#[derive(PlanarArm)]
+struct Arm {
+    #[arm(length = 1, mass = 1, length = 2)]
+    upper: Revolute,
+}
+
+fn main() {}

@@ -1,0 +1,10 @@
+use planar_arm::prelude::*;
+
+#[derive(PlanarArm)]
+struct Arm {
+    #[arm(length = 1, mass = 1)]
+    #[arm(mass = 2)]
+    upper: Revolute,
+}
+
+fn main() {}

@@ -1,0 +1,9 @@
+use planar_arm::prelude::*;
+
+#[derive(PlanarArm)]
+struct Arm {
+    #[arm()]
+    upper: Revolute,
+}
+
+fn main() {}

@@ -1,0 +1,6 @@
+use planar_arm::prelude::*;
+
+#[derive(PlanarArm)]
+struct Arm(#[arm(length = 1, mass = 1)] Revolute);
+
+fn main() {}

@@ -1,0 +1,6 @@
+use planar_arm::prelude::*;
+
+#[derive(PlanarArm)]
+struct Arm;
+
+fn main() {}

@@ -1,0 +1,9 @@
+use planar_arm::prelude::*;
+
+#[derive(PlanarArm)]
+struct Arm {
+    #[arm(length = "0.5", mass = 1)]
+    upper: Revolute,
+}
+
+fn main() {}
