@@ -1,0 +1,110 @@
+#!/usr/bin/env python3
+"""Markdown tables from one run of `cargo bench --bench dynamics` (criterion's JSON output).
+
+    python3 bench/table.py [CRITERION_DIR] [--baseline NAME] [--compare OTHER]
+
+CRITERION_DIR defaults to $CARGO_TARGET_DIR/criterion (or target/criterion). Times are
+criterion's median estimate per call, in ns. Ratios are "how many times faster the generated
+code is" (other / generated); for the floor, generated / floor. With --compare, a second table
+gives the generated code's time under baseline OTHER divided by its time under NAME (the
+speed-up between two saved runs).
+"""
+import argparse
+import json
+import os
+import sys
+
+
+def load(root, baseline):
+    """{(group, function): median ns} for every benchmark saved under `baseline`."""
+    out = {}
+    for dirpath, _dirnames, filenames in os.walk(root):
+        if os.path.basename(dirpath) != baseline or "estimates.json" not in filenames:
+            continue
+        try:
+            with open(os.path.join(dirpath, "benchmark.json")) as f:
+                meta = json.load(f)
+            with open(os.path.join(dirpath, "estimates.json")) as f:
+                est = json.load(f)
+        except OSError:
+            continue
+        out[(meta["group_id"], meta["function_id"])] = est["median"]["point_estimate"]
+    return out
+
+
+def fmt(x):
+    if x is None:
+        return "-"
+    return f"{x:.1f}" if x < 100 else f"{x:.0f}"
+
+
+def ratio(a, b):
+    if a is None or b is None or b == 0:
+        return "-"
+    return f"{a / b:.1f}x"
+
+
+def groups(times):
+    def key(g):
+        s, _, n = g.partition("/N")
+        return (s, int(n) if n.isdigit() else 0)
+
+    return sorted({g for g, _ in times}, key=key)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    default = os.path.join(os.environ.get("CARGO_TARGET_DIR", "target"), "criterion")
+    ap.add_argument("root", nargs="?", default=default)
+    ap.add_argument("--baseline", default="new")
+    ap.add_argument("--compare")
+    args = ap.parse_args()
+    t = load(args.root, args.baseline)
+    if not t:
+        sys.exit(f"no criterion results under {args.root} (baseline {args.baseline})")
+
+    def get(g, f):
+        return t.get((g, f))
+
+    print("Times in ns per call (criterion median); ratios = other / generated.\n")
+    print("| arm | N | floor: N sin_cos | gen ID | ID / floor | RNEA | RNEA / gen | dynibo ID | dynibo / gen |"
+          " gen M | CRBA | CRBA / gen | dynibo M | dynibo / gen | gen c+g |"
+          " gen FD | ABA | ABA / gen | dynibo FD | dynibo / gen |")
+    print("|" + "---|" * 20)
+    for g in groups(t):
+        s, _, n = g.partition("/N")
+        floor = get(g, "floor/sin_cos")
+        gid = get(g, "generated/inverse_dynamics")
+        gm = get(g, "generated/mass_matrix")
+        gfd = get(g, "generated/forward_dynamics")
+        rnea = get(g, "reference/rnea")
+        crba = get(g, "reference/crba")
+        aba = get(g, "reference/aba")
+        did = get(g, "dynibo/inverse_dynamics")
+        dm = get(g, "dynibo/mass_matrix")
+        dfd = get(g, "dynibo/forward_dynamics")
+        cg = get(g, "generated/coriolis+gravity")
+        row = [s, n, fmt(floor), fmt(gid), ratio(gid, floor), fmt(rnea), ratio(rnea, gid),
+               fmt(did), ratio(did, gid), fmt(gm), fmt(crba), ratio(crba, gm), fmt(dm),
+               ratio(dm, gm), fmt(cg), fmt(gfd), fmt(aba), ratio(aba, gfd), fmt(dfd),
+               ratio(dfd, gfd)]
+        print("| " + " | ".join(row) + " |")
+
+    if args.compare:
+        old = load(args.root, args.compare)
+        print(f"\nGenerated code, {args.compare} / {args.baseline} (speed-up of the generated code):\n")
+        print("| arm | N | ID before | ID after | speed-up | M before | M after | speed-up |"
+              " c+g before | c+g after | speed-up | FD before | FD after | speed-up |")
+        print("|" + "---|" * 14)
+        for g in groups(t):
+            s, _, n = g.partition("/N")
+            row = [s, n]
+            for f in ["inverse_dynamics", "mass_matrix", "coriolis+gravity", "forward_dynamics"]:
+                a = old.get((g, "generated/" + f))
+                b = t.get((g, "generated/" + f))
+                row += [fmt(a), fmt(b), ratio(a, b)]
+            print("| " + " | ".join(row) + " |")
+
+
+if __name__ == "__main__":
+    main()
