@@ -1,0 +1,401 @@
+//! Draws the work-spaces of the paper's arms as SVG, from derived arms (their `workspace()`,
+//! [`DexterousWorkspace`], `tip_pose`, `joint_positions` and closed-form inverse kinematics):
+//!
+//! - `docs/workspace-two-link.svg`: the reachable annulus `|l1 - l2| ..= l1 + l2` of the paper's
+//!   two equal links (a disk) and of an unequal pair, with the tips of random configurations;
+//! - `docs/workspace-three-link.svg`: the usable (dexterous) work-space of three links, the
+//!   points reached with every orientation of the last link, in the paper's three cases
+//!   (`l3 < |l1 - l2|`: an annulus; `l3 > |l1 - l2|`: an annulus and a disk; `l1 = l2 = l`: one
+//!   disk of radius `2 l - l3`), with the whole reachable annulus outlined. The dots are grid
+//!   points that the closed-form inverse kinematics reaches with each of 72 orientations.
+//!
+//! ```text
+//! cargo run --example workspace
+//! ```
+
+use std::error::Error;
+use std::path::{Path, PathBuf};
+
+use planar_arm::kinematics::DexterousWorkspace;
+use planar_arm::prelude::*;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+/// The paper's two equal links.
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81)]
+struct Equal2 {
+    #[arm(length = 1, mass = 1)]
+    upper: Revolute,
+    #[arm(length = 1, mass = 1)]
+    fore: Revolute,
+}
+
+/// An unequal pair: the annulus 0.4 ..= 1.6.
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81)]
+struct Unequal2 {
+    #[arm(length = 1, mass = 1)]
+    upper: Revolute,
+    #[arm(length = 3/5, mass = 1)]
+    fore: Revolute,
+}
+
+/// `l3 < |l1 - l2|`: the usable region is an annulus.
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81)]
+struct ShortHand {
+    #[arm(length = 1, mass = 1)]
+    upper: Revolute,
+    #[arm(length = 3/5, mass = 1)]
+    fore: Revolute,
+    #[arm(length = 1/4, mass = 1)]
+    hand: Revolute,
+}
+
+/// `|l1 - l2| < l3 <= min(l1, l2)`: an annulus and a disk.
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81)]
+struct LongHand {
+    #[arm(length = 1, mass = 1)]
+    upper: Revolute,
+    #[arm(length = 7/10, mass = 1)]
+    fore: Revolute,
+    #[arm(length = 1/2, mass = 1)]
+    hand: Revolute,
+}
+
+/// `l1 = l2`: one disk of radius `2 l - l3`.
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81)]
+struct EqualPair {
+    #[arm(length = 1, mass = 1)]
+    upper: Revolute,
+    #[arm(length = 1, mass = 1)]
+    fore: Revolute,
+    #[arm(length = 1/2, mass = 1)]
+    hand: Revolute,
+}
+
+type Pt = (f64, f64);
+
+/// Random configurations drawn per two-link panel.
+const TIPS: usize = 300;
+
+const REACHABLE: RGBColor = RGBColor(70, 110, 190);
+const USABLE: RGBColor = RGBColor(40, 150, 90);
+const ARM: RGBColor = RGBColor(200, 80, 40);
+
+/// Deterministic splitmix64 numbers in [0, 1).
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^= z >> 31;
+        #[allow(clippy::cast_precision_loss)]
+        let u = (z >> 11) as f64 / (1u64 << 53) as f64;
+        u
+    }
+
+    fn angle(&mut self) -> f64 {
+        (2.0 * self.next() - 1.0) * std::f64::consts::PI
+    }
+}
+
+fn circle(radius: f64) -> Vec<Pt> {
+    (0..=240)
+        .map(|i| {
+            let t = f64::from(i) * std::f64::consts::TAU / 240.0;
+            (radius * t.cos(), radius * t.sin())
+        })
+        .collect()
+}
+
+/// A filled annulus as one polygon: the outer circle one way, the inner one back (nonzero fill).
+fn annulus(inner: f64, outer: f64) -> Vec<Pt> {
+    let mut points = circle(outer);
+    if inner > 0.0 {
+        points.extend(circle(inner).into_iter().rev());
+    }
+    points
+}
+
+/// The arm drawn as a polyline: the joints, then the tip.
+fn arm_polyline<A: PlanarArm<N>, const N: usize>(arm: &A, q: &SVector<f64, N>) -> Vec<Pt> {
+    let mut points: Vec<Pt> = arm.joint_positions(q).iter().map(|p| (p.x, p.y)).collect();
+    let tip = arm.tip_pose(q).translation.vector;
+    points.push((tip.x, tip.y));
+    points
+}
+
+type Chart<'a, 'b> = ChartContext<
+    'a,
+    SVGBackend<'b>,
+    Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+>;
+
+/// A chart titled `title` whose axes have equal units and show at least `-half ..= half`.
+fn square_chart<'a, 'b>(
+    area: &'a DrawingArea<SVGBackend<'b>, Shift>,
+    title: &str,
+    half: f64,
+) -> Result<Chart<'a, 'b>, Box<dyn Error>> {
+    let (margin, x_labels, y_labels) = (12_u32, 28_u32, 36_u32);
+    let (w, h) = area.dim_in_pixel();
+    let caption_height = 34;
+    let plot_w = f64::from(w - y_labels - 2 * margin);
+    let plot_h = f64::from(h - x_labels - 2 * margin - caption_height);
+    let (xr, yr) = if plot_w >= plot_h {
+        (half * plot_w / plot_h, half)
+    } else {
+        (half, half * plot_h / plot_w)
+    };
+    let mut chart = ChartBuilder::on(area)
+        .margin(margin)
+        .caption(title, ("sans-serif", 17))
+        .x_label_area_size(x_labels)
+        .y_label_area_size(y_labels)
+        .build_cartesian_2d(-xr..xr, -yr..yr)?;
+    chart
+        .configure_mesh()
+        .light_line_style(TRANSPARENT)
+        .bold_line_style(BLACK.mix(0.08))
+        .x_labels(7)
+        .y_labels(7)
+        .label_style(("sans-serif", 12))
+        .draw()?;
+    Ok(chart)
+}
+
+/// An entry of a figure's key.
+enum Key {
+    Patch(RGBAColor),
+    Dot(RGBAColor),
+    Line(RGBAColor, u32),
+    Note,
+}
+
+/// Draws a figure's key (shared by its panels) in its own strip.
+fn draw_key(
+    area: &DrawingArea<SVGBackend<'_>, Shift>,
+    entries: &[(Key, &str)],
+) -> Result<(), Box<dyn Error>> {
+    let font = ("sans-serif", 13).into_font();
+    let x = 8;
+    let mut y = 70;
+    for (key, text) in entries {
+        match key {
+            Key::Patch(c) => {
+                area.draw(&Rectangle::new([(x, y - 6), (x + 18, y + 6)], c.filled()))?
+            }
+            Key::Dot(c) => area.draw(&Circle::new((x + 9, y), 3, c.filled()))?,
+            Key::Line(c, w) => {
+                area.draw(&PathElement::new(
+                    vec![(x, y), (x + 18, y)],
+                    c.stroke_width(*w),
+                ))?;
+            }
+            Key::Note => {}
+        }
+        let indent = if matches!(key, Key::Note) { 0 } else { 26 };
+        area.draw(&Text::new(
+            text.to_string(),
+            (x + indent, y - 7),
+            font.clone(),
+        ))?;
+        y += 24;
+    }
+    Ok(())
+}
+
+fn two_link_panel<A: PlanarArm<2>>(
+    arm: &A,
+    area: &DrawingArea<SVGBackend<'_>, Shift>,
+    rng: &mut Rng,
+) -> Result<(), Box<dyn Error>> {
+    let [l1, l2] = A::LINKS.map(|l| l.length);
+    let w = arm.workspace();
+    let (inner, outer) = (w.inner_radius(), w.outer_radius());
+    let shape = if inner == 0.0 {
+        format!("a disk, r <= {outer}")
+    } else {
+        format!("an annulus, {inner:.1} <= r <= {outer:.1}")
+    };
+    let title = format!("l1 = {l1}, l2 = {l2}: {shape}");
+    let mut chart = square_chart(area, &title, 1.1 * outer)?;
+    chart.draw_series(std::iter::once(Polygon::new(
+        annulus(inner, outer),
+        REACHABLE.mix(0.18).filled(),
+    )))?;
+    for radius in [inner, outer].into_iter().filter(|r| *r > 0.0) {
+        chart.draw_series(LineSeries::new(circle(radius), REACHABLE.stroke_width(2)))?;
+    }
+    // Tips of random configurations: every one lands in the annulus.
+    let tips: Vec<Pt> = (0..TIPS)
+        .map(|_| {
+            let q = SVector::<f64, 2>::new(rng.angle(), rng.angle());
+            let t = arm.tip_pose(&q).translation.vector;
+            assert!(w.contains(&Point2::from(t)));
+            (t.x, t.y)
+        })
+        .collect();
+    chart.draw_series(
+        tips.iter()
+            .map(|&p| Circle::new(p, 1, BLACK.mix(0.6).filled())),
+    )?;
+    // One configuration, drawn.
+    let pose = arm_polyline(arm, &SVector::<f64, 2>::new(0.5, 2.0));
+    chart.draw_series(LineSeries::new(pose.clone(), ARM.stroke_width(3)))?;
+    chart.draw_series(pose.iter().map(|&p| Circle::new(p, 3, ARM.filled())))?;
+    Ok(())
+}
+
+fn three_link_panel<A>(
+    arm: &A,
+    case: &str,
+    area: &DrawingArea<SVGBackend<'_>, Shift>,
+) -> Result<(), Box<dyn Error>>
+where
+    A: PlanarArm<3> + ClosedFormIk<3, Target = Isometry2<f64>>,
+{
+    let [l1, l2, l3] = A::LINKS.map(|l| l.length);
+    let all = arm.workspace();
+    let usable = DexterousWorkspace::of_lengths(l1, l2, l3);
+    let outer = all.outer_radius();
+    let title = format!("l = ({l1}, {l2}, {l3}): {case}");
+    let mut chart = square_chart(area, &title, 1.06 * outer)?;
+
+    // The usable pieces, filled.
+    let mut pieces = Vec::new();
+    if let Some(r) = usable.disk_radius() {
+        pieces.push(annulus(0.0, r));
+    }
+    if let Some((inner, o)) = usable.annulus() {
+        pieces.push(annulus(inner, o));
+    }
+    chart.draw_series(
+        pieces
+            .into_iter()
+            .map(|piece| Polygon::new(piece, USABLE.mix(0.35).filled())),
+    )?;
+    // The whole reachable annulus, outlined.
+    for radius in [all.inner_radius(), outer].into_iter().filter(|r| *r > 0.0) {
+        chart.draw_series(LineSeries::new(circle(radius), REACHABLE.stroke_width(2)))?;
+    }
+    // Brute force: grid points reached with each of 72 orientations of the last link.
+    let n = 22;
+    let spacing = 2.0 * outer / f64::from(n);
+    let mut dots = Vec::new();
+    for i in 0..=n {
+        for j in 0..=n {
+            let p = Vector2::new(
+                -outer + spacing * f64::from(i),
+                -outer + spacing * f64::from(j),
+            );
+            let every = (0..72).all(|k| {
+                let phi = f64::from(k) * std::f64::consts::TAU / 72.0;
+                arm.inverse_kinematics(&Isometry2::new(p, phi)).is_ok()
+            });
+            if !on_edge(l1, l2, l3, p.norm()) {
+                assert_eq!(every, usable.contains(&Point2::from(p)), "{p}");
+            }
+            if every {
+                dots.push((p.x, p.y));
+            }
+        }
+    }
+    chart.draw_series(
+        dots.iter()
+            .map(|&p| Circle::new(p, 2, BLACK.mix(0.6).filled())),
+    )?;
+    // The arm reaching a usable point, and the circle of wrist positions about that point.
+    let radius = match (usable.annulus(), usable.disk_radius()) {
+        (Some((inner, o)), _) => 0.5 * (inner + o),
+        (None, Some(r)) => 0.6 * r,
+        (None, None) => 0.0,
+    };
+    let point = Vector2::new(-0.6, 0.8) * radius;
+    let [q, _] = arm.inverse_kinematics(&Isometry2::new(point, 2.6))?;
+    chart.draw_series(LineSeries::new(
+        circle(l3)
+            .into_iter()
+            .map(|(x, y)| (x + point.x, y + point.y)),
+        ARM.mix(0.7).stroke_width(1),
+    ))?;
+    let pose = arm_polyline(arm, &q);
+    chart.draw_series(LineSeries::new(pose.clone(), ARM.stroke_width(3)))?;
+    chart.draw_series(pose.iter().map(|&p| Circle::new(p, 3, ARM.filled())))?;
+    Ok(())
+}
+
+/// Whether a point lies near a boundary circle of the usable region, where a finite sample of
+/// orientations may miss the few that fail.
+fn on_edge(l1: f64, l2: f64, l3: f64, rho: f64) -> bool {
+    let (a, b) = ((l1 - l2).abs(), l1 + l2);
+    (rho + l3 - b).abs() < 1e-2 || ((rho - l3).abs() - a).abs() < 1e-2
+}
+
+fn docs() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("docs")
+}
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let two = docs().join("workspace-two-link.svg");
+    {
+        let root = SVGBackend::new(&two, (1140, 500)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let (plots, key) = root.split_horizontally(900);
+        let panels = plots.split_evenly((1, 2));
+        let mut rng = Rng(7);
+        two_link_panel(&Equal2::default(), &panels[0], &mut rng)?;
+        two_link_panel(&Unequal2::default(), &panels[1], &mut rng)?;
+        draw_key(
+            &key,
+            &[
+                (Key::Patch(REACHABLE.mix(0.3)), "workspace(): reachable"),
+                (Key::Line(REACHABLE.to_rgba(), 2), "|l1 - l2| and l1 + l2"),
+                (Key::Dot(BLACK.mix(0.6)), "tip_pose of random q"),
+                (Key::Line(ARM.to_rgba(), 3), "the arm at q = (0.5, 2)"),
+            ],
+        )?;
+        root.present()?;
+    }
+    println!("{}", two.display());
+
+    let three = docs().join("workspace-three-link.svg");
+    {
+        let root = SVGBackend::new(&three, (1480, 460)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let (plots, key) = root.split_horizontally(1240);
+        let panels = plots.split_evenly((1, 3));
+        three_link_panel(&ShortHand::default(), "l3 < |l1 - l2|", &panels[0])?;
+        three_link_panel(&LongHand::default(), "l3 > |l1 - l2|", &panels[1])?;
+        three_link_panel(&EqualPair::default(), "l1 = l2 = l", &panels[2])?;
+        draw_key(
+            &key,
+            &[
+                (Key::Line(REACHABLE.to_rgba(), 2), "workspace(): reachable"),
+                (Key::Patch(USABLE.mix(0.45)), "DexterousWorkspace: usable"),
+                (Key::Dot(BLACK.mix(0.6)), "reached with all 72"),
+                (Key::Note, "      orientations (IK)"),
+                (Key::Line(ARM.to_rgba(), 3), "an arm reaching a"),
+                (Key::Note, "      usable point"),
+                (Key::Line(ARM.mix(0.7), 1), "the circle of radius l3"),
+                (Key::Note, "      about that point"),
+                (Key::Note, ""),
+                (Key::Note, "Usable: every orientation"),
+                (Key::Note, "of the last link reaches it."),
+                (Key::Note, "Left: an annulus; middle: an"),
+                (Key::Note, "annulus and a disk; right:"),
+                (Key::Note, "one disk of radius 2l - l3."),
+            ],
+        )?;
+        root.present()?;
+    }
+    println!("{}", three.display());
+    Ok(())
+}
