@@ -197,35 +197,33 @@ pub const fn constant_term(terms: &[Term]) -> Rational {
     Rational::ZERO
 }
 
-/// The coefficient of `cos(angle . q)` (no rates) in a sum; zero if absent. `angle` has its
-/// trailing zeros trimmed and its first non-zero entry positive, as the engine stores it.
-#[must_use]
-pub const fn cos_coefficient(terms: &[Term], angle: &[i32]) -> Rational {
+/// The coefficient of the atom `trig` (no rates) in a sum; zero if absent.
+const fn coefficient(terms: &[Term], cos: bool, angle: &[i32]) -> Rational {
     let mut i = 0;
     while i < terms.len() {
-        if let Trig::Cos(k) = terms[i].trig {
-            if same_angle(k, angle) && terms[i].powers.is_empty() {
-                return terms[i].coeff;
-            }
+        let k = match (terms[i].trig, cos) {
+            (Trig::Cos(k), true) | (Trig::Sin(k), false) => k,
+            _ => &[],
+        };
+        if !k.is_empty() && same_angle(k, angle) && terms[i].powers.is_empty() {
+            return terms[i].coeff;
         }
         i += 1;
     }
     Rational::ZERO
 }
 
+/// The coefficient of `cos(angle . q)` (no rates) in a sum; zero if absent. `angle` has its
+/// trailing zeros trimmed and its first non-zero entry positive, as the engine stores it.
+#[must_use]
+pub const fn cos_coefficient(terms: &[Term], angle: &[i32]) -> Rational {
+    coefficient(terms, true, angle)
+}
+
 /// The coefficient of `sin(angle . q)` (no rates) in a sum; zero if absent.
 #[must_use]
 pub const fn sin_coefficient(terms: &[Term], angle: &[i32]) -> Rational {
-    let mut i = 0;
-    while i < terms.len() {
-        if let Trig::Sin(k) = terms[i].trig {
-            if same_angle(k, angle) && terms[i].powers.is_empty() {
-                return terms[i].coeff;
-            }
-        }
-        i += 1;
-    }
-    Rational::ZERO
+    coefficient(terms, false, angle)
 }
 
 /// The value of a sum of terms at `(q, qd)`.

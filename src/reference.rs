@@ -26,9 +26,6 @@
 //! | [`forward_dynamics_crba`] | CRBA + RNEA bias + Cholesky solve | O(N^3) |
 //! | [`kinetic_energy`], [`potential_energy`] | direct sums over COM velocities / heights | O(N) |
 //! | [`tip_position`], [`joint_positions`], [`jacobian`] | forward kinematics; the Jacobian column of joint j is `perp(tip - joint_j)` | O(N) / O(N) / O(N) |
-//!
-//! [`ReferenceArm`] bundles the link parameters and gravity and exposes the same operations as
-//! methods.
 
 use nalgebra::{Matrix3, Point2, SMatrix, SVector, Vector2, Vector3};
 
@@ -439,133 +436,6 @@ pub fn jacobian<const N: usize>(links: &[Link; N], q: &SVector<f64, N>) -> SMatr
     jac
 }
 
-/// An arm's numeric parameters, with the reference functions of this module as methods.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ReferenceArm<const N: usize> {
-    /// The link parameters, base first.
-    pub links: [Link; N],
-    /// Magnitude of gravity along -y, m/s^2.
-    pub gravity: f64,
-}
-
-impl<const N: usize> ReferenceArm<N> {
-    /// An arm with the given links and gravity.
-    #[must_use]
-    pub const fn new(links: [Link; N], gravity: f64) -> Self {
-        Self { links, gravity }
-    }
-
-    /// See [`inverse_dynamics`].
-    #[inline]
-    #[must_use]
-    pub fn inverse_dynamics(
-        &self,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        qdd: &SVector<f64, N>,
-    ) -> SVector<f64, N> {
-        inverse_dynamics(&self.links, self.gravity, q, qd, qdd)
-    }
-
-    /// See [`mass_matrix`].
-    #[inline]
-    #[must_use]
-    pub fn mass_matrix(&self, q: &SVector<f64, N>) -> SMatrix<f64, N, N> {
-        mass_matrix(&self.links, q)
-    }
-
-    /// See [`bias_forces`].
-    #[inline]
-    #[must_use]
-    pub fn bias_forces(&self, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> SVector<f64, N> {
-        bias_forces(&self.links, self.gravity, q, qd)
-    }
-
-    /// See [`gravity_torques`].
-    #[inline]
-    #[must_use]
-    pub fn gravity_torques(&self, q: &SVector<f64, N>) -> SVector<f64, N> {
-        gravity_torques(&self.links, self.gravity, q)
-    }
-
-    /// See [`coriolis`].
-    #[inline]
-    #[must_use]
-    pub fn coriolis(&self, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> SVector<f64, N> {
-        coriolis(&self.links, q, qd)
-    }
-
-    /// See [`forward_dynamics`].
-    #[inline]
-    #[must_use]
-    pub fn forward_dynamics(
-        &self,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        tau: &SVector<f64, N>,
-    ) -> SVector<f64, N> {
-        forward_dynamics(&self.links, self.gravity, q, qd, tau)
-    }
-
-    /// See [`forward_dynamics_crba`].
-    ///
-    /// # Panics
-    ///
-    /// If the mass matrix is not positive definite.
-    #[inline]
-    #[must_use]
-    pub fn forward_dynamics_crba(
-        &self,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        tau: &SVector<f64, N>,
-    ) -> SVector<f64, N> {
-        forward_dynamics_crba(&self.links, self.gravity, q, qd, tau)
-    }
-
-    /// See [`kinetic_energy`].
-    #[inline]
-    #[must_use]
-    pub fn kinetic_energy(&self, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> f64 {
-        kinetic_energy(&self.links, q, qd)
-    }
-
-    /// See [`potential_energy`].
-    #[inline]
-    #[must_use]
-    pub fn potential_energy(&self, q: &SVector<f64, N>) -> f64 {
-        potential_energy(&self.links, self.gravity, q)
-    }
-
-    /// See [`tip_position`].
-    #[inline]
-    #[must_use]
-    pub fn tip_position(&self, q: &SVector<f64, N>) -> Point2<f64> {
-        tip_position(&self.links, q)
-    }
-
-    /// See [`tip_angle`].
-    #[inline]
-    #[must_use]
-    pub fn tip_angle(&self, q: &SVector<f64, N>) -> f64 {
-        tip_angle(q)
-    }
-
-    /// See [`joint_positions`].
-    #[inline]
-    #[must_use]
-    pub fn joint_positions(&self, q: &SVector<f64, N>) -> [Point2<f64>; N] {
-        joint_positions(&self.links, q)
-    }
-
-    /// See [`jacobian`].
-    #[inline]
-    #[must_use]
-    pub fn jacobian(&self, q: &SVector<f64, N>) -> SMatrix<f64, 3, N> {
-        jacobian(&self.links, q)
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -885,47 +755,5 @@ mod tests {
         );
         let v = potential_energy(&[link], 9.81, &SVector::from([std::f64::consts::FRAC_PI_2]));
         assert_close_f(v, 9.81 * 3.0 * 1.0, 1e-15, "rod V");
-    }
-
-    #[test]
-    fn reference_arm_methods_delegate() {
-        let mut rng = Rng(4);
-        let arm = ReferenceArm::new(rng.links::<3>(), 9.81);
-        let q = rng.vector::<3>(3.0);
-        let qd = rng.vector::<3>(3.0);
-        let tau = rng.vector::<3>(10.0);
-        let qdd = arm.forward_dynamics(&q, &qd, &tau);
-        assert_close(
-            &arm.inverse_dynamics(&q, &qd, &qdd),
-            &tau,
-            1e-12,
-            "arm round trip",
-        );
-        assert_close(
-            &arm.forward_dynamics_crba(&q, &qd, &tau),
-            &qdd,
-            1e-10,
-            "arm CRBA",
-        );
-        assert_close(
-            &arm.bias_forces(&q, &qd),
-            &(arm.coriolis(&q, &qd) + arm.gravity_torques(&q)),
-            1e-12,
-            "arm bias",
-        );
-        assert_close_f(
-            arm.kinetic_energy(&q, &qd),
-            0.5 * qd.dot(&(arm.mass_matrix(&q) * qd)),
-            1e-12,
-            "arm T",
-        );
-        assert_eq!(arm.jacobian(&q), jacobian(&arm.links, &q));
-        assert_eq!(arm.tip_position(&q), tip_position(&arm.links, &q));
-        assert_eq!(arm.tip_angle(&q), tip_angle(&q));
-        assert_eq!(arm.joint_positions(&q), joint_positions(&arm.links, &q));
-        assert_eq!(
-            arm.potential_energy(&q),
-            potential_energy(&arm.links, 9.81, &q)
-        );
     }
 }

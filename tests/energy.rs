@@ -39,16 +39,17 @@ fn energy<A: PlanarArm<N>, const N: usize>(
     arm.kinetic_energy(q, qd) + arm.potential_energy(q)
 }
 
-/// Largest |E(t) - E(0)| over `seconds` of free motion with step `dt`.
-fn drift<A: PlanarArm<N>, const N: usize>(
+/// Largest |E(t) - E(0)| over `seconds` of free motion with step `dt`, integrating
+/// `qdd = accel(q, qd)` by classical RK4.
+fn drift_with<A: PlanarArm<N>, const N: usize>(
     arm: &A,
+    accel: impl Fn(&SVector<f64, N>, &SVector<f64, N>) -> SVector<f64, N>,
     q0: SVector<f64, N>,
     dt: f64,
     seconds: f64,
-) -> (f64, f64) {
-    let zero = SVector::<f64, N>::zeros();
-    let f = |q: &SVector<f64, N>, qd: &SVector<f64, N>| (*qd, arm.forward_dynamics(q, qd, &zero));
-    let (mut q, mut qd) = (q0, zero);
+) -> f64 {
+    let f = |q: &SVector<f64, N>, qd: &SVector<f64, N>| (*qd, accel(q, qd));
+    let (mut q, mut qd) = (q0, SVector::<f64, N>::zeros());
     let e0 = energy(arm, &q, &qd);
     let mut worst: f64 = 0.0;
     #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
@@ -62,7 +63,24 @@ fn drift<A: PlanarArm<N>, const N: usize>(
         qd += (k1v + k2v * 2.0 + k3v * 2.0 + k4v) * (dt / 6.0);
         worst = worst.max((energy(arm, &q, &qd) - e0).abs());
     }
-    // The energy scale: the largest potential-energy swing available.
+    worst
+}
+
+/// The drift of the free arm, and the energy scale: the largest potential-energy swing.
+fn drift<A: PlanarArm<N>, const N: usize>(
+    arm: &A,
+    q0: SVector<f64, N>,
+    dt: f64,
+    seconds: f64,
+) -> (f64, f64) {
+    let zero = SVector::<f64, N>::zeros();
+    let worst = drift_with(
+        arm,
+        |q, qd| arm.forward_dynamics(q, qd, &zero),
+        q0,
+        dt,
+        seconds,
+    );
     let scale: f64 = A::LINKS.iter().map(|l| l.mass * l.length).sum::<f64>() * A::GRAVITY;
     (worst, scale)
 }
@@ -106,24 +124,16 @@ fn a_wrong_coriolis_term_is_caught() {
     // The check above can fail: integrate with the velocity-product torques halved and the
     // energy drifts at first order.
     let arm = Paper3::default();
-    let zero = SVector::<f64, 3>::zeros();
-    let (mut q, mut qd) = (SVector::<f64, 3>::new(0.3, 0.5, -0.4), zero);
-    let e0 = energy(&arm, &q, &qd);
-    let dt = 1e-3;
-    let f = |q: &SVector<f64, 3>, qd: &SVector<f64, 3>| {
-        let wrong = arm.coriolis(q, qd) * 0.5;
-        (*qd, arm.forward_dynamics(q, qd, &wrong))
+    let wrong = |q: &SVector<f64, 3>, qd: &SVector<f64, 3>| {
+        arm.forward_dynamics(q, qd, &(arm.coriolis(q, qd) * 0.5))
     };
-    let mut worst: f64 = 0.0;
-    for _ in 0..2000 {
-        let (k1q, k1v) = f(&q, &qd);
-        let (k2q, k2v) = f(&(q + k1q * (dt / 2.0)), &(qd + k1v * (dt / 2.0)));
-        let (k3q, k3v) = f(&(q + k2q * (dt / 2.0)), &(qd + k2v * (dt / 2.0)));
-        let (k4q, k4v) = f(&(q + k3q * dt), &(qd + k3v * dt));
-        q += (k1q + k2q * 2.0 + k3q * 2.0 + k4q) * (dt / 6.0);
-        qd += (k1v + k2v * 2.0 + k3v * 2.0 + k4v) * (dt / 6.0);
-        worst = worst.max((energy(&arm, &q, &qd) - e0).abs());
-    }
+    let worst = drift_with(
+        &arm,
+        wrong,
+        SVector::<f64, 3>::new(0.3, 0.5, -0.4),
+        1e-3,
+        2.0,
+    );
     assert!(
         worst / (3.0 * 9.81) > 1e-3,
         "a wrong model should drift, drift = {worst}"
