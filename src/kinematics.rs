@@ -146,23 +146,15 @@ fn target_coordinates(target: &Point2<f64>) -> Result<(f64, f64), ArmError> {
 /// `Ok` when `radius` lies in `inner ..= outer` up to `REACH_TOLERANCE * outer`.
 #[inline]
 fn annulus_check(radius: f64, inner: f64, outer: f64) -> Result<(), ArmError> {
-    let slack = REACH_TOLERANCE * outer;
-    let beyond = radius - outer;
-    if beyond > slack {
+    // How far outside the annulus, beyond the outer circle or inside the hole (at most one
+    // of the two is positive).
+    let distance = (radius - outer).max(inner - radius);
+    if distance > REACH_TOLERANCE * outer {
         return Err(ArmError::Unreachable {
             radius,
             inner,
             outer,
-            distance: beyond,
-        });
-    }
-    let short = inner - radius;
-    if short > slack {
-        return Err(ArmError::Unreachable {
-            radius,
-            inner,
-            outer,
-            distance: short,
+            distance,
         });
     }
     Ok(())

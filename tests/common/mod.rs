@@ -157,19 +157,6 @@ pub fn check_state<A: PlanarArm<N>, const N: usize>(
     }
 }
 
-/// A deterministic pseudo-random state in [-range, range].
-pub fn state<const N: usize>(seed: u64, range: f64) -> SVector<f64, N> {
-    let mut s = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15).wrapping_add(1);
-    SVector::from_fn(|_, _| {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
-        #[allow(clippy::cast_precision_loss)]
-        let u = (s >> 11) as f64 / (1u64 << 53) as f64;
-        (2.0 * u - 1.0) * range
-    })
-}
-
 /// One test per arm: `name: Type, N;`, each over proptest-drawn states.
 #[macro_export]
 macro_rules! planar_arm_tests_check_arms {
