@@ -300,6 +300,18 @@ fn bench_arm<A: PlanarArm<N> + Default, const N: usize>(c: &mut Criterion, set: 
             )
         });
     });
+    // The same recursion with the generated code's trigonometry: what the arithmetic gains.
+    group.bench_function("reference/rnea_batched_trig", |b| {
+        b.iter(|| {
+            reference::inverse_dynamics_batched_trig(
+                black_box(&links),
+                black_box(g),
+                black_box(&q),
+                black_box(&qd),
+                black_box(&qdd),
+            )
+        });
+    });
     group.bench_function("reference/crba", |b| {
         b.iter(|| reference::mass_matrix(black_box(&links), black_box(&q)));
     });
@@ -321,6 +333,10 @@ fn bench_arm<A: PlanarArm<N> + Default, const N: usize>(c: &mut Criterion, set: 
             let out: [(f64, f64); N] = core::array::from_fn(|j| q[j].sin_cos());
             out
         });
+    });
+    // The same N pairs from the kernel the generated code calls, all angles in one call.
+    group.bench_function("floor/trig_kernel", |b| {
+        b.iter(|| planar_arm::trig::sin_cos(black_box(&q).data.0[0]));
     });
     #[cfg(feature = "bench-dynibo")]
     {

@@ -1,6 +1,7 @@
 //! Items that generated code names. Not public API: no stability promise.
 #![allow(missing_docs)]
 
+pub use crate::trig::sin_cos;
 pub use ::core;
 pub use ::nalgebra;
 

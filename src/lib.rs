@@ -129,6 +129,7 @@ pub mod exact;
 pub mod kinematics;
 mod link;
 pub mod reference;
+pub mod trig;
 
 #[doc(hidden)]
 pub mod __private;

@@ -154,6 +154,28 @@ pub fn inverse_dynamics<const N: usize>(
     rnea_dirs(links, gravity, &link_directions(q), qd, qdd)
 }
 
+/// [`inverse_dynamics`] with the absolute link angles' sines and cosines from
+/// [`trig::sin_cos`](crate::trig::sin_cos), all in one call, instead of one `f64::sin_cos` per
+/// link: the same recursion with the generated code's trigonometry, so that the benchmarks can
+/// tell what the generated code gains from its trigonometry and what from its arithmetic.
+#[inline]
+#[must_use]
+pub fn inverse_dynamics_batched_trig<const N: usize>(
+    links: &[Link; N],
+    gravity: f64,
+    q: &SVector<f64, N>,
+    qd: &SVector<f64, N>,
+    qdd: &SVector<f64, N>,
+) -> SVector<f64, N> {
+    let mut phi = 0.0;
+    let angles: [f64; N] = core::array::from_fn(|i| {
+        phi += q[i];
+        phi
+    });
+    let dirs = crate::trig::sin_cos(angles).map(|(s, c)| Vector2::new(c, s));
+    rnea_dirs(links, gravity, &dirs, qd, qdd)
+}
+
 /// The joint-space mass matrix `M(q)` by the composite rigid body algorithm.
 ///
 /// O(N^2): one inward pass builds the composite mass, first moment and rotational inertia about

@@ -109,7 +109,14 @@ fn check<const N: usize>(spec: &ArmSpec, raw: &[f64]) -> Result<(), TestCaseErro
     let m_ref = reference::mass_matrix(&links, &st.q);
     let c_ref = reference::coriolis(&links, &st.q, &st.qd);
     let g_ref = reference::gravity_torques(&links, g, &st.q);
+    let tau_batched = reference::inverse_dynamics_batched_trig(&links, g, &st.q, &st.qd, &st.qdd);
     for i in 0..N {
+        prop_assert!(
+            close(tau_batched[i], tau_ref[i], scale),
+            "batched-trig RNEA tau[{i}]: {} vs {}",
+            tau_batched[i],
+            tau_ref[i]
+        );
         prop_assert!(
             close(tau[i], tau_ref[i], scale),
             "tau[{i}]: {} vs {}",

@@ -922,19 +922,25 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
         .collect();
 
     let mut statements = Vec::new();
-    for (&j, &(s, c)) in &joints {
-        let q = local(&input_name(Input::Q(j)));
-        let s = if s {
-            local(&format!("s{}", j + 1))
-        } else {
-            local("_")
-        };
-        let c = if c {
-            local(&format!("c{}", j + 1))
-        } else {
-            local("_")
-        };
-        statements.push(quote!(let (#s, #c) = #q.sin_cos();));
+    if !joints.is_empty() {
+        // One call for all the angles: the kernel evaluates them two at a time in SIMD lanes.
+        let mut angles = Vec::new();
+        let mut pairs = Vec::new();
+        for (&j, &(s, c)) in &joints {
+            angles.push(local(&input_name(Input::Q(j))));
+            let name = |used: bool, prefix: &str| {
+                if used {
+                    local(&format!("{prefix}{}", j + 1))
+                } else {
+                    local("_")
+                }
+            };
+            let (s, c) = (name(s, "s"), name(c, "c"));
+            pairs.push(quote!((#s, #c)));
+        }
+        statements.push(quote!(
+            let [#(#pairs),*] = ::planar_arm::__private::sin_cos([#(#angles),*]);
+        ));
     }
     let mut exprs: Vec<Option<(Prec, TokenStream)>> = vec![None; p.nodes().len()];
     let mut temp = 0usize;

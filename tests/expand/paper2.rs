@@ -137,7 +137,7 @@ Cost: 1 multiplications, 2 additions, 0 divisions, 1 sin_cos calls.*/
     ) -> ::planar_arm::nalgebra::SMatrix<f64, 2, 2> {
         let _ = (&self.upper, &self.fore);
         let [_, __q2] = ::planar_arm::__private::unpack(__q);
-        let (_, __c2) = __q2.sin_cos();
+        let [(_, __c2)] = ::planar_arm::__private::sin_cos([__q2]);
         let __m11 = (5.0 / 3.0) + __c2;
         let __m12 = (1.0 / 3.0) + (1.0 / 2.0) * __c2;
         let __m22 = (1.0 / 3.0);
@@ -160,7 +160,7 @@ Cost: 7 multiplications, 2 additions, 0 divisions, 1 sin_cos calls.*/
     ) -> ::planar_arm::nalgebra::SVector<f64, 2> {
         let [_, __q2] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
-        let (__s2, _) = __q2.sin_cos();
+        let [(__s2, _)] = ::planar_arm::__private::sin_cos([__q2]);
         let __t1 = (1.0 / 2.0) * __s2;
         let __cor1 = -(__s2 * __qd1 * __qd2) - __t1 * __qd2 * __qd2;
         let __cor2 = __t1 * __qd1 * __qd1;
@@ -185,7 +185,7 @@ Cost: 3 multiplications, 3 additions, 0 divisions, 1 sin_cos calls.*/
     ) -> ::planar_arm::nalgebra::SMatrix<f64, 2, 2> {
         let [_, __q2] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
-        let (__s2, _) = __q2.sin_cos();
+        let [(__s2, _)] = ::planar_arm::__private::sin_cos([__q2]);
         let __t1 = (1.0 / 2.0) * __s2;
         let __t2 = __t1 * __qd2;
         let __cm11 = -__t2;
@@ -209,8 +209,10 @@ Cost: 4 multiplications, 2 additions, 0 divisions, 2 sin_cos calls.*/
         __q: &::planar_arm::nalgebra::SVector<f64, 2>,
     ) -> ::planar_arm::nalgebra::SVector<f64, 2> {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
-        let (__s1, __c1) = __q1.sin_cos();
-        let (__s2, __c2) = __q2.sin_cos();
+        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+        ]);
         let __c12 = __c1 * __c2 - __s1 * __s2;
         let __g2 = (981.0 / 200.0) * __c12;
         let __g1 = (2943.0 / 200.0) * __c1 + __g2;
@@ -235,8 +237,10 @@ Cost: 16 multiplications, 11 additions, 0 divisions, 2 sin_cos calls.*/
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
         let [__qdd1, __qdd2] = ::planar_arm::__private::unpack(__qdd);
-        let (__s1, __c1) = __q1.sin_cos();
-        let (__s2, __c2) = __q2.sin_cos();
+        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+        ]);
         let __c12 = __c1 * __c2 - __s1 * __s2;
         let __t1 = (981.0 / 200.0) * __c12;
         let __t2 = (1.0 / 3.0) + (1.0 / 2.0) * __c2;
@@ -260,8 +264,10 @@ Cost: 18 multiplications, 13 additions, 2 divisions, 2 sin_cos calls.*/
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
         let [__tau1, __tau2] = ::planar_arm::__private::unpack(__tau);
-        let (__s1, __c1) = __q1.sin_cos();
-        let (__s2, __c2) = __q2.sin_cos();
+        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+        ]);
         let __t1 = (1.0 / 3.0) + (1.0 / 2.0) * __c2;
         let __t2 = (1.0 / 2.0) * __s2;
         let __c12 = __c2 * __c1 - __s2 * __s1;
@@ -290,7 +296,7 @@ Cost: 7 multiplications, 4 additions, 0 divisions, 1 sin_cos calls.*/
     ) -> f64 {
         let [_, __q2] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
-        let (_, __c2) = __q2.sin_cos();
+        let [(_, __c2)] = ::planar_arm::__private::sin_cos([__q2]);
         let __t1 = (1.0 / 2.0) * __c2;
         let __kinetic = (1.0 / 6.0) * __qd2 * __qd2
             + ((5.0 / 6.0) + __t1) * __qd1 * __qd1
@@ -308,8 +314,10 @@ Cost: 4 multiplications, 2 additions, 0 divisions, 2 sin_cos calls.*/
     #[inline]
     fn potential_energy(&self, __q: &::planar_arm::nalgebra::SVector<f64, 2>) -> f64 {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
-        let (__s1, __c1) = __q1.sin_cos();
-        let (__s2, __c2) = __q2.sin_cos();
+        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+        ]);
         let __s12 = __s1 * __c2 + __c1 * __s2;
         let __potential = (2943.0 / 200.0) * __s1 + (981.0 / 200.0) * __s12;
         __potential
@@ -329,8 +337,10 @@ Cost: 4 multiplications, 4 additions, 0 divisions, 2 sin_cos calls.*/
         __q: &::planar_arm::nalgebra::SVector<f64, 2>,
     ) -> ::planar_arm::nalgebra::Isometry2<f64> {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
-        let (__s1, __c1) = __q1.sin_cos();
-        let (__s2, __c2) = __q2.sin_cos();
+        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+        ]);
         let __cos_phi = __c1 * __c2 - __s1 * __s2;
         let __sin_phi = __s1 * __c2 + __c1 * __s2;
         let __x = __c1 + __cos_phi;
@@ -356,8 +366,10 @@ Cost: 4 multiplications, 6 additions, 0 divisions, 2 sin_cos calls.*/
         __q: &::planar_arm::nalgebra::SVector<f64, 2>,
     ) -> ::planar_arm::nalgebra::SMatrix<f64, 3, 2> {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
-        let (__s1, __c1) = __q1.sin_cos();
-        let (__s2, __c2) = __q2.sin_cos();
+        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+        ]);
         let __j22 = __c1 * __c2 - __s1 * __s2;
         let __s12 = __s1 * __c2 + __c1 * __s2;
         let __j11 = -__s1 - __s12;
@@ -375,7 +387,7 @@ Cost: 0 multiplications, 0 additions, 0 divisions, 1 sin_cos calls.*/
         __q: &::planar_arm::nalgebra::SVector<f64, 2>,
     ) -> [::planar_arm::nalgebra::Point2<f64>; 2] {
         let [__q1, _] = ::planar_arm::__private::unpack(__q);
-        let (__s1, __c1) = __q1.sin_cos();
+        let [(__s1, __c1)] = ::planar_arm::__private::sin_cos([__q1]);
         let __x1 = 0.0;
         [
             ::planar_arm::nalgebra::Point2::new(__x1, __x1),
@@ -393,8 +405,10 @@ Cost: 5 multiplications, 5 additions, 0 divisions, 2 sin_cos calls.*/
     #[inline]
     fn tip_polar(&self, __q: &::planar_arm::nalgebra::SVector<f64, 2>) -> (f64, f64) {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
-        let (__s1, __c1) = __q1.sin_cos();
-        let (__s2, __c2) = __q2.sin_cos();
+        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+        ]);
         let __r2 = 2.0 + 2.0 * __c2;
         let __c12 = __c2 * __c1 - __s2 * __s1;
         let __s12 = __c2 * __s1 + __s2 * __c1;
@@ -414,8 +428,10 @@ Cost: 8 multiplications, 10 additions, 0 divisions, 2 sin_cos calls.*/
     ) -> ::planar_arm::nalgebra::SVector<f64, 2> {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
         let [__u, __v] = ::planar_arm::__private::unpack(__force);
-        let (__s1, __c1) = __q1.sin_cos();
-        let (__s2, __c2) = __q2.sin_cos();
+        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+        ]);
         let __c12 = __c1 * __c2 - __s1 * __s2;
         let __s12 = __s1 * __c2 + __c1 * __s2;
         let __tau1 = __torque + __u * (-__s1 - __s12) + __v * (__c1 + __c12);

@@ -418,8 +418,10 @@ Cost: 6 multiplications, 11 additions, 0 divisions, 2 sin_cos calls.*/
     ) -> ::planar_arm::nalgebra::SMatrix<f64, 3, 3> {
         let _ = (&self.upper, &self.fore, &self.hand);
         let [_, __q2, __q3] = ::planar_arm::__private::unpack(__q);
-        let (__s2, __c2) = __q2.sin_cos();
-        let (__s3, __c3) = __q3.sin_cos();
+        let [(__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q2,
+            __q3,
+        ]);
         let __c23 = __c2 * __c3 - __s2 * __s3;
         let __m11 = 4.0 + 3.0 * __c2 + __c3 + __c23;
         let __t1 = (1.0 / 2.0) * __c23;
@@ -455,8 +457,10 @@ Cost: 19 multiplications, 17 additions, 0 divisions, 2 sin_cos calls.*/
     ) -> ::planar_arm::nalgebra::SVector<f64, 3> {
         let [_, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
-        let (__s2, __c2) = __q2.sin_cos();
-        let (__s3, __c3) = __q3.sin_cos();
+        let [(__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q2,
+            __q3,
+        ]);
         let __ex1 = -(__qd1 * __qd1);
         let __ax2 = __ex1 * __c2;
         let __t1 = __ex1 * __s2;
@@ -501,8 +505,10 @@ Cost: 15 multiplications, 19 additions, 0 divisions, 2 sin_cos calls.*/
     ) -> ::planar_arm::nalgebra::SMatrix<f64, 3, 3> {
         let [_, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
-        let (__s2, __c2) = __q2.sin_cos();
-        let (__s3, __c3) = __q3.sin_cos();
+        let [(__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q2,
+            __q3,
+        ]);
         let __t1 = (3.0 / 2.0) * __s2;
         let __s23 = __s2 * __c3 + __c2 * __s3;
         let __t2 = (1.0 / 2.0) * __s23;
@@ -545,9 +551,11 @@ Cost: 9 multiplications, 6 additions, 0 divisions, 3 sin_cos calls.*/
         __q: &::planar_arm::nalgebra::SVector<f64, 3>,
     ) -> ::planar_arm::nalgebra::SVector<f64, 3> {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
-        let (__s1, __c1) = __q1.sin_cos();
-        let (__s2, __c2) = __q2.sin_cos();
-        let (__s3, __c3) = __q3.sin_cos();
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+        ]);
         let __c12 = __c1 * __c2 - __s1 * __s2;
         let __s12 = __s1 * __c2 + __c1 * __s2;
         let __t1 = (2943.0 / 200.0) * __c12;
@@ -579,9 +587,11 @@ Cost: 29 multiplications, 28 additions, 0 divisions, 3 sin_cos calls.*/
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
         let [__qdd1, __qdd2, __qdd3] = ::planar_arm::__private::unpack(__qdd);
-        let (__s1, __c1) = __q1.sin_cos();
-        let (__s2, __c2) = __q2.sin_cos();
-        let (__s3, __c3) = __q3.sin_cos();
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+        ]);
         let __ax1 = (981.0 / 100.0) * __s1;
         let __ay1 = (981.0 / 100.0) * __c1;
         let __ex1 = __ax1 - __qd1 * __qd1;
@@ -623,9 +633,11 @@ Cost: 50 multiplications, 53 additions, 3 divisions, 3 sin_cos calls.*/
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
         let [__tau1, __tau2, __tau3] = ::planar_arm::__private::unpack(__tau);
-        let (__s1, __c1) = __q1.sin_cos();
-        let (__s2, __c2) = __q2.sin_cos();
-        let (__s3, __c3) = __q3.sin_cos();
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+        ]);
         let __c23 = __c2 * __c3 - __s2 * __s3;
         let __t1 = (1.0 / 2.0) * __c23;
         let __t2 = (5.0 / 3.0) + (3.0 / 2.0) * __c2 + __c3 + __t1;
@@ -689,8 +701,10 @@ Cost: 17 multiplications, 16 additions, 0 divisions, 2 sin_cos calls.*/
     ) -> f64 {
         let [_, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
-        let (__s2, __c2) = __q2.sin_cos();
-        let (__s3, __c3) = __q3.sin_cos();
+        let [(__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q2,
+            __q3,
+        ]);
         let __t1 = (3.0 / 2.0) * __c2;
         let __c23 = __c2 * __c3 - __s2 * __s3;
         let __t2 = (1.0 / 2.0) * __c23;
@@ -713,9 +727,11 @@ Cost: 9 multiplications, 5 additions, 0 divisions, 3 sin_cos calls.*/
     #[inline]
     fn potential_energy(&self, __q: &::planar_arm::nalgebra::SVector<f64, 3>) -> f64 {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
-        let (__s1, __c1) = __q1.sin_cos();
-        let (__s2, __c2) = __q2.sin_cos();
-        let (__s3, __c3) = __q3.sin_cos();
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+        ]);
         let __c12 = __c1 * __c2 - __s1 * __s2;
         let __s12 = __s1 * __c2 + __c1 * __s2;
         let __s123 = __s12 * __c3 + __c12 * __s3;
@@ -738,9 +754,11 @@ Cost: 8 multiplications, 8 additions, 0 divisions, 3 sin_cos calls.*/
         __q: &::planar_arm::nalgebra::SVector<f64, 3>,
     ) -> ::planar_arm::nalgebra::Isometry2<f64> {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
-        let (__s1, __c1) = __q1.sin_cos();
-        let (__s2, __c2) = __q2.sin_cos();
-        let (__s3, __c3) = __q3.sin_cos();
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+        ]);
         let __c12 = __c1 * __c2 - __s1 * __s2;
         let __s12 = __s1 * __c2 + __c1 * __s2;
         let __cos_phi = __c12 * __c3 - __s12 * __s3;
@@ -771,9 +789,11 @@ Cost: 8 multiplications, 13 additions, 0 divisions, 3 sin_cos calls.*/
         __q: &::planar_arm::nalgebra::SVector<f64, 3>,
     ) -> ::planar_arm::nalgebra::SMatrix<f64, 3, 3> {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
-        let (__s1, __c1) = __q1.sin_cos();
-        let (__s2, __c2) = __q2.sin_cos();
-        let (__s3, __c3) = __q3.sin_cos();
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+        ]);
         let __c12 = __c1 * __c2 - __s1 * __s2;
         let __s12 = __s1 * __c2 + __c1 * __s2;
         let __j23 = __c12 * __c3 - __s12 * __s3;
@@ -799,8 +819,10 @@ Cost: 4 multiplications, 4 additions, 0 divisions, 2 sin_cos calls.*/
         __q: &::planar_arm::nalgebra::SVector<f64, 3>,
     ) -> [::planar_arm::nalgebra::Point2<f64>; 3] {
         let [__q1, __q2, _] = ::planar_arm::__private::unpack(__q);
-        let (__s1, __c1) = __q1.sin_cos();
-        let (__s2, __c2) = __q2.sin_cos();
+        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+        ]);
         let __c12 = __c1 * __c2 - __s1 * __s2;
         let __s12 = __s1 * __c2 + __c1 * __s2;
         let __x3 = __c1 + __c12;
@@ -823,9 +845,11 @@ Cost: 13 multiplications, 12 additions, 0 divisions, 3 sin_cos calls.*/
     #[inline]
     fn tip_polar(&self, __q: &::planar_arm::nalgebra::SVector<f64, 3>) -> (f64, f64) {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
-        let (__s1, __c1) = __q1.sin_cos();
-        let (__s2, __c2) = __q2.sin_cos();
-        let (__s3, __c3) = __q3.sin_cos();
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+        ]);
         let __c23 = __c2 * __c3 - __s2 * __s3;
         let __r2 = 3.0 + 2.0 * __c2 + 2.0 * __c23 + 2.0 * __c3;
         let __c12 = __c2 * __c1 - __s2 * __s1;
@@ -848,9 +872,11 @@ Cost: 14 multiplications, 19 additions, 0 divisions, 3 sin_cos calls.*/
     ) -> ::planar_arm::nalgebra::SVector<f64, 3> {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [__u, __v] = ::planar_arm::__private::unpack(__force);
-        let (__s1, __c1) = __q1.sin_cos();
-        let (__s2, __c2) = __q2.sin_cos();
-        let (__s3, __c3) = __q3.sin_cos();
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+        ]);
         let __c12 = __c1 * __c2 - __s1 * __s2;
         let __s12 = __s1 * __c2 + __c1 * __s2;
         let __c123 = __c12 * __c3 - __s12 * __s3;
