@@ -66,33 +66,46 @@ def main():
     def get(g, f):
         return t.get((g, f))
 
-    print("Times in ns per call (criterion median); ratios = other / generated.\n")
-    print("| arm | N | floor: N sin_cos | gen ID | ID / floor | RNEA | RNEA / gen | dynibo ID | dynibo / gen |"
-          " gen M | CRBA | CRBA / gen | dynibo M | dynibo / gen | gen c+g |"
-          " gen FD | ABA | ABA / gen | dynibo FD | dynibo / gen |")
-    print("|" + "---|" * 20)
+    print("Times in ns per call (criterion median); ratios = other / generated, except"
+          " ID / floor = generated / floor.\n")
+    print("Inverse dynamics:\n")
+    print("| arm | N | floor: N f64::sin_cos | floor: trig::sin_cos | gen ID | ID / floor (sin_cos) |"
+          " ID / floor (trig) | RNEA | RNEA / gen | RNEA, batched trig | RNEA bt / gen |"
+          " dynibo ID | dynibo / gen |")
+    print("|" + "---|" * 13)
     for g in groups(t):
         s, _, n = g.partition("/N")
         floor = get(g, "floor/sin_cos")
+        kfloor = get(g, "floor/trig_kernel")
         gid = get(g, "generated/inverse_dynamics")
+        rnea = get(g, "reference/rnea")
+        rbt = get(g, "reference/rnea_batched_trig")
+        did = get(g, "dynibo/inverse_dynamics")
+        row = [s, n, fmt(floor), fmt(kfloor), fmt(gid), ratio(gid, floor), ratio(gid, kfloor),
+               fmt(rnea), ratio(rnea, gid), fmt(rbt), ratio(rbt, gid), fmt(did), ratio(did, gid)]
+        print("| " + " | ".join(row) + " |")
+
+    print("\nMass matrix, bias and forward dynamics:\n")
+    print("| arm | N | gen M | CRBA | CRBA / gen | dynibo M | dynibo / gen | gen c+g |"
+          " gen FD | ABA | ABA / gen | dynibo FD | dynibo / gen |")
+    print("|" + "---|" * 13)
+    for g in groups(t):
+        s, _, n = g.partition("/N")
         gm = get(g, "generated/mass_matrix")
         gfd = get(g, "generated/forward_dynamics")
-        rnea = get(g, "reference/rnea")
         crba = get(g, "reference/crba")
         aba = get(g, "reference/aba")
-        did = get(g, "dynibo/inverse_dynamics")
         dm = get(g, "dynibo/mass_matrix")
         dfd = get(g, "dynibo/forward_dynamics")
         cg = get(g, "generated/coriolis+gravity")
-        row = [s, n, fmt(floor), fmt(gid), ratio(gid, floor), fmt(rnea), ratio(rnea, gid),
-               fmt(did), ratio(did, gid), fmt(gm), fmt(crba), ratio(crba, gm), fmt(dm),
-               ratio(dm, gm), fmt(cg), fmt(gfd), fmt(aba), ratio(aba, gfd), fmt(dfd),
-               ratio(dfd, gfd)]
+        row = [s, n, fmt(gm), fmt(crba), ratio(crba, gm), fmt(dm), ratio(dm, gm), fmt(cg),
+               fmt(gfd), fmt(aba), ratio(aba, gfd), fmt(dfd), ratio(dfd, gfd)]
         print("| " + " | ".join(row) + " |")
 
     if args.compare:
         old = load(args.root, args.compare)
-        print(f"\nGenerated code, {args.compare} / {args.baseline} (speed-up of the generated code):\n")
+        print(f"\nGenerated code, {args.compare} / {args.baseline} (speed-up of the generated code;"
+              " two runs, so noisier than the ratios above):\n")
         print("| arm | N | ID before | ID after | speed-up | M before | M after | speed-up |"
               " c+g before | c+g after | speed-up | FD before | FD after | speed-up |")
         print("|" + "---|" * 14)

@@ -5,7 +5,8 @@
 //! energy symbolically with exact rational coefficients, applies Lagrange's equation, reads
 //! off the mass matrix M(q), the velocity-product (Coriolis and centrifugal) torques c(q, qd)
 //! and the gravity torques g(q), and emits code specialised to that arm: no loops, no
-//! allocation, no symbolic work at run time, one `sin_cos` per joint angle it needs. It also
+//! allocation, no symbolic work at run time, one sine-cosine pair per joint angle it needs
+//! (all of them from one call of [`trig::sin_cos`], two angles per SIMD register). It also
 //! generates the arm's tip pose, Jacobian, joint positions and statics, and for two and three
 //! links the paper's closed-form inverse kinematics and inverse statics.
 //!
@@ -116,7 +117,7 @@
 //!
 //! # Checked against
 //!
-//! [`reference`] is a numeric recursive Newton-Euler, composite-rigid-body and
+//! [`reference`](mod@reference) is a numeric recursive Newton-Euler, composite-rigid-body and
 //! articulated-body implementation written apart from the symbolic path; property tests
 //! compare every generated method with it for arms of 1 to 8 links with random rational
 //! parameters. Energy is conserved under integration, `Mdot - 2C` is skew-symmetric, and the

@@ -28,7 +28,7 @@
 //!
 //! The large table value is added last, so the result is rounded about once. No branch, and
 //! about 30 floating-point operations and two loads per angle, against the 50 or so of a
-//! table-free kernel on `|t| <= pi/4` (degree-13 polynomials), which measured 1.3-1.5x slower.
+//! table-free kernel on `|t| <= pi/4` (degree-13 polynomials), which measured 1.1-1.5x slower.
 //!
 //! # Accuracy and range
 //!

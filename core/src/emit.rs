@@ -1,7 +1,8 @@
 //! Emission: straight-line Rust for a derived arm.
 //!
-//! Each generated method is one [`Program`]: inputs are unpacked into named locals, each
-//! joint angle that is needed gets one `sin_cos` call, trig atoms of angle sums are `let`s
+//! Each generated method is one [`Program`]: inputs are unpacked into named locals, the joint
+//! angles that are needed go together to one call of `planar_arm::trig::sin_cos` (a sine and
+//! cosine for each, two angles per SIMD register), trig atoms of angle sums are `let`s
 //! named like the paper (`c23`), shared subexpressions are `let`s, and everything used once is
 //! inlined. Rational constants are written `10.0 / 3.0` so a reader recognises them (the
 //! compiler folds the division). All local identifiers carry `Span::mixed_site()`, so they can

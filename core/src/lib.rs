@@ -13,7 +13,7 @@
 //!   kinetic energy (translation plus rotation about the centre of mass), potential energy,
 //!   Lagrange's equation; M, c and g read off the torques; C from Christoffel symbols.
 //! - [`slp`]: hash-consed straight-line programs; trig atoms of angle sums by angle addition
-//!   from one `sin_cos` per joint; operation counts.
+//!   from one sine-cosine pair per joint; operation counts.
 //! - [`emit`] and [`generate`]: programs rendered as Rust, and the `impl PlanarArm<N>` the
 //!   derive emits.
 //!

@@ -45,7 +45,7 @@ pub enum Node {
     Input(Input),
     /// An exact constant, emitted as `num / den` in `f64`.
     Const(Rational),
-    /// `sin q_j` (from the joint's single `sin_cos` call).
+    /// `sin q_j` (joint `j`'s one sine-cosine pair).
     Sin(usize),
     /// `cos q_j`.
     Cos(usize),
@@ -72,7 +72,8 @@ pub struct OpCount {
     pub add: usize,
     /// Divisions.
     pub div: usize,
-    /// `sin_cos` calls (one per joint angle used).
+    /// Sine-cosine pairs, one per joint angle used (the generated code evaluates them all in
+    /// one call of `planar_arm::trig::sin_cos`).
     pub sin_cos: usize,
 }
 
@@ -80,7 +81,7 @@ impl std::fmt::Display for OpCount {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(
             f,
-            "{} multiplications, {} additions, {} divisions, {} sin_cos calls",
+            "{} multiplications, {} additions, {} divisions, {} sin_cos pairs",
             self.mul, self.add, self.div, self.sin_cos
         )
     }

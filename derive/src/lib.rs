@@ -1,7 +1,7 @@
 //! `#[derive(PlanarArm)]`: the thin procedural-macro front of `planar_arm`.
 //!
-//! Three steps, as in thiserror: [`ast`] parses the struct and its `#[arm(...)]` attributes
-//! (collecting every error with its span), [`check`] validates the physics, and [`expand`]
+//! Three steps, as in thiserror: `ast` parses the struct and its `#[arm(...)]` attributes
+//! (collecting every error with its span), `check` validates the physics, and `expand`
 //! hands a valid arm to the symbolic engine in `planar_arm_core`. After any error a stub impl
 //! is emitted so the user sees the real error and not a cascade. Use it through the
 //! `planar_arm` crate, which documents the attribute syntax.

@@ -129,7 +129,7 @@ M22 = 1/3
 ```
 
 
-Cost: 1 multiplications, 2 additions, 0 divisions, 1 sin_cos calls.*/
+Cost: 1 multiplications, 2 additions, 0 divisions, 1 sin_cos pairs.*/
     #[inline]
     fn mass_matrix(
         &self,
@@ -151,7 +151,7 @@ c2 = 1/2 s2 qd1^2
 ```
 
 
-Cost: 7 multiplications, 2 additions, 0 divisions, 1 sin_cos calls.*/
+Cost: 7 multiplications, 2 additions, 0 divisions, 1 sin_cos pairs.*/
     #[inline]
     fn coriolis(
         &self,
@@ -176,7 +176,7 @@ C22 = 0
 ```
 
 
-Cost: 3 multiplications, 3 additions, 0 divisions, 1 sin_cos calls.*/
+Cost: 3 multiplications, 3 additions, 0 divisions, 1 sin_cos pairs.*/
     #[inline]
     fn coriolis_matrix(
         &self,
@@ -202,7 +202,7 @@ g2 = 981/200 c12
 ```
 
 
-Cost: 4 multiplications, 2 additions, 0 divisions, 2 sin_cos calls.*/
+Cost: 4 multiplications, 2 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
     fn gravity(
         &self,
@@ -226,7 +226,7 @@ tau2 = 981/200 c12 + (1/3 + 1/2 c2) qdd1 + 1/3 qdd2 + 1/2 s2 qd1^2
 ```
 
 
-Cost: 16 multiplications, 11 additions, 0 divisions, 2 sin_cos calls.*/
+Cost: 16 multiplications, 11 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
     fn inverse_dynamics(
         &self,
@@ -253,7 +253,7 @@ Cost: 16 multiplications, 11 additions, 0 divisions, 2 sin_cos calls.*/
     }
     /**qdd = M^-1 (tau - c - g) in closed form (Cramer's rule, det = M11 M22 - M12^2 > 0).
 
-Cost: 18 multiplications, 13 additions, 2 divisions, 2 sin_cos calls.*/
+Cost: 18 multiplications, 13 additions, 2 divisions, 2 sin_cos pairs.*/
     #[inline]
     fn forward_dynamics(
         &self,
@@ -287,7 +287,7 @@ T = (5/6 + 1/2 c2) qd1^2 + (1/3 + 1/2 c2) qd1 qd2 + 1/6 qd2^2
 ```
 
 
-Cost: 7 multiplications, 4 additions, 0 divisions, 1 sin_cos calls.*/
+Cost: 7 multiplications, 4 additions, 0 divisions, 1 sin_cos pairs.*/
     #[inline]
     fn kinetic_energy(
         &self,
@@ -310,7 +310,7 @@ V = 2943/200 s1 + 981/200 s12
 ```
 
 
-Cost: 4 multiplications, 2 additions, 0 divisions, 2 sin_cos calls.*/
+Cost: 4 multiplications, 2 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
     fn potential_energy(&self, __q: &::planar_arm::nalgebra::SVector<f64, 2>) -> f64 {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
@@ -330,7 +330,7 @@ y = s1 + s12
 ```
 
 
-Cost: 4 multiplications, 4 additions, 0 divisions, 2 sin_cos calls.*/
+Cost: 4 multiplications, 4 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
     fn tip_pose(
         &self,
@@ -359,7 +359,7 @@ J32 = 1
 ```
 
 
-Cost: 4 multiplications, 6 additions, 0 divisions, 2 sin_cos calls.*/
+Cost: 4 multiplications, 6 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
     fn jacobian(
         &self,
@@ -380,7 +380,7 @@ Cost: 4 multiplications, 6 additions, 0 divisions, 2 sin_cos calls.*/
     }
     /**The position of each joint, joint 1 at the origin.
 
-Cost: 0 multiplications, 0 additions, 0 divisions, 1 sin_cos calls.*/
+Cost: 0 multiplications, 0 additions, 0 divisions, 1 sin_cos pairs.*/
     #[inline]
     fn joint_positions(
         &self,
@@ -401,7 +401,7 @@ r^2 = 2 + 2 c2
 ```
 
 
-Cost: 5 multiplications, 5 additions, 0 divisions, 2 sin_cos calls.*/
+Cost: 5 multiplications, 5 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
     fn tip_polar(&self, __q: &::planar_arm::nalgebra::SVector<f64, 2>) -> (f64, f64) {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
@@ -418,7 +418,7 @@ Cost: 5 multiplications, 5 additions, 0 divisions, 2 sin_cos calls.*/
     }
     /**Statics: tau = J^T (u, v, torque), the motor torques that make the tip exert force (u, v) and torque `torque`.
 
-Cost: 8 multiplications, 10 additions, 0 divisions, 2 sin_cos calls.*/
+Cost: 8 multiplications, 10 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
     fn joint_torques(
         &self,

@@ -410,7 +410,7 @@ M33 = 1/3
 ```
 
 
-Cost: 6 multiplications, 11 additions, 0 divisions, 2 sin_cos calls.*/
+Cost: 6 multiplications, 11 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
     fn mass_matrix(
         &self,
@@ -448,7 +448,7 @@ c3 = (1/2 s23 + 1/2 s3) qd1^2 + s3 qd1 qd2 + 1/2 s3 qd2^2
 
 Evaluated not term by term but by the planar recursive Newton-Euler algorithm unrolled for this arm (the same function, fewer operations): link-frame velocities and accelerations outwards, forces and moments inwards, one rotation by each joint's (cos, sin) per pass, the link constants folded in.
 
-Cost: 19 multiplications, 17 additions, 0 divisions, 2 sin_cos calls.*/
+Cost: 19 multiplications, 17 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
     fn coriolis(
         &self,
@@ -496,7 +496,7 @@ C33 = 0
 ```
 
 
-Cost: 15 multiplications, 19 additions, 0 divisions, 2 sin_cos calls.*/
+Cost: 15 multiplications, 19 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
     fn coriolis_matrix(
         &self,
@@ -544,7 +544,7 @@ g3 = 981/200 c123
 ```
 
 
-Cost: 9 multiplications, 6 additions, 0 divisions, 3 sin_cos calls.*/
+Cost: 9 multiplications, 6 additions, 0 divisions, 3 sin_cos pairs.*/
     #[inline]
     fn gravity(
         &self,
@@ -576,7 +576,7 @@ tau3 = 981/200 c123 + (1/3 + 1/2 c23 + 1/2 c3) qdd1 + (1/3 + 1/2 c3) qdd2 + 1/3 
 
 Evaluated not term by term but by the planar recursive Newton-Euler algorithm unrolled for this arm (the same function, fewer operations): link-frame velocities and accelerations outwards, forces and moments inwards, one rotation by each joint's (cos, sin) per pass, the link constants folded in.
 
-Cost: 29 multiplications, 28 additions, 0 divisions, 3 sin_cos calls.*/
+Cost: 29 multiplications, 28 additions, 0 divisions, 3 sin_cos pairs.*/
     #[inline]
     fn inverse_dynamics(
         &self,
@@ -622,7 +622,7 @@ Cost: 29 multiplications, 28 additions, 0 divisions, 3 sin_cos calls.*/
 
 M, c and g evaluated as `mass_matrix`, `coriolis` and `gravity` evaluate them: M from the formulas, c by the recursive Newton-Euler algorithm unrolled for this arm, g from the formulas.
 
-Cost: 50 multiplications, 53 additions, 3 divisions, 3 sin_cos calls.*/
+Cost: 50 multiplications, 53 additions, 3 divisions, 3 sin_cos pairs.*/
     #[inline]
     fn forward_dynamics(
         &self,
@@ -692,7 +692,7 @@ T = (2 + 3/2 c2 + 1/2 c23 + 1/2 c3) qd1^2 + (5/3 + 3/2 c2 + 1/2 c23 + c3) qd1 qd
 ```
 
 
-Cost: 17 multiplications, 16 additions, 0 divisions, 2 sin_cos calls.*/
+Cost: 17 multiplications, 16 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
     fn kinetic_energy(
         &self,
@@ -723,7 +723,7 @@ V = 981/40 s1 + 2943/200 s12 + 981/200 s123
 ```
 
 
-Cost: 9 multiplications, 5 additions, 0 divisions, 3 sin_cos calls.*/
+Cost: 9 multiplications, 5 additions, 0 divisions, 3 sin_cos pairs.*/
     #[inline]
     fn potential_energy(&self, __q: &::planar_arm::nalgebra::SVector<f64, 3>) -> f64 {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
@@ -747,7 +747,7 @@ y = s1 + s12 + s123
 ```
 
 
-Cost: 8 multiplications, 8 additions, 0 divisions, 3 sin_cos calls.*/
+Cost: 8 multiplications, 8 additions, 0 divisions, 3 sin_cos pairs.*/
     #[inline]
     fn tip_pose(
         &self,
@@ -782,7 +782,7 @@ J33 = 1
 ```
 
 
-Cost: 8 multiplications, 13 additions, 0 divisions, 3 sin_cos calls.*/
+Cost: 8 multiplications, 13 additions, 0 divisions, 3 sin_cos pairs.*/
     #[inline]
     fn jacobian(
         &self,
@@ -812,7 +812,7 @@ Cost: 8 multiplications, 13 additions, 0 divisions, 3 sin_cos calls.*/
     }
     /**The position of each joint, joint 1 at the origin.
 
-Cost: 4 multiplications, 4 additions, 0 divisions, 2 sin_cos calls.*/
+Cost: 4 multiplications, 4 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
     fn joint_positions(
         &self,
@@ -841,7 +841,7 @@ r^2 = 3 + 2 c2 + 2 c23 + 2 c3
 ```
 
 
-Cost: 13 multiplications, 12 additions, 0 divisions, 3 sin_cos calls.*/
+Cost: 13 multiplications, 12 additions, 0 divisions, 3 sin_cos pairs.*/
     #[inline]
     fn tip_polar(&self, __q: &::planar_arm::nalgebra::SVector<f64, 3>) -> (f64, f64) {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
@@ -862,7 +862,7 @@ Cost: 13 multiplications, 12 additions, 0 divisions, 3 sin_cos calls.*/
     }
     /**Statics: tau = J^T (u, v, torque), the motor torques that make the tip exert force (u, v) and torque `torque`.
 
-Cost: 14 multiplications, 19 additions, 0 divisions, 3 sin_cos calls.*/
+Cost: 14 multiplications, 19 additions, 0 divisions, 3 sin_cos pairs.*/
     #[inline]
     fn joint_torques(
         &self,
