@@ -68,56 +68,53 @@ def main():
 
     print("Times in ns per call (criterion median); ratios = other / generated, except"
           " ID / floor = generated / floor.\n")
-    print("Inverse dynamics:\n")
-    print("| arm | N | floor: N f64::sin_cos | floor: trig::sin_cos | gen ID | ID / floor (sin_cos) |"
-          " ID / floor (trig) | RNEA | RNEA / gen | RNEA, batched trig | RNEA bt / gen |"
-          " dynibo ID | dynibo / gen |")
-    print("|" + "---|" * 13)
-    for g in groups(t):
-        s, _, n = g.partition("/N")
-        floor = get(g, "floor/sin_cos")
-        kfloor = get(g, "floor/trig_kernel")
-        gid = get(g, "generated/inverse_dynamics")
-        rnea = get(g, "reference/rnea")
-        rbt = get(g, "reference/rnea_batched_trig")
-        did = get(g, "dynibo/inverse_dynamics")
-        row = [s, n, fmt(floor), fmt(kfloor), fmt(gid), ratio(gid, floor), ratio(gid, kfloor),
-               fmt(rnea), ratio(rnea, gid), fmt(rbt), ratio(rbt, gid), fmt(did), ratio(did, gid)]
-        print("| " + " | ".join(row) + " |")
+    def table(header, cells):
+        """One markdown row per arm: "arm | N" and then `cells(group)`."""
+        print("| arm | N | " + " | ".join(header) + " |")
+        print("|" + "---|" * (len(header) + 2))
+        for g in groups(t):
+            s, _, n = g.partition("/N")
+            print("| " + " | ".join([s, n] + cells(g)) + " |")
 
-    print("\nMass matrix, bias and forward dynamics:\n")
-    print("| arm | N | gen M | CRBA | CRBA / gen | dynibo M | dynibo / gen | gen c+g |"
-          " gen FD | ABA | ABA / gen | dynibo FD | dynibo / gen |")
-    print("|" + "---|" * 13)
-    for g in groups(t):
-        s, _, n = g.partition("/N")
-        gm = get(g, "generated/mass_matrix")
-        gfd = get(g, "generated/forward_dynamics")
-        crba = get(g, "reference/crba")
-        aba = get(g, "reference/aba")
-        dm = get(g, "dynibo/mass_matrix")
-        dfd = get(g, "dynibo/forward_dynamics")
+    def inverse_dynamics(g):
+        floor, kfloor = get(g, "floor/sin_cos"), get(g, "floor/trig_kernel")
+        gid = get(g, "generated/inverse_dynamics")
+        rnea, rbt = get(g, "reference/rnea"), get(g, "reference/rnea_batched_trig")
+        did = get(g, "dynibo/inverse_dynamics")
+        return [fmt(floor), fmt(kfloor), fmt(gid), ratio(gid, floor), ratio(gid, kfloor),
+                fmt(rnea), ratio(rnea, gid), fmt(rbt), ratio(rbt, gid), fmt(did), ratio(did, gid)]
+
+    def others(g):
+        gm, gfd = get(g, "generated/mass_matrix"), get(g, "generated/forward_dynamics")
+        crba, aba = get(g, "reference/crba"), get(g, "reference/aba")
+        dm, dfd = get(g, "dynibo/mass_matrix"), get(g, "dynibo/forward_dynamics")
         cg = get(g, "generated/coriolis+gravity")
-        row = [s, n, fmt(gm), fmt(crba), ratio(crba, gm), fmt(dm), ratio(dm, gm), fmt(cg),
-               fmt(gfd), fmt(aba), ratio(aba, gfd), fmt(dfd), ratio(dfd, gfd)]
-        print("| " + " | ".join(row) + " |")
+        return [fmt(gm), fmt(crba), ratio(crba, gm), fmt(dm), ratio(dm, gm), fmt(cg),
+                fmt(gfd), fmt(aba), ratio(aba, gfd), fmt(dfd), ratio(dfd, gfd)]
+
+    print("Inverse dynamics:\n")
+    table(["floor: N f64::sin_cos", "floor: trig::sin_cos", "gen ID", "ID / floor (sin_cos)",
+           "ID / floor (trig)", "RNEA", "RNEA / gen", "RNEA, batched trig", "RNEA bt / gen",
+           "dynibo ID", "dynibo / gen"], inverse_dynamics)
+    print("\nMass matrix, bias and forward dynamics:\n")
+    table(["gen M", "CRBA", "CRBA / gen", "dynibo M", "dynibo / gen", "gen c+g", "gen FD", "ABA",
+           "ABA / gen", "dynibo FD", "dynibo / gen"], others)
 
     if args.compare:
         old = load(args.root, args.compare)
+        methods = [("ID", "inverse_dynamics"), ("M", "mass_matrix"), ("c+g", "coriolis+gravity"),
+                   ("FD", "forward_dynamics")]
+
+        def speed_up(g):
+            row = []
+            for _, f in methods:
+                a, b = old.get((g, "generated/" + f)), t.get((g, "generated/" + f))
+                row += [fmt(a), fmt(b), ratio(a, b)]
+            return row
+
         print(f"\nGenerated code, {args.compare} / {args.baseline} (speed-up of the generated code;"
               " two runs, so noisier than the ratios above):\n")
-        print("| arm | N | ID before | ID after | speed-up | M before | M after | speed-up |"
-              " c+g before | c+g after | speed-up | FD before | FD after | speed-up |")
-        print("|" + "---|" * 14)
-        for g in groups(t):
-            s, _, n = g.partition("/N")
-            row = [s, n]
-            for f in ["inverse_dynamics", "mass_matrix", "coriolis+gravity", "forward_dynamics"]:
-                a = old.get((g, "generated/" + f))
-                b = t.get((g, "generated/" + f))
-                row += [fmt(a), fmt(b), ratio(a, b)]
-            print("| " + " | ".join(row) + " |")
-
+        table([h for m, _ in methods for h in (f"{m} before", f"{m} after", "speed-up")], speed_up)
 
 if __name__ == "__main__":
     main()
