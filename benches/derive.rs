@@ -15,9 +15,9 @@
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
-use planar_arm::symbolic::emit::Derived;
 use planar_arm::symbolic::generate::{generate, Header};
 use planar_arm::symbolic::mechanics::LinkSpec;
+use planar_arm::symbolic::methods::Derived;
 use planar_arm::symbolic::ring::ratio;
 use planar_arm::symbolic::ArmSpec;
 use quote::quote;
@@ -71,7 +71,7 @@ fn count_tokens(tokens: proc_macro2::TokenStream) -> usize {
 /// recursion (Newton-Euler, composite rigid body). Forward dynamics evaluates `M`, `c` and `g`
 /// as those methods do, then solves.
 fn forms(d: &Derived) -> String {
-    let pick = |m: planar_arm::symbolic::emit::Method, yes: &str| {
+    let pick = |m: planar_arm::symbolic::methods::Method, yes: &str| {
         if m.evaluation.is_empty() {
             "formulas".to_string()
         } else {

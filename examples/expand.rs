@@ -7,8 +7,8 @@
 //! cargo run --example expand -- 3       # three equal links
 //! ```
 
-use planar_arm::symbolic::emit::Derived;
 use planar_arm::symbolic::generate::{closed_forms, generate, Header};
+use planar_arm::symbolic::methods::Derived;
 use planar_arm::symbolic::ring::{int, ratio};
 use planar_arm::symbolic::ArmSpec;
 use quote::quote;

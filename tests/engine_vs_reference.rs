@@ -4,7 +4,7 @@
 
 use planar_arm::nalgebra::SVector;
 use planar_arm::reference;
-use planar_arm::symbolic::emit::{Derived, Method};
+use planar_arm::symbolic::methods::{Derived, Method};
 use planar_arm::symbolic::ring::{ratio, to_f64};
 use planar_arm::symbolic::slp::Input;
 use planar_arm::symbolic::{ArmSpec, LinkSpec};

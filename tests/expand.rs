@@ -5,8 +5,8 @@
 //!
 //! The same input must give byte-identical output, so each arm is also generated twice.
 
-use planar_arm::symbolic::emit::Derived;
 use planar_arm::symbolic::generate::{closed_forms, generate, Header};
+use planar_arm::symbolic::methods::Derived;
 use planar_arm::symbolic::ring::ratio;
 use planar_arm::symbolic::ArmSpec;
 use proc_macro2::{Ident, Span};

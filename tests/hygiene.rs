@@ -207,8 +207,8 @@ fn arms_derive_in_nested_modules_and_function_bodies() {
 }
 
 mod determinism {
-    use ::planar_arm::symbolic::emit::Derived;
     use ::planar_arm::symbolic::generate::{closed_forms, generate, Header};
+    use ::planar_arm::symbolic::methods::Derived;
     use ::planar_arm::symbolic::ring::{int, ratio};
     use ::planar_arm::symbolic::{ArmSpec, LinkSpec};
     use quote::{format_ident, quote};

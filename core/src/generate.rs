@@ -7,10 +7,10 @@ use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
 use crate::emit::{
-    check_representable, f64_tokens, formula_doc, input_name, local, render, Derived, EmitError,
-    Method,
+    check_representable, f64_tokens, formula_doc, input_name, local, render, EmitError,
 };
 use crate::expr::Expr;
+use crate::methods::{Derived, Method};
 use crate::ring::to_i128_pair;
 use crate::slp::Input;
 use crate::trig::Trig;

@@ -14,6 +14,8 @@
 //!   Lagrange's equation; M, c and g read off the torques; C from Christoffel symbols.
 //! - [`slp`]: hash-consed straight-line programs; trig atoms of angle sums by angle addition
 //!   from one sine-cosine pair per joint; operation counts.
+//! - [`methods`]: which program computes each generated method (the expanded formulas, or a
+//!   Newton-Euler or composite-rigid-body recursion unrolled for the arm, whichever is cheaper).
 //! - [`emit`] and [`generate`]: programs rendered as Rust, and the `impl PlanarArm<N>` the
 //!   derive emits.
 //!
@@ -45,4 +47,6 @@ pub use ring::{Coefficient, Rational};
 pub use trig::{Angle, Trig};
 pub mod emit;
 pub mod generate;
+pub mod methods;
 pub mod slp;
+mod unrolled;

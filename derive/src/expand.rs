@@ -5,8 +5,9 @@ use proc_macro2::TokenStream;
 use quote::{quote, ToTokens};
 use syn::DeriveInput;
 
-use planar_arm_core::emit::{Derived, EmitError};
+use planar_arm_core::emit::EmitError;
 use planar_arm_core::generate::{generate, Header};
+use planar_arm_core::methods::Derived;
 use planar_arm_core::ring::{to_i128_pair, Rational};
 use planar_arm_core::Expr;
 

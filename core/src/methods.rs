@@ -1,0 +1,633 @@
+//! Which straight-line program computes each generated method.
+//!
+//! For every method the derive emits there may be several programs that compute the same
+//! function: the expanded exact formulas term by term, or a recursion (Newton-Euler,
+//! composite-rigid-body) unrolled for the arm with its constants folded in. [`Derived`] builds
+//! the candidates and keeps the cheapest by an estimate of run time ([`Method`], `cost`);
+//! [`emit`](crate::emit) then writes the chosen program as Rust.
+
+use num_traits::{Signed, Zero};
+
+use crate::expr::Expr;
+use crate::mechanics::{ArmSpec, Dynamics, Kinematics};
+use crate::ring::Rational;
+use crate::slp::{Id, Input, OpCount, Program};
+use crate::trig::Angle;
+use crate::unrolled::{composite_mass_matrix, ldlt_solve, newton_euler, pivot_floor, Terms};
+
+/// Everything derived for one arm, ready to emit.
+#[derive(Clone, Debug)]
+pub struct Derived {
+    /// The arm.
+    pub arm: ArmSpec,
+    /// Its equations of motion.
+    pub dynamics: Dynamics,
+    /// Its kinematics.
+    pub kinematics: Kinematics,
+}
+
+impl Derived {
+    /// Derives dynamics and kinematics of the arm.
+    #[must_use]
+    pub fn new(arm: &ArmSpec) -> Self {
+        Self {
+            dynamics: Dynamics::derive(arm),
+            kinematics: Kinematics::derive(arm),
+            arm: arm.clone(),
+        }
+    }
+
+    fn n(&self) -> usize {
+        self.arm.links.len()
+    }
+}
+
+/// One generated method body: its program, the outputs, and how to name them.
+#[derive(Clone, Debug)]
+pub struct Method {
+    /// The program.
+    pub program: Program,
+    /// The output nodes with the names of their `let`s.
+    pub outputs: Vec<(String, Id)>,
+    /// How the program evaluates the method, for its doc comment (empty when it evaluates the
+    /// documented formulas term by term).
+    pub evaluation: String,
+}
+
+impl Method {
+    /// The outputs evaluated by the program interpreter (see [`Program::eval`]).
+    #[must_use]
+    pub fn eval(&self, input: &dyn Fn(Input) -> f64) -> Vec<f64> {
+        let values = self.program.eval(input);
+        self.outputs
+            .iter()
+            .map(|(_, id)| values[id.0 as usize])
+            .collect()
+    }
+
+    /// The operation count of this method.
+    #[must_use]
+    pub fn op_count(&self) -> OpCount {
+        let outs: Vec<Id> = self.outputs.iter().map(|o| o.1).collect();
+        self.program.op_count(&outs)
+    }
+
+    /// The longest chain of dependent operations to an output (see [`Program::depth`]).
+    #[must_use]
+    pub fn depth(&self) -> usize {
+        let outs: Vec<Id> = self.outputs.iter().map(|o| o.1).collect();
+        self.program.depth(&outs)
+    }
+
+    fn new(program: Program, outputs: Vec<(String, Id)>) -> Self {
+        Self {
+            program,
+            outputs,
+            evaluation: String::new(),
+        }
+    }
+
+    fn described(mut self, evaluation: &str) -> Self {
+        self.evaluation = evaluation.to_string();
+        self
+    }
+}
+
+/// The estimated run time of a method's program, in units of one multiplication: the
+/// operations (a division costs about four multiplications, a `sin_cos` call about twenty) plus
+/// the longest chain of dependent operations (latency the out-of-order core cannot hide).
+/// The chain is weighted one: weighted two, the expanded three-link torques beat the
+/// Newton-Euler recursion on paper but measured slower (docs/performance.md).
+fn cost(m: &Method) -> usize {
+    let count = m.op_count();
+    count.mul + count.add + 4 * count.div + 20 * count.sin_cos + m.depth()
+}
+
+/// The cheapest candidate by [`cost`]; the first one on a tie (candidates are listed with the
+/// term-by-term form first, so that form is kept when nothing beats it).
+fn cheapest(candidates: Vec<Method>) -> Method {
+    let mut best: Option<(usize, Method)> = None;
+    for m in candidates {
+        let c = cost(&m);
+        if best.as_ref().is_none_or(|(b, _)| c < *b) {
+            best = Some((c, m));
+        }
+    }
+    best.expect("at least one candidate").1
+}
+
+pub(crate) fn two(i: usize, j: usize) -> String {
+    format!("{}{}", i + 1, j + 1)
+}
+
+/// The straight-line program of each generated method.
+impl Derived {
+    /// `M(q)`: the cheaper (by [`OpCount`]) of the expanded entries and an unrolled
+    /// composite-rigid-body recursion. Upper triangle; the lower one is the same nodes.
+    #[must_use]
+    pub fn mass_matrix_method(&self) -> Method {
+        cheapest(vec![
+            self.mass_matrix_expanded_method(),
+            self.mass_matrix_composite_method(),
+        ])
+    }
+
+    /// `M(q)` evaluated entry by entry from the expanded formulas.
+    #[must_use]
+    pub fn mass_matrix_expanded_method(&self) -> Method {
+        let mut p = Program::new();
+        let m = expanded_mass_matrix(&mut p, &self.dynamics);
+        Method::new(p, matrix_outputs(&m))
+    }
+
+    /// `M(q)` by the composite-rigid-body recursion, unrolled for this arm.
+    #[must_use]
+    pub fn mass_matrix_composite_method(&self) -> Method {
+        let mut p = Program::new();
+        let m = composite_mass_matrix(&mut p, &self.arm);
+        Method::new(p, matrix_outputs(&m)).described(CRBA)
+    }
+
+    /// `c(q, qd)`: the cheaper of the expanded formulas and an unrolled Newton-Euler recursion
+    /// (no gravity, no accelerations).
+    #[must_use]
+    pub fn coriolis_method(&self) -> Method {
+        cheapest(vec![
+            self.vector_method("cor", &self.dynamics.coriolis),
+            self.newton_euler_method("cor", Terms::CORIOLIS),
+        ])
+    }
+
+    /// `g(q)`: the cheaper of the expanded formulas and an unrolled static recursion.
+    #[must_use]
+    pub fn gravity_method(&self) -> Method {
+        cheapest(vec![
+            self.vector_method("g", &self.dynamics.gravity),
+            self.newton_euler_method("g", Terms::GRAVITY),
+        ])
+    }
+
+    /// `tau = M qdd + c + g`: the cheaper of the expanded Lagrangian torques and an unrolled
+    /// Newton-Euler recursion.
+    #[must_use]
+    pub fn inverse_dynamics_method(&self) -> Method {
+        cheapest(vec![
+            self.inverse_dynamics_lagrange_method(),
+            self.inverse_dynamics_newton_euler_method(),
+        ])
+    }
+
+    /// `tau` from the expanded Lagrangian torques, term by term.
+    #[must_use]
+    pub fn inverse_dynamics_lagrange_method(&self) -> Method {
+        self.vector_method("tau", &self.dynamics.torques)
+    }
+
+    /// `tau` by the planar recursive Newton-Euler algorithm unrolled for this arm.
+    #[must_use]
+    pub fn inverse_dynamics_newton_euler_method(&self) -> Method {
+        self.newton_euler_method("tau", Terms::ALL)
+    }
+
+    fn newton_euler_method(&self, name: &str, terms: Terms) -> Method {
+        let mut p = Program::new();
+        let tau = newton_euler(&mut p, &self.arm, terms);
+        let outputs = tau
+            .into_iter()
+            .enumerate()
+            .map(|(i, id)| (format!("{name}{}", i + 1), id))
+            .collect();
+        Method::new(p, outputs).described(RNEA)
+    }
+
+    /// `C(q, qd)`.
+    #[must_use]
+    pub fn coriolis_matrix_method(&self) -> Method {
+        let mut p = Program::new();
+        let mut outputs = Vec::new();
+        for i in 0..self.n() {
+            for j in 0..self.n() {
+                let id = p.expr(&self.dynamics.coriolis_matrix[i][j]);
+                outputs.push((format!("cm{}", two(i, j)), id));
+            }
+        }
+        Method::new(p, outputs)
+    }
+
+    /// `T(q, qd)`.
+    #[must_use]
+    pub fn kinetic_energy_method(&self) -> Method {
+        self.vector_method(
+            "kinetic",
+            std::slice::from_ref(&self.dynamics.kinetic_energy),
+        )
+    }
+
+    /// `V(q)`.
+    #[must_use]
+    pub fn potential_energy_method(&self) -> Method {
+        self.vector_method(
+            "potential",
+            std::slice::from_ref(&self.dynamics.potential_energy),
+        )
+    }
+
+    fn vector_method(&self, name: &str, entries: &[Expr]) -> Method {
+        let mut p = Program::new();
+        let single = matches!(name, "kinetic" | "potential");
+        let outputs = entries
+            .iter()
+            .enumerate()
+            .map(|(i, e)| {
+                let label = if single {
+                    name.to_string()
+                } else {
+                    format!("{name}{}", i + 1)
+                };
+                (label, p.expr(e))
+            })
+            .collect();
+        Method::new(p, outputs)
+    }
+
+    /// `qdd = M^-1 (tau - c - g)`: Cramer's rule for one and two joints, an unrolled
+    /// `L D L^T` factorisation (no square roots, one division per joint) beyond. `M`, `c` and
+    /// `g` are evaluated exactly as [`mass_matrix_method`](Self::mass_matrix_method),
+    /// [`coriolis_method`](Self::coriolis_method) and [`gravity_method`](Self::gravity_method)
+    /// evaluate them (whichever of the expanded formulas and the unrolled recursions each
+    /// chose), so the result solves the very system those methods return: `tau - c - g` is
+    /// formed in the same order, bit for bit.
+    #[must_use]
+    pub fn forward_dynamics_method(&self) -> Method {
+        let recursive = |m: Method| !m.evaluation.is_empty();
+        self.forward_dynamics_with(
+            recursive(self.mass_matrix_method()),
+            recursive(self.coriolis_method()),
+            recursive(self.gravity_method()),
+        )
+    }
+
+    /// `det M` of a two-link arm as `det0 + f^2 sin^2 q2`: with `M11 = a + b cos q2`,
+    /// `M12 = e + f cos q2`, `M22 = d` and `b d = 2 e f` (always so for a planar arm),
+    /// `M11 M22 - M12^2 = (a d - e^2 - f^2) + f^2 sin^2 q2`, where `det0 = det M(q2 = 0) > 0`.
+    /// Both terms are non-negative, so unlike `M11 M22 - M12^2` it never cancels to zero or
+    /// below. `None` if `M` does not have that form.
+    fn two_link_det(&self, p: &mut Program) -> Option<Id> {
+        use crate::trig::Trig;
+        let q2 = Angle::new(vec![0, 1]);
+        let split = |e: &Expr| -> Option<(Rational, Rational)> {
+            let (mut k, mut c) = (Rational::zero(), Rational::zero());
+            for (mono, t, coeff) in e.terms() {
+                if mono.degree() != 0 {
+                    return None;
+                }
+                match t {
+                    Trig::One => k += coeff,
+                    Trig::Cos(a) if *a == q2 => c += coeff,
+                    _ => return None,
+                }
+            }
+            Some((k, c))
+        };
+        let mm = &self.dynamics.mass_matrix;
+        let (a, b) = split(&mm[0][0])?;
+        let (e, f) = split(&mm[0][1])?;
+        let (d, d_cos) = split(&mm[1][1])?;
+        let two = Rational::from_integer(2.into());
+        if !d_cos.is_zero() || &b * &d != two * &e * &f {
+            return None;
+        }
+        let det0 = &a * &d - &e * &e - &f * &f;
+        if !det0.is_positive() {
+            return None;
+        }
+        let det0 = p.constant(det0);
+        let f2 = p.constant(&f * &f);
+        let (_, s2) = p.trig_pair(&q2);
+        let s2s2 = p.mul(s2, s2);
+        let varying = p.mul(f2, s2s2);
+        Some(p.add(det0, varying))
+    }
+
+    /// Forward dynamics with `M` from the composite-rigid-body recursion or the expanded
+    /// entries, and `c` and `g` each from the Newton-Euler recursion or the expanded formulas.
+    #[must_use]
+    pub fn forward_dynamics_with(
+        &self,
+        composite: bool,
+        recursive_c: bool,
+        recursive_g: bool,
+    ) -> Method {
+        let n = self.n();
+        let mut p = Program::new();
+        let m = if composite {
+            composite_mass_matrix(&mut p, &self.arm)
+        } else {
+            expanded_mass_matrix(&mut p, &self.dynamics)
+        };
+        let c: Vec<Id> = if recursive_c {
+            newton_euler(&mut p, &self.arm, Terms::CORIOLIS)
+        } else {
+            self.dynamics.coriolis.iter().map(|e| p.expr(e)).collect()
+        };
+        let g: Vec<Id> = if recursive_g {
+            newton_euler(&mut p, &self.arm, Terms::GRAVITY)
+        } else {
+            self.dynamics.gravity.iter().map(|e| p.expr(e)).collect()
+        };
+        let rhs: Vec<Id> = (0..n)
+            .map(|i| {
+                let tau = p.input(Input::Tau(i));
+                let r = p.sub(tau, c[i]);
+                p.sub(r, g[i])
+            })
+            .collect();
+        for (i, &r) in rhs.iter().enumerate() {
+            p.set_name(r, format!("rhs{}", i + 1));
+        }
+        let qdd = match n {
+            1 => vec![p.div(rhs[0], m[0][0])],
+            2 => {
+                let det = self.two_link_det(&mut p).unwrap_or_else(|| {
+                    let a = p.mul(m[0][0], m[1][1]);
+                    let b = p.mul(m[0][1], m[0][1]);
+                    p.sub(a, b)
+                });
+                p.set_name(det, "det".into());
+                let x0 = {
+                    let u = p.mul(m[1][1], rhs[0]);
+                    let v = p.mul(m[0][1], rhs[1]);
+                    p.sub(u, v)
+                };
+                let x1 = {
+                    let u = p.mul(m[0][0], rhs[1]);
+                    let v = p.mul(m[0][1], rhs[0]);
+                    p.sub(u, v)
+                };
+                vec![p.div(x0, det), p.div(x1, det)]
+            }
+            _ => {
+                let floors: Vec<Rational> = (0..n)
+                    .map(|i| pivot_floor(&self.dynamics.mass_matrix[i][i]))
+                    .collect();
+                ldlt_solve(&mut p, &m, &rhs, &floors)
+            }
+        };
+        let outputs = qdd
+            .into_iter()
+            .enumerate()
+            .map(|(i, id)| (format!("qdd{}", i + 1), id))
+            .collect();
+        let form = |recursive: bool, how: &str| {
+            if recursive {
+                format!("by the {how} unrolled for this arm")
+            } else {
+                "from the formulas".to_string()
+            }
+        };
+        let evaluation = if composite || recursive_c || recursive_g {
+            format!(
+                "M, c and g evaluated as `mass_matrix`, `coriolis` and `gravity` evaluate them: \
+                 M {}, c {}, g {}.",
+                form(composite, "composite-rigid-body algorithm"),
+                form(recursive_c, "recursive Newton-Euler algorithm"),
+                form(recursive_g, "static recursion"),
+            )
+        } else {
+            String::new()
+        };
+        Method::new(p, outputs).described(&evaluation)
+    }
+
+    /// Tip `x, y`, then `cos` and `sin` of the last link's angle.
+    #[must_use]
+    pub fn tip_pose_method(&self) -> Method {
+        let mut p = Program::new();
+        let (x, y) = &self.kinematics.points[self.n()];
+        let x = p.expr(x);
+        let y = p.expr(y);
+        let (c, s) = p.trig_pair(&self.kinematics.tip_angle);
+        Method::new(
+            p,
+            vec![
+                ("x".into(), x),
+                ("y".into(), y),
+                ("cos_phi".into(), c),
+                ("sin_phi".into(), s),
+            ],
+        )
+    }
+
+    /// The 3 x N Jacobian, row-major.
+    #[must_use]
+    pub fn jacobian_method(&self) -> Method {
+        let mut p = Program::new();
+        let mut outputs = Vec::new();
+        for (r, row) in self.kinematics.jacobian.iter().enumerate() {
+            for (j, e) in row.iter().enumerate() {
+                outputs.push((format!("j{}", two(r, j)), p.expr(e)));
+            }
+        }
+        Method::new(p, outputs)
+    }
+
+    /// Joints `1..=N`: `x, y` of each.
+    #[must_use]
+    pub fn joint_positions_method(&self) -> Method {
+        let mut p = Program::new();
+        let mut outputs = Vec::new();
+        for (i, (x, y)) in self.kinematics.points.iter().take(self.n()).enumerate() {
+            outputs.push((format!("x{}", i + 1), p.expr(x)));
+            outputs.push((format!("y{}", i + 1), p.expr(y)));
+        }
+        Method::new(p, outputs)
+    }
+
+    /// `r^2`, tip `x`, tip `y`.
+    #[must_use]
+    pub fn tip_polar_method(&self) -> Method {
+        let mut p = Program::new();
+        let r2 = p.expr(&self.kinematics.radius_squared);
+        let (x, y) = &self.kinematics.points[self.n()];
+        let x = p.expr(x);
+        let y = p.expr(y);
+        Method::new(p, vec![("r2".into(), r2), ("x".into(), x), ("y".into(), y)])
+    }
+
+    /// `tau = J^T (u, v, torque)`.
+    #[must_use]
+    pub fn joint_torques_method(&self) -> Method {
+        let mut p = Program::new();
+        let u = p.input(Input::Force(0));
+        let v = p.input(Input::Force(1));
+        let t = p.input(Input::TipTorque);
+        let mut outputs = Vec::new();
+        for j in 0..self.n() {
+            let jx = p.expr(&self.kinematics.jacobian[0][j]);
+            let jy = p.expr(&self.kinematics.jacobian[1][j]);
+            let a = p.mul(jx, u);
+            let b = p.mul(jy, v);
+            let ab = p.add(a, b);
+            outputs.push((format!("tau{}", j + 1), p.add(ab, t)));
+        }
+        Method::new(p, outputs)
+    }
+}
+
+/// The doc-comment note of a method evaluated by the unrolled Newton-Euler recursion.
+const RNEA: &str = "Evaluated not term by term but by the planar recursive Newton-Euler \
+                    algorithm unrolled for this arm (the same function, fewer operations): \
+                    link-frame velocities and accelerations outwards, forces and moments \
+                    inwards, one rotation by each joint's (cos, sin) per pass, the link \
+                    constants folded in.";
+
+/// The doc-comment note of a mass matrix evaluated by the unrolled composite-rigid-body
+/// algorithm.
+const CRBA: &str = "Evaluated not term by term but by the composite-rigid-body algorithm \
+                    unrolled for this arm (the same function, fewer operations): the mass, \
+                    first moment and rotational inertia of each tail of the chain, in link \
+                    frames, the link constants folded in.";
+
+/// The mass matrix from the expanded entries (upper triangle; the lower is the same nodes).
+fn expanded_mass_matrix(p: &mut Program, d: &Dynamics) -> Vec<Vec<Id>> {
+    let n = d.n;
+    (0..n)
+        .map(|i| {
+            (0..n)
+                .map(|j| p.expr(&d.mass_matrix[i.min(j)][i.max(j)]))
+                .collect()
+        })
+        .collect()
+}
+
+/// Row-major outputs `m11, m12, ...` of a symmetric matrix (repeated nodes below the diagonal).
+fn matrix_outputs(m: &[Vec<Id>]) -> Vec<(String, Id)> {
+    let mut outputs = Vec::new();
+    for (i, row) in m.iter().enumerate() {
+        for (j, &id) in row.iter().enumerate() {
+            outputs.push((format!("m{}", two(i.min(j), i.max(j))), id));
+        }
+    }
+    outputs
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mechanics::LinkSpec;
+    use crate::ring::ratio;
+
+    /// An arm with uneven parameters (an offset centre of mass, a counterweight).
+    fn arm(n: usize) -> ArmSpec {
+        let k = |i: usize| i64::try_from(i).unwrap_or(0);
+        ArmSpec {
+            links: (0..n)
+                .map(|i| LinkSpec {
+                    length: ratio(k(i) + 3, 4),
+                    mass: ratio(2 * k(i) + 1, 3),
+                    inertia: ratio(1, k(i) + 5),
+                    com: ratio(k(i % 3) - 1, 2),
+                })
+                .collect(),
+            gravity: ratio(981, 100),
+        }
+    }
+
+    fn eval(m: &Method, n: usize) -> Vec<f64> {
+        #[allow(clippy::cast_precision_loss)]
+        let at = |j: usize, k: f64| (j as f64 + 1.0).mul_add(0.37, k).sin() * 2.0;
+        m.eval(&|i| match i {
+            Input::Q(j) => at(j, 0.1),
+            Input::Qd(j) => at(j, 1.3),
+            Input::Qdd(j) => at(j, 2.9),
+            Input::Tau(j) => at(j + n, 4.1) * 10.0,
+            Input::Force(_) | Input::TipTorque => 0.0,
+        })
+    }
+
+    #[track_caller]
+    fn same(a: &[f64], b: &[f64], what: &str) {
+        let scale = a.iter().chain(b).fold(1.0_f64, |m, x| m.max(x.abs()));
+        for (x, y) in a.iter().zip(b) {
+            assert!((x - y).abs() <= 1e-11 * scale, "{what}: {a:?} vs {b:?}");
+        }
+    }
+
+    #[test]
+    fn every_candidate_agrees() {
+        for n in 1..=7 {
+            let d = Derived::new(&arm(n));
+            let tau = eval(&d.inverse_dynamics_lagrange_method(), n);
+            same(
+                &tau,
+                &eval(&d.inverse_dynamics_newton_euler_method(), n),
+                "tau",
+            );
+            let m = eval(&d.mass_matrix_expanded_method(), n);
+            same(&m, &eval(&d.mass_matrix_composite_method(), n), "M");
+            same(
+                &eval(&d.vector_method("c", &d.dynamics.coriolis), n),
+                &eval(&d.newton_euler_method("c", Terms::CORIOLIS), n),
+                "c",
+            );
+            same(
+                &eval(&d.vector_method("g", &d.dynamics.gravity), n),
+                &eval(&d.newton_euler_method("g", Terms::GRAVITY), n),
+                "g",
+            );
+            let fd = eval(&d.forward_dynamics_with(false, false, false), n);
+            for k in 1..8 {
+                let with = d.forward_dynamics_with(k & 1 == 1, k & 2 == 2, k & 4 == 4);
+                same(&fd, &eval(&with, n), "qdd");
+            }
+        }
+    }
+
+    #[test]
+    #[ignore = "prints a table"]
+    fn print_op_counts() {
+        for n in 1..=8 {
+            let d = Derived::new(&arm(n));
+            let show =
+                |m: Method| format!("{} depth {} cost {}", m.op_count(), m.depth(), cost(&m));
+            println!("N = {n}");
+            println!(
+                "  tau lagrange     {}",
+                show(d.inverse_dynamics_lagrange_method())
+            );
+            println!(
+                "  tau newton-euler {}",
+                show(d.inverse_dynamics_newton_euler_method())
+            );
+            println!(
+                "  M expanded       {}",
+                show(d.mass_matrix_expanded_method())
+            );
+            println!(
+                "  M composite      {}",
+                show(d.mass_matrix_composite_method())
+            );
+            println!(
+                "  c expanded       {}",
+                show(d.vector_method("c", &d.dynamics.coriolis))
+            );
+            println!(
+                "  c newton-euler   {}",
+                show(d.newton_euler_method("c", Terms::CORIOLIS))
+            );
+            println!(
+                "  g expanded       {}",
+                show(d.vector_method("g", &d.dynamics.gravity))
+            );
+            println!(
+                "  g recursion      {}",
+                show(d.newton_euler_method("g", Terms::GRAVITY))
+            );
+            for k in 0..8 {
+                let (a, b, c) = (k & 1 == 1, k & 2 == 2, k & 4 == 4);
+                let fd = d.forward_dynamics_with(a, b, c);
+                println!("  fd M-crba={a} c-rnea={b} g-rec={c} {}", show(fd));
+            }
+        }
+    }
+}

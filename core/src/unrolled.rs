@@ -1,0 +1,270 @@
+//! Recursions unrolled for one arm: the planar recursive Newton-Euler algorithm, the
+//! composite-rigid-body algorithm and an `L D L^T` solve, each written into a [`Program`] with
+//! the arm's exact constants folded in. They are candidates next to the expanded formulas
+//! (see [`methods`](crate::methods)).
+
+use num_traits::{Signed, Zero};
+
+use crate::expr::Expr;
+use crate::mechanics::ArmSpec;
+use crate::methods::two;
+use crate::ring::Rational;
+use crate::slp::{Id, Input, Program};
+use crate::trig::Angle;
+
+/// Which terms of `tau = M qdd + c + g` an unrolled Newton-Euler recursion evaluates.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Terms {
+    rates: bool,
+    accelerations: bool,
+    gravity: bool,
+}
+
+impl Terms {
+    pub(crate) const ALL: Self = Self {
+        rates: true,
+        accelerations: true,
+        gravity: true,
+    };
+    pub(crate) const CORIOLIS: Self = Self {
+        rates: true,
+        accelerations: false,
+        gravity: false,
+    };
+    pub(crate) const GRAVITY: Self = Self {
+        rates: false,
+        accelerations: false,
+        gravity: true,
+    };
+}
+
+/// A planar vector of program nodes.
+type V2 = (Id, Id);
+
+/// `(cos q_j, sin q_j)`: joint `j`'s own `sin_cos`.
+fn joint_trig(p: &mut Program, j: usize) -> V2 {
+    p.trig_pair(&Angle::range(j, j + 1))
+}
+
+/// `R(q) v`: a vector of link `j`'s frame in link `j - 1`'s frame (`cs = (cos q_j, sin q_j)`).
+fn rotate(p: &mut Program, cs: V2, v: V2) -> V2 {
+    let (c, s) = cs;
+    let (a, b) = (p.mul(c, v.0), p.mul(s, v.1));
+    let x = p.sub(a, b);
+    let (a, b) = (p.mul(s, v.0), p.mul(c, v.1));
+    (x, p.add(a, b))
+}
+
+/// `R(-q) v`: a vector of link `j - 1`'s frame in link `j`'s frame.
+fn rotate_back(p: &mut Program, cs: V2, v: V2) -> V2 {
+    let (c, s) = cs;
+    let (a, b) = (p.mul(c, v.0), p.mul(s, v.1));
+    let x = p.add(a, b);
+    let (a, b) = (p.mul(c, v.1), p.mul(s, v.0));
+    (x, p.sub(a, b))
+}
+
+/// Joint torques by the planar recursive Newton-Euler algorithm, unrolled for the arm, in link
+/// frames (x along the link): each link's angular velocity `w` and acceleration `al`, and the
+/// acceleration `a` of its joint, outwards (gravity as an upward acceleration of the base);
+/// the force each link's tail exerts on it and the moment about its joint, inwards.
+pub(crate) fn newton_euler(p: &mut Program, arm: &ArmSpec, terms: Terms) -> Vec<Id> {
+    let n = arm.links.len();
+    let zero = p.constant(Rational::zero());
+    let k = |p: &mut Program, r: Rational| p.constant(r);
+    let g = k(
+        p,
+        if terms.gravity {
+            arm.gravity.clone()
+        } else {
+            Rational::zero()
+        },
+    );
+    // Acceleration of the current joint in the previous link's frame.
+    let mut end: V2 = (zero, g);
+    let (mut w, mut al) = (zero, zero);
+    let mut trig = Vec::with_capacity(n);
+    let mut force = Vec::with_capacity(n);
+    let mut alpha = Vec::with_capacity(n);
+    let mut accel = Vec::with_capacity(n);
+    for (i, link) in arm.links.iter().enumerate() {
+        let cs = joint_trig(p, i);
+        let a = rotate_back(p, cs, end);
+        p.set_name(a.0, format!("ax{}", i + 1));
+        p.set_name(a.1, format!("ay{}", i + 1));
+        if terms.rates {
+            let qd = p.input(Input::Qd(i));
+            w = p.add(w, qd);
+            p.set_name(w, format!("w{}", i + 1));
+        }
+        if terms.accelerations {
+            let qdd = p.input(Input::Qdd(i));
+            al = p.add(al, qdd);
+            p.set_name(al, format!("al{}", i + 1));
+        }
+        let w2 = p.mul(w, w);
+        // The force on the link's centre of mass, m (a + com (-w^2, al)).
+        let m = k(p, link.mass.clone());
+        let mc = k(p, &link.mass * &link.com);
+        let fx = {
+            let (u, v) = (p.mul(m, a.0), p.mul(mc, w2));
+            p.sub(u, v)
+        };
+        let fy = {
+            let (u, v) = (p.mul(m, a.1), p.mul(mc, al));
+            p.add(u, v)
+        };
+        // The far end of the link: a + l (-w^2, al).
+        let l = k(p, link.length.clone());
+        end = {
+            let (u, v) = (p.mul(l, w2), p.mul(l, al));
+            (p.sub(a.0, u), p.add(a.1, v))
+        };
+        p.set_name(end.0, format!("ex{}", i + 1));
+        p.set_name(end.1, format!("ey{}", i + 1));
+        trig.push(cs);
+        force.push((fx, fy));
+        alpha.push(al);
+        accel.push(a.1);
+    }
+    let mut tau = vec![zero; n];
+    let mut tail: Option<V2> = None;
+    let mut moment = zero;
+    for i in (0..n).rev() {
+        let link = &arm.links[i];
+        // Moment about the joint of the link's own inertia forces:
+        // (I + m com^2) al + m com ay (the centripetal force passes through the joint).
+        let inertia = k(p, &link.inertia + &link.mass * &link.com * &link.com);
+        let mc = k(p, &link.mass * &link.com);
+        let (u, v) = (p.mul(inertia, alpha[i]), p.mul(mc, accel[i]));
+        let mut here = p.add(u, v);
+        let mut f = force[i];
+        if let Some(child) = tail {
+            // The force the tail exerts at the far end of the link, in this link's frame.
+            let r = rotate(p, trig[i + 1], child);
+            let l = k(p, link.length.clone());
+            let lever = p.mul(l, r.1);
+            here = p.add(here, lever);
+            f = (p.add(f.0, r.0), p.add(f.1, r.1));
+        }
+        p.set_name(f.0, format!("fx{}", i + 1));
+        p.set_name(f.1, format!("fy{}", i + 1));
+        moment = p.add(moment, here);
+        tau[i] = moment;
+        tail = Some(f);
+    }
+    tau
+}
+
+/// The mass matrix by the composite-rigid-body algorithm, unrolled for the arm, in link frames:
+/// for each tail of the chain (links `j..`), its mass, first moment `h` about joint `j` and
+/// rotational inertia about joint `j` (`M_jj`); `M_ij = M_(i+1)j + l_i (h in link i's frame).x`.
+pub(crate) fn composite_mass_matrix(p: &mut Program, arm: &ArmSpec) -> Vec<Vec<Id>> {
+    let n = arm.links.len();
+    let zero = p.constant(Rational::zero());
+    let trig: Vec<V2> = (0..n).map(|j| joint_trig(p, j)).collect();
+    let mut m = vec![vec![zero; n]; n];
+    let mut tail_mass = Rational::zero();
+    let mut tail: Option<(V2, Id)> = None;
+    for j in (0..n).rev() {
+        let link = &arm.links[j];
+        let own = &link.mass * &link.com;
+        let hx = p.constant(&own + &tail_mass * &link.length);
+        let rot =
+            p.constant(&link.inertia + &own * &link.com + &tail_mass * &link.length * &link.length);
+        let (h, rot) = match tail {
+            None => ((hx, zero), rot),
+            Some((child, child_rot)) => {
+                let r = rotate(p, trig[j + 1], child);
+                let two_l = p.constant(&link.length * Rational::from_integer(2.into()));
+                let shift = p.mul(two_l, r.0);
+                let rot = p.add(rot, child_rot);
+                ((p.add(hx, r.0), r.1), p.add(rot, shift))
+            }
+        };
+        p.set_name(h.0, format!("hx{}", j + 1));
+        p.set_name(h.1, format!("hy{}", j + 1));
+        tail_mass += &link.mass;
+        m[j][j] = rot;
+        let (mut v, mut mij) = (h, rot);
+        for i in (0..j).rev() {
+            v = rotate(p, trig[i + 1], v);
+            let l = p.constant(arm.links[i].length.clone());
+            let step = p.mul(l, v.0);
+            mij = p.add(mij, step);
+            m[i][j] = mij;
+            m[j][i] = mij;
+        }
+        tail = Some((h, rot));
+    }
+    m
+}
+/// Solves `M x = b` with `M = L D L^T` unrolled (Crout's order, one multiplication per
+/// inner-product term): `s_ij = M_ij - sum_k L_ik s_jk` is `L_ij d_j`, so `L_ij = s_ij / d_j`
+/// and `d_i = M_ii - sum_k L_ik s_ik`; then `L y = b`, `z = y / d`, `L^T x = z`.
+/// The floor under pivot `d_i` of `L D L^T`: 2^-52 times a bound on `|M_ii|` over all
+/// configurations (the sum of its coefficients' magnitudes), the level of the rounding noise in
+/// the computed pivot. `M` is positive definite, so its exact pivots are positive; a computed
+/// one at or below the floor only means `M` is too ill-conditioned for `f64` there, and the
+/// floor keeps the accelerations finite instead of infinite or NaN.
+pub(crate) fn pivot_floor(m_ii: &Expr) -> Rational {
+    let bound = m_ii
+        .terms()
+        .fold(Rational::zero(), |acc, (_, _, c)| acc + c.abs());
+    bound / Rational::from_integer(num_bigint::BigInt::from(1u64 << 52))
+}
+
+pub(crate) fn ldlt_solve(p: &mut Program, m: &[Vec<Id>], b: &[Id], floors: &[Rational]) -> Vec<Id> {
+    let n = m.len();
+    let zero = p.constant(Rational::zero());
+    let one = p.constant(Rational::from_integer(1.into()));
+    // s[i][j] = L_ij d_j and l[i][j] = L_ij for j < i.
+    let mut s = vec![vec![zero; n]; n];
+    let mut l = vec![vec![zero; n]; n];
+    let mut inv_d = vec![zero; n];
+    for i in 0..n {
+        for j in 0..i {
+            let mut sij = m[i][j];
+            for k in 0..j {
+                let w = p.mul(l[i][k], s[j][k]);
+                sij = p.sub(sij, w);
+            }
+            s[i][j] = sij;
+            let lij = p.mul(sij, inv_d[j]);
+            p.set_name(lij, format!("l{}", two(i, j)));
+            l[i][j] = lij;
+        }
+        let mut di = m[i][i];
+        for k in 0..i {
+            let w = p.mul(l[i][k], s[i][k]);
+            di = p.sub(di, w);
+        }
+        let floor = p.constant(floors[i].clone());
+        let di = p.max(di, floor);
+        p.set_name(di, format!("d{}", i + 1));
+        let inv = p.div(one, di);
+        p.set_name(inv, format!("inv_d{}", i + 1));
+        inv_d[i] = inv;
+    }
+    // L y = b
+    let mut y = Vec::with_capacity(n);
+    for i in 0..n {
+        let mut yi = b[i];
+        for (k, &yk) in y.iter().enumerate() {
+            let w = p.mul(l[i][k], yk);
+            yi = p.sub(yi, w);
+        }
+        y.push(yi);
+    }
+    // D z = y, L^T x = z
+    let mut x = vec![zero; n];
+    for i in (0..n).rev() {
+        let mut xi = p.mul(y[i], inv_d[i]);
+        for k in i + 1..n {
+            let w = p.mul(l[k][i], x[k]);
+            xi = p.sub(xi, w);
+        }
+        x[i] = xi;
+    }
+    x
+}
