@@ -1,0 +1,515 @@
+//! Closed-form inverse kinematics of two and three links: both elbow branches.
+
+use core::f64::consts::PI;
+
+use nalgebra::{Isometry2, Point2, SVector, Vector2};
+
+#[cfg(doc)]
+use super::REACH_TOLERANCE;
+use super::{annulus_check, check_lengths, wrap_angle};
+use crate::ArmError;
+
+/// Closed-form inverse kinematics of a two- or three-link arm, both elbow solutions.
+///
+/// `#[derive(PlanarArm)]` implements it for two links (`Target = Point2<f64>`, via [`ik2`] or
+/// [`ik2_equal`]) and for three links (`Target = Isometry2<f64>`, via [`ik3`]).
+pub trait ClosedFormIk<const N: usize> {
+    /// `Point2<f64>` for two links, `Isometry2<f64>` for three.
+    type Target;
+    /// Both elbow solutions: index 0 has `sin q2 >= 0`, index 1 has `sin q2 <= 0`. On the outer
+    /// or inner boundary both are the same configuration.
+    ///
+    /// # Errors
+    /// [`ArmError::NonFinite`] for NaN or infinite targets, [`ArmError::Unreachable`] for
+    /// targets outside the work-space.
+    fn inverse_kinematics(&self, target: &Self::Target) -> Result<[SVector<f64, N>; 2], ArmError>;
+}
+
+/// The target's coordinates, with `-0.0` turned into `0.0` so that `atan2` never sees a
+/// negative zero in the denominator.
+#[inline]
+fn target_coordinates(target: &Point2<f64>) -> Result<(f64, f64), ArmError> {
+    if target.x.is_finite() && target.y.is_finite() {
+        Ok((target.x + 0.0, target.y + 0.0))
+    } else {
+        Err(ArmError::NonFinite { argument: "target" })
+    }
+}
+
+/// Both two-link solutions `(q1, q2)` for lengths `a1, a2 >= 0` and a target known to lie in
+/// the annulus (up to the tolerance): `q2` in `[0, pi]` first, then its mirror image.
+#[inline]
+fn ik2_unsigned(a1: f64, a2: f64, x: f64, y: f64) -> [(f64, f64); 2] {
+    // Scale so the longer link has length 1: nothing below can overflow or underflow.
+    let scale = a1.max(a2);
+    if scale == 0.0 {
+        return [(0.0, 0.0); 2];
+    }
+    let (l1, l2) = (a1 / scale, a2 / scale);
+    let (x, y) = (x / scale, y / scale);
+    if l1 == 0.0 || l2 == 0.0 {
+        // One link has (numerically) no length: the other points at the target.
+        let theta = y.atan2(x);
+        return [(theta, 0.0); 2];
+    }
+    let r = x.hypot(y);
+    let den = 2.0 * l1 * l2;
+    let (outer, inner) = (l1 + l2, (l1 - l2).abs());
+    // 1 - cos q2 and 1 + cos q2 in factored form: accurate near both boundaries, and clamped
+    // so that a target within the tolerance outside the annulus lands on the boundary.
+    let one_minus = ((outer - r) * (outer + r) / den).clamp(0.0, 2.0);
+    let one_plus = ((r - inner) * (r + inner) / den).clamp(0.0, 2.0);
+    let c2 = 0.5 * (one_plus - one_minus);
+    let s2 = (one_minus * one_plus).sqrt();
+    let q2 = s2.atan2(c2);
+    // The paper's sin q1, cos q1 (times r^2) for each sign of sin q2.
+    let (k1, k2) = (l1 + l2 * c2, l2 * s2);
+    let up = (k1 * y - k2 * x).atan2(k1 * x + k2 * y);
+    let down = (k1 * y + k2 * x).atan2(k1 * x - k2 * y);
+    [(up, q2), (down, -q2)]
+}
+
+/// Turns the solutions for `|l1|, |l2|` into solutions for the signed lengths (a link of
+/// negative length is the positive one turned by pi), keeps the branch order, and wraps.
+#[inline]
+fn ik2_signed(l1: f64, l2: f64, solutions: [(f64, f64); 2]) -> [SVector<f64, 2>; 2] {
+    let (flip1, flip2) = (l1 < 0.0, l2 < 0.0);
+    let shift1 = if flip1 { PI } else { 0.0 };
+    let shift2 = if flip2 { PI } else { 0.0 };
+    let convert = |(p1, p2): (f64, f64)| {
+        Vector2::new(wrap_angle(p1 - shift1), wrap_angle(p2 + shift1 - shift2))
+    };
+    let [a, b] = solutions;
+    if flip1 == flip2 {
+        [convert(a), convert(b)]
+    } else {
+        [convert(b), convert(a)]
+    }
+}
+
+/// Closed-form inverse kinematics of a two-link arm with lengths `l1`, `l2`: both elbow
+/// solutions for the tip position `target`.
+///
+/// `cos q2` comes from the law of cosines, `q1` from `atan2` of the paper's expressions for
+/// `sin q1` and `cos q1`. Index 0 has `sin q2 >= 0`, index 1 has `sin q2 <= 0`; on the inner or
+/// outer boundary both are the same configuration. A target outside the annulus
+/// `|l1 - l2| ..= l1 + l2` by at most [`REACH_TOLERANCE`]` * (l1 + l2)` is treated as lying on
+/// the boundary. When `l1 == l2` the origin is reachable with `q2 = pi` and any `q1`; the
+/// solution returned is `(0, pi)` for both branches. Angles are in (-pi, pi].
+///
+/// # Errors
+/// [`ArmError::NonFinite`] (`"lengths"` or `"target"`) for NaN or infinite arguments;
+/// [`ArmError::Unreachable`] with `radius = |target|`, `inner = |l1 - l2|`, `outer = l1 + l2`
+/// and the distance outside the annulus.
+///
+/// # Example
+/// ```
+/// use planar_arm::kinematics::ik2;
+/// use planar_arm::nalgebra::Point2;
+///
+/// let [elbow_up, elbow_down] = ik2(1.0, 0.5, &Point2::new(1.0, 0.5)).unwrap();
+/// for q in [elbow_up, elbow_down] {
+///     let x = q[0].cos() + 0.5 * (q[0] + q[1]).cos();
+///     let y = q[0].sin() + 0.5 * (q[0] + q[1]).sin();
+///     assert!((x - 1.0).abs() < 1e-12 && (y - 0.5).abs() < 1e-12);
+/// }
+/// assert!(elbow_up[1].sin() >= 0.0 && elbow_down[1].sin() <= 0.0);
+/// ```
+#[inline]
+pub fn ik2(l1: f64, l2: f64, target: &Point2<f64>) -> Result<[SVector<f64, 2>; 2], ArmError> {
+    check_lengths(&[l1, l2])?;
+    let (x, y) = target_coordinates(target)?;
+    let (a1, a2) = (l1.abs(), l2.abs());
+    annulus_check(x.hypot(y), (a1 - a2).abs(), a1 + a2)?;
+    Ok(ik2_signed(l1, l2, ik2_unsigned(a1, a2, x, y)))
+}
+
+/// Closed-form inverse kinematics of a two-link arm whose links both have length `l`, by the
+/// paper's simplified formulas `cos(q2 / 2) = r / (2 l)` and `q1 + q2 / 2 = atan2(y, x)`.
+///
+/// The work-space is the disk of radius `2 l`. The origin is reached in infinitely many ways
+/// (`q2 = pi`, `q1` free); both branches then return `(0, pi)`. Otherwise as [`ik2`]: index 0
+/// has `sin q2 >= 0`, angles are in (-pi, pi], and the boundary tolerance is
+/// [`REACH_TOLERANCE`]` * 2 l`.
+///
+/// # Errors
+/// [`ArmError::NonFinite`] for NaN or infinite arguments; [`ArmError::Unreachable`]
+/// (`inner = 0`, `outer = 2 l`) beyond the disk.
+///
+/// # Example
+/// ```
+/// use planar_arm::kinematics::ik2_equal;
+/// use planar_arm::nalgebra::Point2;
+///
+/// let [a, b] = ik2_equal(1.0, &Point2::origin()).unwrap();
+/// assert_eq!(a, b);
+/// assert_eq!(a[1], std::f64::consts::PI);
+/// ```
+#[inline]
+pub fn ik2_equal(l: f64, target: &Point2<f64>) -> Result<[SVector<f64, 2>; 2], ArmError> {
+    check_lengths(&[l])?;
+    let (x, y) = target_coordinates(target)?;
+    let a = l.abs();
+    annulus_check(x.hypot(y), 0.0, 2.0 * a)?;
+    let solutions = if a == 0.0 {
+        [(0.0, 0.0); 2]
+    } else {
+        let (x, y) = (x / a, y / a);
+        let r = x.hypot(y);
+        if r == 0.0 {
+            [(0.0, PI); 2]
+        } else {
+            // q2 / 2 = acos(r / 2), computed as an atan2 that stays accurate near r = 2.
+            let half = ((2.0 - r) * (2.0 + r)).max(0.0).sqrt().atan2(r);
+            let theta = y.atan2(x);
+            [(theta - half, 2.0 * half), (theta + half, -2.0 * half)]
+        }
+    };
+    Ok(ik2_signed(l, l, solutions))
+}
+
+/// Closed-form inverse kinematics of a three-link arm: both solutions that put the tip at
+/// `target.translation` with the last link at the absolute angle `phi = target.rotation`.
+///
+/// The wrist (joint 3) must be at `(x - l3 cos phi, y - l3 sin phi)`; the first two links reach
+/// it by [`ik2_equal`] when `l1 == l2` and by [`ik2`] otherwise, and `q3 = phi - q1 - q2` (the
+/// paper misprints this as `-q2 - q1`). Index 0 has `sin q2 >= 0`; angles are in (-pi, pi].
+///
+/// # Errors
+/// [`ArmError::NonFinite`] for NaN or infinite arguments; [`ArmError::Unreachable`] when the
+/// wrist point lies outside the two-link annulus, with `radius` the wrist's distance from the
+/// base and `inner`, `outer` the two-link radii.
+///
+/// # Example
+/// ```
+/// use planar_arm::kinematics::ik3;
+/// use planar_arm::nalgebra::{Isometry2, Vector2};
+///
+/// let target = Isometry2::new(Vector2::new(1.2, 0.4), 0.3);
+/// let [q, _] = ik3(1.0, 0.8, 0.2, &target).unwrap();
+/// assert!((q[0] + q[1] + q[2] - 0.3).abs() < 1e-12);
+/// ```
+#[inline]
+pub fn ik3(
+    l1: f64,
+    l2: f64,
+    l3: f64,
+    target: &Isometry2<f64>,
+) -> Result<[SVector<f64, 3>; 2], ArmError> {
+    check_lengths(&[l1, l2, l3])?;
+    let t = target.translation.vector;
+    let rotation = target.rotation.complex();
+    if !(t.x.is_finite() && t.y.is_finite() && rotation.re.is_finite() && rotation.im.is_finite()) {
+        return Err(ArmError::NonFinite { argument: "target" });
+    }
+    let phi = target.rotation.angle();
+    let (s, c) = phi.sin_cos();
+    let wrist = Point2::new(t.x - l3 * c, t.y - l3 * s);
+    if !(wrist.x.is_finite() && wrist.y.is_finite()) {
+        let (a1, a2) = (l1.abs(), l2.abs());
+        return Err(ArmError::Unreachable {
+            radius: f64::INFINITY,
+            inner: (a1 - a2).abs(),
+            outer: a1 + a2,
+            distance: f64::INFINITY,
+        });
+    }
+    let solutions = if l1 == l2 {
+        ik2_equal(l1, &wrist)?
+    } else {
+        ik2(l1, l2, &wrist)?
+    };
+    Ok(solutions.map(|q| SVector::<f64, 3>::new(q[0], q[1], wrap_angle(phi - q[0] - q[1]))))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kinematics::test_support::{angle_gap, fk, in_range, pose_of, Rng, PAIRS, TRIPLES};
+    use crate::kinematics::REACH_TOLERANCE;
+    use core::f64::consts::TAU;
+    use nalgebra::Vector3;
+    use proptest::prelude::*;
+
+    fn check_two_link_solutions(l1: f64, l2: f64, target: Point2<f64>, q: &[SVector<f64, 2>; 2]) {
+        let scale = l1.abs() + l2.abs();
+        for (branch, qb) in q.iter().enumerate() {
+            let (x, y, _) = fk(&[l1, l2], qb.as_slice());
+            assert!(
+                (x - target.x).hypot(y - target.y) <= 1e-12 * scale,
+                "l = ({l1}, {l2}), target {target}, branch {branch}: reached ({x}, {y})"
+            );
+            assert!(qb.iter().all(|a| in_range(*a)), "{qb} not in (-pi, pi]");
+            let s2 = qb[1].sin();
+            if branch == 0 {
+                assert!(s2 >= -1e-15, "branch 0 has sin q2 = {s2}");
+            } else {
+                assert!(s2 <= 1e-15, "branch 1 has sin q2 = {s2}");
+            }
+        }
+    }
+
+    #[test]
+    fn ik2_round_trip_over_dense_workspace() {
+        for (l1, l2) in PAIRS {
+            let (inner, outer) = ((l1 - l2).abs(), l1 + l2);
+            for i in 0..=48 {
+                let r = inner + (outer - inner) * f64::from(i) / 48.0;
+                for j in 0..72 {
+                    let theta = f64::from(j) * TAU / 72.0;
+                    let target = Point2::new(r * theta.cos(), r * theta.sin());
+                    let q = ik2(l1, l2, &target).unwrap();
+                    check_two_link_solutions(l1, l2, target, &q);
+                    if l1 == l2 {
+                        let qe = ik2_equal(l1, &target).unwrap();
+                        check_two_link_solutions(l1, l2, target, &qe);
+                        for (a, b) in q.iter().zip(&qe) {
+                            assert!(angle_gap(a[0], b[0]) < 1e-6 && angle_gap(a[1], b[1]) < 1e-6);
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn ik2_recovers_sampled_configurations() {
+        let mut rng = Rng(1);
+        for (l1, l2) in PAIRS {
+            for _ in 0..2000 {
+                let q = Vector2::new(rng.angle(), rng.angle());
+                if q[1].sin().abs() < 1e-3 {
+                    continue;
+                }
+                let (x, y, _) = fk(&[l1, l2], q.as_slice());
+                let target = Point2::new(x, y);
+                let solutions = ik2(l1, l2, &target).unwrap();
+                check_two_link_solutions(l1, l2, target, &solutions);
+                let same = &solutions[usize::from(q[1].sin() < 0.0)];
+                assert!(
+                    angle_gap(same[0], q[0]) < 1e-8 && angle_gap(same[1], q[1]) < 1e-8,
+                    "l = ({l1}, {l2}): {q} came back as {same}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn signed_and_zero_lengths() {
+        let mut rng = Rng(2);
+        for (l1, l2) in [(-1.0, 0.5), (1.0, -0.5), (-0.7, -1.3), (-1.0, -1.0)] {
+            for _ in 0..500 {
+                let q = Vector2::new(rng.angle(), rng.angle());
+                let (x, y, _) = fk(&[l1, l2], q.as_slice());
+                let target = Point2::new(x, y);
+                check_two_link_solutions(l1, l2, target, &ik2(l1, l2, &target).unwrap());
+                if l1 == l2 {
+                    check_two_link_solutions(l1, l2, target, &ik2_equal(l1, &target).unwrap());
+                }
+            }
+        }
+        // One link of length zero: the work-space is a circle.
+        let on_circle = Point2::new(0.6, 0.8);
+        check_two_link_solutions(0.0, 1.0, on_circle, &ik2(0.0, 1.0, &on_circle).unwrap());
+        check_two_link_solutions(1.0, 0.0, on_circle, &ik2(1.0, 0.0, &on_circle).unwrap());
+        assert!(ik2(0.0, 1.0, &Point2::new(0.5, 0.0)).is_err());
+        // Both zero: only the origin.
+        assert_eq!(
+            ik2(0.0, 0.0, &Point2::origin()).unwrap(),
+            [Vector2::zeros(); 2]
+        );
+        assert!(ik2_equal(0.0, &Point2::new(1e-300, 0.0)).is_err());
+    }
+
+    #[test]
+    fn boundary_targets_give_one_configuration() {
+        for (l1, l2) in PAIRS {
+            let (inner, outer) = ((l1 - l2).abs(), l1 + l2);
+            for j in 0..36 {
+                let (s, c) = (f64::from(j) * TAU / 36.0).sin_cos();
+                // On the outer circle: stretched, q2 = 0.
+                let [a, b] = ik2(l1, l2, &Point2::new(outer * c, outer * s)).unwrap();
+                assert!(
+                    a[1].abs() < 1e-6
+                        && angle_gap(a[0], b[0]) < 1e-6
+                        && angle_gap(a[1], b[1]) < 1e-6
+                );
+                // Just outside, within the tolerance: clamped onto the circle, identical branches.
+                let out = outer * (1.0 + 0.5 * REACH_TOLERANCE);
+                let [a, b] = ik2(l1, l2, &Point2::new(out * c, out * s)).unwrap();
+                assert_eq!(a, b);
+                assert_eq!(a[1], 0.0);
+                // On the inner circle: folded, q2 = pi.
+                if inner > 0.0 {
+                    let [a, b] = ik2(l1, l2, &Point2::new(inner * c, inner * s)).unwrap();
+                    assert!(angle_gap(a[1], PI) < 1e-6 && angle_gap(a[0], b[0]) < 1e-6);
+                    let inside = inner - 0.25 * REACH_TOLERANCE * outer;
+                    let [a, b] = ik2(l1, l2, &Point2::new(inside * c, inside * s)).unwrap();
+                    assert_eq!(a, b);
+                    assert_eq!(a[1], PI);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn unreachable_targets_report_the_distance() {
+        for (l1, l2) in PAIRS {
+            let (inner, outer) = ((l1 - l2).abs(), l1 + l2);
+            for d in [3.0 * REACH_TOLERANCE, 1e-6, 0.1, 10.0] {
+                let r = outer * (1.0 + d);
+                match ik2(l1, l2, &Point2::new(0.0, -r)) {
+                    Err(ArmError::Unreachable {
+                        radius,
+                        inner: i,
+                        outer: o,
+                        distance,
+                    }) => {
+                        assert_eq!((radius, i, o), (r, inner, outer));
+                        assert!((distance - (r - outer)).abs() <= 1e-15 * r && distance > 0.0);
+                    }
+                    other => panic!("expected Unreachable, got {other:?}"),
+                }
+                let r = inner - outer * d;
+                if r > 0.0 {
+                    match ik2(l1, l2, &Point2::new(-r, 0.0)) {
+                        Err(ArmError::Unreachable { distance, .. }) => {
+                            assert!((distance - outer * d).abs() <= 1e-12 * outer);
+                        }
+                        other => panic!("expected Unreachable, got {other:?}"),
+                    }
+                }
+            }
+            if l1 != l2 {
+                assert_eq!(
+                    ik2(l1, l2, &Point2::origin()),
+                    Err(ArmError::Unreachable {
+                        radius: 0.0,
+                        inner,
+                        outer,
+                        distance: inner
+                    })
+                );
+            }
+        }
+        assert!(matches!(
+            ik2_equal(1.0, &Point2::new(3.0, 0.0)),
+            Err(ArmError::Unreachable { distance, .. }) if distance == 1.0
+        ));
+    }
+
+    #[test]
+    fn origin_with_equal_links() {
+        for l in [1.0, 0.25, 7.0] {
+            let expected = [Vector2::new(0.0, PI); 2];
+            for origin in [Point2::origin(), Point2::new(-0.0, -0.0)] {
+                assert_eq!(ik2_equal(l, &origin).unwrap(), expected);
+                assert_eq!(ik2(l, l, &origin).unwrap(), expected);
+                let (x, y, _) = fk(&[l, l], &[0.0, PI]);
+                assert!(x.hypot(y) < 1e-15 * l);
+            }
+            // Three links whose wrist must sit at the origin.
+            let (l3, phi) = (0.3 * l, 2.0_f64);
+            let target = Isometry2::new(Vector2::new(l3 * phi.cos(), l3 * phi.sin()), phi);
+            for q in ik3(l, l, l3, &target).unwrap() {
+                assert_eq!((q[0], q[1]), (0.0, PI));
+                assert!(angle_gap(q[2], phi - PI) < 1e-15);
+            }
+        }
+    }
+
+    #[test]
+    fn ik3_round_trip_and_reachability() {
+        let mut rng = Rng(3);
+        for (l1, l2, l3) in TRIPLES {
+            let reach = l1 + l2 + l3;
+            let (mut solved, mut refused) = (0, 0);
+            for _ in 0..20_000 {
+                let r = reach * rng.range(0.0, 1.05);
+                let (theta, phi) = (rng.angle(), rng.range(-10.0, 10.0));
+                let (x, y) = (r * theta.cos(), r * theta.sin());
+                let target = Isometry2::new(Vector2::new(x, y), phi);
+                let wrist = (x - l3 * phi.cos()).hypot(y - l3 * phi.sin());
+                let (inner, outer) = ((l1 - l2).abs(), l1 + l2);
+                let margin = 1e-9 * outer;
+                match ik3(l1, l2, l3, &target) {
+                    Ok(solutions) => {
+                        solved += 1;
+                        assert!(wrist >= inner - 2.0 * margin && wrist <= outer + 2.0 * margin);
+                        for (branch, q) in solutions.iter().enumerate() {
+                            let (tx, ty, tphi) = fk(&[l1, l2, l3], q.as_slice());
+                            assert!((tx - x).hypot(ty - y) < 1e-12 * reach);
+                            assert!(angle_gap(tphi, phi) < 1e-12);
+                            assert!(q.iter().all(|a| in_range(*a)));
+                            let s2 = q[1].sin();
+                            assert!(if branch == 0 {
+                                s2 >= -1e-15
+                            } else {
+                                s2 <= 1e-15
+                            });
+                        }
+                    }
+                    Err(ArmError::Unreachable {
+                        radius,
+                        inner: i,
+                        outer: o,
+                        distance,
+                    }) => {
+                        refused += 1;
+                        assert!(wrist < inner || wrist > outer);
+                        assert!((radius - wrist).abs() < 1e-12 * reach);
+                        assert_eq!((i, o), (inner, outer));
+                        let expected = if wrist > outer {
+                            wrist - outer
+                        } else {
+                            inner - wrist
+                        };
+                        assert!((distance - expected).abs() < 1e-12 * reach && distance > 0.0);
+                    }
+                    Err(e) => panic!("unexpected {e:?}"),
+                }
+            }
+            assert!(
+                solved > 1000 && refused > 500,
+                "{solved} solved, {refused} refused"
+            );
+        }
+    }
+
+    #[test]
+    fn ik3_recovers_sampled_configurations() {
+        let mut rng = Rng(4);
+        for (l1, l2, l3) in TRIPLES {
+            for _ in 0..2000 {
+                let q = Vector3::new(rng.angle(), rng.angle(), rng.angle());
+                if q[1].sin().abs() < 1e-3 {
+                    continue;
+                }
+                let target = pose_of(&[l1, l2, l3], &q);
+                let solutions = ik3(l1, l2, l3, &target).unwrap();
+                let same = &solutions[usize::from(q[1].sin() < 0.0)];
+                for k in 0..3 {
+                    assert!(angle_gap(same[k], q[k]) < 1e-8, "{q} came back as {same}");
+                }
+            }
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(4000))]
+
+        #[test]
+        fn ik2_round_trip_for_random_lengths(
+            l1 in 1e-3..1e3_f64,
+            l2 in 1e-3..1e3_f64,
+            u in 0.0..=1.0_f64,
+            theta in -PI..PI,
+        ) {
+            let (inner, outer) = ((l1 - l2).abs(), l1 + l2);
+            let r = inner + (outer - inner) * u;
+            let target = Point2::new(r * theta.cos(), r * theta.sin());
+            let q = ik2(l1, l2, &target).unwrap();
+            check_two_link_solutions(l1, l2, target, &q);
+        }
+    }
+}
