@@ -41,6 +41,7 @@ fn arm(n: usize, seed: &mut u64) -> ArmSpec {
             })
             .collect(),
         gravity: ratio(981, 100),
+        payload: None,
     }
 }
 

@@ -146,8 +146,8 @@ mod dyn_arm {
     use planar_arm::Link;
 
     /// URDF of a planar arm: `continuous` joints about z, each link along its frame's x with
-    /// the next joint at `(length, 0, 0)` and the centre of mass at `(com, 0, 0)`. `ixx` and
-    /// `iyy` only need to make a valid tensor; rotation about z sees `izz` alone.
+    /// the next joint at `(length, 0, 0)` and the centre of mass at `(com.x, com.y, 0)`. `ixx`
+    /// and `iyy` only need to make a valid tensor; rotation about z sees `izz` alone.
     pub fn urdf(name: &str, links: &[Link]) -> String {
         let mut s =
             format!("<?xml version=\"1.0\"?>\n<robot name=\"{name}\">\n  <link name=\"base\"/>\n");
@@ -160,12 +160,13 @@ mod dyn_arm {
             let offset = if i == 0 { 0.0 } else { links[i - 1].length };
             let inertia = l.inertia.max(1e-9);
             s.push_str(&format!(
-                "  <link name=\"link{k}\">\n    <inertial>\n      <origin xyz=\"{com:e} 0 0\" rpy=\"0 0 0\"/>\n      \
+                "  <link name=\"link{k}\">\n    <inertial>\n      <origin xyz=\"{com_x:e} {com_y:e} 0\" rpy=\"0 0 0\"/>\n      \
                  <mass value=\"{mass:e}\"/>\n      <inertia ixx=\"{inertia:e}\" ixy=\"0\" ixz=\"0\" iyy=\"{inertia:e}\" iyz=\"0\" izz=\"{izz:e}\"/>\n    \
                  </inertial>\n  </link>\n  <joint name=\"joint{k}\" type=\"continuous\">\n    <parent link=\"{parent}\"/>\n    \
                  <child link=\"link{k}\"/>\n    <origin xyz=\"{offset:e} 0 0\" rpy=\"0 0 0\"/>\n    <axis xyz=\"0 0 1\"/>\n  </joint>\n",
                 k = i + 1,
-                com = l.com,
+                com_x = l.com.x,
+                com_y = l.com.y,
                 mass = l.mass,
                 izz = l.inertia,
             ));
@@ -200,18 +201,17 @@ mod dyn_arm {
 /// and forward dynamics.
 fn agreement<A: PlanarArm<N> + Default, const N: usize>(name: &str) -> (f64, f64) {
     let arm = A::default();
-    let links = A::LINKS;
-    let g = A::GRAVITY;
+    let model = arm.model();
     let mut vs_ref = 0.0_f64;
     #[cfg(not(feature = "bench-dynibo"))]
     let vs_dyn = f64::NAN;
     #[cfg(feature = "bench-dynibo")]
     let (mut robot, mut vs_dyn) = {
         assert!(
-            (g - 9.80665).abs() < 1e-15,
+            (model.gravity - 9.80665).abs() < 1e-15,
             "{name}: dynibo's gravity is fixed"
         );
-        (dyn_arm::robot(name, &links), 0.0_f64)
+        (dyn_arm::robot(name, &model.links), 0.0_f64)
     };
     for k in 0..100 {
         let q = state::<N>(3 * k + 1, 3.0);
@@ -223,12 +223,12 @@ fn agreement<A: PlanarArm<N> + Default, const N: usize>(name: &str) -> (f64, f64
         vs_ref = vs_ref
             .max(rel_err(
                 &tau,
-                &reference::inverse_dynamics(&links, g, &q, &qd, &qdd),
+                &reference::inverse_dynamics(&model, &q, &qd, &qdd),
             ))
-            .max(rel_err(&m, &reference::mass_matrix(&links, &q)))
+            .max(rel_err(&m, &reference::mass_matrix(&model, &q)))
             .max(rel_err(
                 &fd,
-                &reference::forward_dynamics(&links, g, &q, &qd, &tau),
+                &reference::forward_dynamics(&model, &q, &qd, &tau),
             ));
         #[cfg(feature = "bench-dynibo")]
         {
@@ -265,8 +265,7 @@ fn bench_arm<A: PlanarArm<N> + Default, const N: usize>(c: &mut Criterion, set: 
     eprintln!("agreement {name}: max relative difference vs reference {vs_ref:.1e}, vs dynibo {vs_dyn:.1e}");
 
     let arm = A::default();
-    let links = A::LINKS;
-    let g = A::GRAVITY;
+    let model = arm.model();
     let q = state::<N>(101, 3.0);
     let qd = state::<N>(102, 2.0);
     let qdd = state::<N>(103, 2.0);
@@ -292,8 +291,7 @@ fn bench_arm<A: PlanarArm<N> + Default, const N: usize>(c: &mut Criterion, set: 
     group.bench_function("reference/rnea", |b| {
         b.iter(|| {
             reference::inverse_dynamics(
-                black_box(&links),
-                black_box(g),
+                black_box(&model),
                 black_box(&q),
                 black_box(&qd),
                 black_box(&qdd),
@@ -304,8 +302,7 @@ fn bench_arm<A: PlanarArm<N> + Default, const N: usize>(c: &mut Criterion, set: 
     group.bench_function("reference/rnea_batched_trig", |b| {
         b.iter(|| {
             reference::inverse_dynamics_batched_trig(
-                black_box(&links),
-                black_box(g),
+                black_box(&model),
                 black_box(&q),
                 black_box(&qd),
                 black_box(&qdd),
@@ -313,13 +310,12 @@ fn bench_arm<A: PlanarArm<N> + Default, const N: usize>(c: &mut Criterion, set: 
         });
     });
     group.bench_function("reference/crba", |b| {
-        b.iter(|| reference::mass_matrix(black_box(&links), black_box(&q)));
+        b.iter(|| reference::mass_matrix(black_box(&model), black_box(&q)));
     });
     group.bench_function("reference/aba", |b| {
         b.iter(|| {
             reference::forward_dynamics(
-                black_box(&links),
-                black_box(g),
+                black_box(&model),
                 black_box(&q),
                 black_box(&qd),
                 black_box(&tau),
@@ -341,7 +337,7 @@ fn bench_arm<A: PlanarArm<N> + Default, const N: usize>(c: &mut Criterion, set: 
     #[cfg(feature = "bench-dynibo")]
     {
         // Storage reused across calls, as dynibo's docs advise.
-        let mut robot = dyn_arm::robot(&name, &links);
+        let mut robot = dyn_arm::robot(&name, &model.links);
         let mut out = vec![0.0; N];
         let mut mass = vec![0.0; N * N];
         let (q, qd, qdd, tau) = (

@@ -298,17 +298,18 @@ fn compare<A: PlanarArm<N>, const N: usize>(arm: &A, samples: u64) -> f64 {
         let u = (seed >> 11) as f64 / (1u64 << 53) as f64;
         6.0 * u - 3.0
     };
+    let model = arm.model();
     let mut worst: f64 = 0.0;
     for _ in 0..samples {
         let q = SVector::<f64, N>::from_fn(|_, _| next());
         let qd = SVector::<f64, N>::from_fn(|_, _| next());
         let qdd = SVector::<f64, N>::from_fn(|_, _| next());
         let tau = arm.inverse_dynamics(&q, &qd, &qdd);
-        let tau_ref = reference::inverse_dynamics(&A::LINKS, A::GRAVITY, &q, &qd, &qdd);
+        let tau_ref = reference::inverse_dynamics(&model, &q, &qd, &qdd);
         let m = arm.mass_matrix(&q);
-        let m_ref = reference::mass_matrix(&A::LINKS, &q);
+        let m_ref = reference::mass_matrix(&model, &q);
         let qdd_back = arm.forward_dynamics(&q, &qd, &tau_ref);
-        let qdd_ref = reference::forward_dynamics(&A::LINKS, A::GRAVITY, &q, &qd, &tau_ref);
+        let qdd_ref = reference::forward_dynamics(&model, &q, &qd, &tau_ref);
         worst = worst
             .max((tau - tau_ref).amax() / tau_ref.amax().max(1.0))
             .max((m - m_ref).amax() / m_ref.amax())

@@ -217,7 +217,7 @@ fn two_link_panel<A: PlanarArm<2>>(
     area: &DrawingArea<SVGBackend<'_>, Shift>,
     rng: &mut Rng,
 ) -> Result<(), Box<dyn Error>> {
-    let [l1, l2] = A::LINKS.map(|l| l.length);
+    let [l1, l2] = arm.links().map(|l| l.length);
     let w = arm.workspace();
     let (inner, outer) = (w.inner_radius(), w.outer_radius());
     let shape = if inner == 0.0 {
@@ -262,7 +262,7 @@ fn three_link_panel<A>(
 where
     A: PlanarArm<3> + ClosedFormIk<3, Target = Isometry2<f64>>,
 {
-    let [l1, l2, l3] = A::LINKS.map(|l| l.length);
+    let [l1, l2, l3] = arm.links().map(|l| l.length);
     let all = arm.workspace();
     let usable = DexterousWorkspace::of_lengths(l1, l2, l3);
     let outer = all.outer_radius();

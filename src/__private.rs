@@ -55,6 +55,7 @@ pub const fn term(
     kind: u8,
     angle: &'static [i32],
     powers: &'static [(Var, u32)],
+    params: &'static [(&'static str, u32)],
 ) -> Term {
     let trig = match kind {
         0 => Trig::One,
@@ -65,5 +66,19 @@ pub const fn term(
         coeff: Rational::new(numer, denom),
         trig,
         powers,
+        params,
+    }
+}
+
+/// The sign for Coulomb friction: 0 at zero (unlike `f64::signum`), NaN for NaN.
+#[inline(always)]
+#[must_use]
+pub fn sign(x: f64) -> f64 {
+    if x > 0.0 {
+        1.0
+    } else if x < 0.0 {
+        -1.0
+    } else {
+        x * 0.0
     }
 }

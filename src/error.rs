@@ -29,6 +29,16 @@ pub enum ArmError {
         /// The documented threshold below which `|measure|` counts as singular.
         threshold: f64,
     },
+    /// A parameter of the arm is outside its physical range (see
+    /// [`Model::check`](crate::Model::check)).
+    OutOfRange {
+        /// Which value: `"mass"`, `"length"`, `"payload mass"`, ...
+        what: &'static str,
+        /// The link it belongs to (0-based), or `None` for the payload and gravity.
+        link: Option<usize>,
+        /// The value found.
+        value: f64,
+    },
     /// An iterative solver did not reach the requested tolerance.
     NoConvergence {
         /// Iterations spent.
@@ -57,6 +67,10 @@ impl fmt::Display for ArmError {
                 f,
                 "singular configuration: |{measure}| is below the threshold {threshold}"
             ),
+            Self::OutOfRange { what, link, value } => match link {
+                Some(i) => write!(f, "link {}: {what} = {value} is out of range", i + 1),
+                None => write!(f, "{what} = {value} is out of range"),
+            },
             Self::NoConvergence {
                 iterations,
                 residual,

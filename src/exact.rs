@@ -122,7 +122,7 @@ pub enum Var {
     Qdd(usize),
 }
 
-/// One term `coeff x trig x product of powers`.
+/// One term `coeff x params x trig x product of powers`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Term {
     /// The exact coefficient.
@@ -131,12 +131,22 @@ pub struct Term {
     pub trig: Trig,
     /// Rates and accelerations with their exponents (empty for a function of `q` alone).
     pub powers: &'static [(Var, u32)],
+    /// Run-time parameters (the arm's `f64` fields named by `self.NAME`) with their
+    /// exponents; empty for a term whose coefficient is a number.
+    pub params: &'static [(&'static str, u32)],
 }
 
 impl Term {
-    /// The term's value.
+    /// The term's value, for a term without run-time parameters (NaN if it has some: use
+    /// [`eval_with`](Self::eval_with)).
     #[must_use]
     pub fn eval(&self, q: &[f64], qd: &[f64]) -> f64 {
+        self.eval_with(q, qd, &|_| f64::NAN)
+    }
+
+    /// The term's value, each run-time parameter's value given by `param(name)`.
+    #[must_use]
+    pub fn eval_with(&self, q: &[f64], qd: &[f64], param: &dyn Fn(&str) -> f64) -> f64 {
         let angle = |k: &[i32]| -> f64 { k.iter().zip(q).map(|(&k, &x)| f64::from(k) * x).sum() };
         let t = match self.trig {
             Trig::One => 1.0,
@@ -151,7 +161,12 @@ impl Term {
                 Var::Qdd(_) => f64::NAN,
             })
             .product();
-        self.coeff.to_f64() * t * m
+        let k: f64 = self
+            .params
+            .iter()
+            .map(|&(name, e)| param(name).powi(i32::try_from(e).unwrap_or(i32::MAX)))
+            .product();
+        self.coeff.to_f64() * k * t * m
     }
 }
 
@@ -184,12 +199,15 @@ const fn same_angle(a: &[i32], b: &[i32]) -> bool {
     true
 }
 
-/// The constant term (atom `1`, no rates) of a sum; zero if absent.
+/// The constant term (atom `1`, no rates, no run-time parameter) of a sum; zero if absent.
 #[must_use]
 pub const fn constant_term(terms: &[Term]) -> Rational {
     let mut i = 0;
     while i < terms.len() {
-        if matches!(terms[i].trig, Trig::One) && terms[i].powers.is_empty() {
+        if matches!(terms[i].trig, Trig::One)
+            && terms[i].powers.is_empty()
+            && terms[i].params.is_empty()
+        {
             return terms[i].coeff;
         }
         i += 1;
@@ -197,7 +215,8 @@ pub const fn constant_term(terms: &[Term]) -> Rational {
     Rational::ZERO
 }
 
-/// The coefficient of the atom `trig` (no rates) in a sum; zero if absent.
+/// The coefficient of the atom `trig` (no rates, no run-time parameter) in a sum; zero if
+/// absent.
 const fn coefficient(terms: &[Term], cos: bool, angle: &[i32]) -> Rational {
     let mut i = 0;
     while i < terms.len() {
@@ -205,7 +224,11 @@ const fn coefficient(terms: &[Term], cos: bool, angle: &[i32]) -> Rational {
             (Trig::Cos(k), true) | (Trig::Sin(k), false) => k,
             _ => &[],
         };
-        if !k.is_empty() && same_angle(k, angle) && terms[i].powers.is_empty() {
+        if !k.is_empty()
+            && same_angle(k, angle)
+            && terms[i].powers.is_empty()
+            && terms[i].params.is_empty()
+        {
             return terms[i].coeff;
         }
         i += 1;
@@ -226,8 +249,16 @@ pub const fn sin_coefficient(terms: &[Term], angle: &[i32]) -> Rational {
     coefficient(terms, false, angle)
 }
 
-/// The value of a sum of terms at `(q, qd)`.
+/// The value of a sum of terms at `(q, qd)` (NaN if a term has run-time parameters: use
+/// [`eval_with`]).
 #[must_use]
 pub fn eval(terms: &[Term], q: &[f64], qd: &[f64]) -> f64 {
     terms.iter().map(|t| t.eval(q, qd)).sum()
+}
+
+/// The value of a sum of terms at `(q, qd)`, each run-time parameter's value given by
+/// `param(name)`.
+#[must_use]
+pub fn eval_with(terms: &[Term], q: &[f64], qd: &[f64], param: &dyn Fn(&str) -> f64) -> f64 {
+    terms.iter().map(|t| t.eval_with(q, qd, param)).sum()
 }

@@ -89,14 +89,53 @@
 //! # The attributes
 //!
 //! - `#[arm(gravity = G)]` on the struct (optional): gravity of magnitude `G` acts along -y;
-//!   the default is standard gravity 9.80665; `gravity = 0` is a horizontal arm.
+//!   the default is standard gravity 9.80665; `gravity = 0` is a horizontal arm. Also on the
+//!   struct: `payload = P` (kg), a body rigidly held at the tip of the last link, with optional
+//!   `payload_inertia = I` (kg m^2, about its own centre) and `payload_com = (x, y)` (m, its
+//!   centre from the tip in the last link's frame).
 //! - Each field of type [`Revolute`] is a link, base first, with
 //!   `#[arm(length = L, mass = M, inertia = I, com = C)]`: `inertia` is the moment of inertia
-//!   about the link's centre of mass (default: uniform rod, `M L^2 / 12`), `com` the distance
-//!   of the centre of mass from the link's own joint along the link (default `L / 2`; it may
-//!   be negative or beyond the link, a counterweight). `length` and `mass` are required.
+//!   about the link's centre of mass (default: uniform rod, `M L^2 / 12`), `com` the centre of
+//!   mass along the link from its own joint (default `L / 2`; it may be negative or beyond the
+//!   link, a counterweight), or a pair `com = (x, y)` with `y` perpendicular to the link,
+//!   counter-clockwise. `length` and `mass` are required. Joint keys with MuJoCo's names and
+//!   meanings: `armature = A` (reflected rotor inertia, kg m^2, added to M's diagonal),
+//!   `damping = B` (viscous torque `B qd_i`), `frictionloss = F` (Coulomb torque
+//!   `F sign(qd_i)`, `sign(0) = 0`).
 //! - Values are exact: integers, decimals (`0.35` is `7/20`, not an `f64`), fractions `a/b`
 //!   and `+ - * /` with parentheses. Nothing passes through a float before the final emission.
+//! - Any value may be a run-time parameter, `self.NAME`: an `f64` field of the struct read when
+//!   a method is called, for a payload that changes, identified or calibrated values, values
+//!   loaded from a file. Values stay polynomial in the parameters (division by a parameter is a
+//!   compile error), so the derivation stays exact over polynomials in them; each method's
+//!   rustdoc shows its formulas with the parameters by name. Other fields are left alone.
+//!
+//! ```
+//! use planar_arm::prelude::*;
+//!
+//! #[derive(PlanarArm)]
+//! #[arm(gravity = 9.81, payload = self.load)]
+//! struct Picker {
+//!     #[arm(length = 0.4, mass = 3, armature = 0.05, damping = 0.2)]
+//!     upper: Revolute,
+//!     #[arm(length = 0.3, mass = self.fore_mass, com = (0.12, 0.01), frictionloss = 0.4)]
+//!     fore: Revolute,
+//!     fore_mass: f64,
+//!     load: f64,
+//! }
+//!
+//! let mut arm = Picker { upper: Revolute, fore: Revolute, fore_mass: 1.1, load: 0.0 };
+//! let (q, qd) = (Vector2::new(0.2, 0.9), Vector2::new(0.5, -1.0));
+//! let empty = arm.inverse_dynamics(&q, &qd, &Vector2::zeros());
+//! arm.load = 2.0; // picked up: the next call sees it
+//! let loaded = arm.inverse_dynamics(&q, &qd, &Vector2::zeros());
+//! assert!(loaded[0] > empty[0]);
+//! // tau = M qdd + bias, with bias = c + g + f (friction included).
+//! let qdd = Vector2::new(1.0, -2.0);
+//! let (m, h) = arm.mass_matrix_and_bias(&q, &qd);
+//! assert!((arm.inverse_dynamics(&q, &qd, &qdd) - (m * qdd + h)).norm() < 1e-12);
+//! assert_eq!(arm.friction(&qd)[1], -0.4);
+//! ```
 //!
 //! # Conventions
 //!
@@ -129,6 +168,7 @@ mod error;
 pub mod exact;
 pub mod kinematics;
 mod link;
+mod model;
 pub mod reference;
 pub mod trig;
 
@@ -142,6 +182,7 @@ pub struct ReadmeDoctests;
 
 pub use error::ArmError;
 pub use link::{Link, Revolute};
+pub use model::{Model, Payload};
 pub use nalgebra;
 pub use planar_arm_core as symbolic;
 pub use planar_arm_derive::PlanarArm;
@@ -154,7 +195,7 @@ pub mod prelude {
     pub use crate::kinematics::{
         ClosedFormIk, DexterousWorkspace, DlsOptions, IkTarget, TipForce, TipWrench, Workspace,
     };
-    pub use crate::{ArmError, Link, PlanarArm, Revolute};
+    pub use crate::{ArmError, Link, Model, Payload, PlanarArm, Revolute};
     pub use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2};
 }
 
@@ -163,7 +204,7 @@ pub mod prelude {
 ///
 /// Conventions: `q[0]` is link 1's angle from +x, `q[i]` (i > 0) is link i+1's angle relative to
 /// link i; all zeros is the arm stretched along +x. Gravity acts along -y. The equations of
-/// motion are `tau = M(q) qdd + c(q, qd) + g(q)`.
+/// motion are `tau = M(q) qdd + c(q, qd) + g(q) + f(qd)`, f the joint friction.
 ///
 /// # Numeric range
 ///
@@ -174,13 +215,31 @@ pub mod prelude {
 /// arithmetic on the exact formulas: a torque that exceeds `f64::MAX` (velocity terms grow as
 /// `qd^2`) is infinite. The infallible methods pass NaN through; use the `try_` methods, which
 /// answer NaN or infinite input, and an overflowed result, with [`ArmError::NonFinite`].
+///
+/// # Run-time parameters out of range
+///
+/// A value written `self.NAME` is read from its field at every call and cannot be checked at
+/// compile time. Nothing panics whatever it holds, but the promises above hold only for a
+/// physical arm: positive lengths and masses, non-negative inertias, armatures, damping and
+/// frictionloss. With a non-physical value (a negative mass, say) M may be indefinite and
+/// `forward_dynamics` meaningless (finite wherever the pivot floor of its factorisation
+/// applies); a NaN parameter makes the results that depend on it NaN, which the `try_`
+/// methods report as [`ArmError::NonFinite`] with argument `"result"`. Check identified or
+/// loaded values before use; [`Model::check`] does.
 pub trait PlanarArm<const N: usize> {
-    /// The numeric link parameters, base first.
-    const LINKS: [Link; N];
-    /// Magnitude of gravity along -y, m/s^2.
-    const GRAVITY: f64;
-    /// The exact symbolic result the generated code evaluates.
+    /// The exact symbolic result the generated code evaluates. Coefficients that involve
+    /// run-time parameters carry them by name ([`exact::Term::params`]).
     const EXACT: exact::Derivation<N>;
+
+    /// The arm's numeric description now: links, gravity and payload, with every run-time
+    /// parameter read from its field. This is what the [`reference`](mod@reference)
+    /// implementations and a simulator take to model the same arm.
+    fn model(&self) -> Model<N>;
+
+    /// The numeric link parameters, base first (`self.model().links`).
+    fn links(&self) -> [Link; N] {
+        self.model().links
+    }
 
     /// The mass (sensitivity) matrix M(q): symmetric positive definite.
     fn mass_matrix(&self, q: &SVector<f64, N>) -> SMatrix<f64, N, N>;
@@ -190,21 +249,37 @@ pub trait PlanarArm<const N: usize> {
     fn coriolis_matrix(&self, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> SMatrix<f64, N, N>;
     /// The torques that hold the arm against gravity, g(q) = dV/dq.
     fn gravity(&self, q: &SVector<f64, N>) -> SVector<f64, N>;
-    /// The joint torques tau = M qdd + c + g.
+    /// The joint friction torques f(qd): viscous `damping qd_i` plus Coulomb
+    /// `frictionloss sign(qd_i)` (MuJoCo's `damping` and `frictionloss`), with `sign(0) = 0`.
+    /// The Coulomb term is discontinuous at `qd_i = 0`; an integrator stepping through zero
+    /// rate chatters around it (a stiction model is not part of this crate).
+    fn friction(&self, qd: &SVector<f64, N>) -> SVector<f64, N>;
+    /// The bias h(q, qd) = c + g + f: every torque but the inertial one, so that
+    /// `inverse_dynamics(q, qd, qdd) = mass_matrix(q) * qdd + bias(q, qd)` (Pinocchio's
+    /// `nonLinearEffects`; MuJoCo's `qfrc_bias` with the passive joint friction added).
+    fn bias(&self, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> SVector<f64, N>;
+    /// `(mass_matrix(q), bias(q, qd))` in one pass that shares the trigonometry and common
+    /// subexpressions: what a computed-torque or operational-space controller needs every cycle.
+    fn mass_matrix_and_bias(
+        &self,
+        q: &SVector<f64, N>,
+        qd: &SVector<f64, N>,
+    ) -> (SMatrix<f64, N, N>, SVector<f64, N>);
+    /// The joint torques tau = M qdd + c + g + f.
     fn inverse_dynamics(
         &self,
         q: &SVector<f64, N>,
         qd: &SVector<f64, N>,
         qdd: &SVector<f64, N>,
     ) -> SVector<f64, N>;
-    /// The joint accelerations qdd that solve M qdd = tau - c - g.
+    /// The joint accelerations qdd that solve M qdd = tau - c - g - f.
     fn forward_dynamics(
         &self,
         q: &SVector<f64, N>,
         qd: &SVector<f64, N>,
         tau: &SVector<f64, N>,
     ) -> SVector<f64, N>;
-    /// Kinetic energy, J.
+    /// Kinetic energy, J: the links, the payload and the rotors (`armature qd_i^2 / 2`).
     fn kinetic_energy(&self, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> f64;
     /// Potential energy, J, measured from y = 0 at the base.
     fn potential_energy(&self, q: &SVector<f64, N>) -> f64;
@@ -228,7 +303,8 @@ pub trait PlanarArm<const N: usize> {
     /// The reachable region: an annulus with inner radius `max(0, 2 max l - sum l)` and outer
     /// radius `sum l`.
     fn workspace(&self) -> Workspace {
-        let lengths: [f64; N] = core::array::from_fn(|i| Self::LINKS[i].length);
+        let links = self.links();
+        let lengths: [f64; N] = core::array::from_fn(|i| links[i].length);
         Workspace::of_lengths(&lengths)
     }
 

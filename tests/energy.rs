@@ -81,7 +81,8 @@ fn drift<A: PlanarArm<N>, const N: usize>(
         dt,
         seconds,
     );
-    let scale: f64 = A::LINKS.iter().map(|l| l.mass * l.length).sum::<f64>() * A::GRAVITY;
+    let model = arm.model();
+    let scale: f64 = model.links.iter().map(|l| l.mass * l.length).sum::<f64>() * model.gravity;
     (worst, scale)
 }
 

@@ -210,7 +210,7 @@ mod determinism {
     use ::planar_arm::symbolic::generate::{closed_forms, generate, Header};
     use ::planar_arm::symbolic::methods::Derived;
     use ::planar_arm::symbolic::ring::{int, ratio};
-    use ::planar_arm::symbolic::{ArmSpec, LinkSpec};
+    use ::planar_arm::symbolic::{ArmSpec, LinkSpec, PayloadSpec};
     use quote::{format_ident, quote};
 
     fn arms() -> Vec<ArmSpec> {
@@ -219,23 +219,30 @@ mod determinism {
             links: vec![
                 LinkSpec::rod(ratio(7, 20), ratio(3, 2)),
                 LinkSpec {
-                    length: ratio(1, 3),
-                    mass: int(2),
                     inertia: int(0),
-                    com: ratio(-1, 7),
+                    com: (ratio(-1, 7), int(0)),
+                    ..LinkSpec::rod(ratio(1, 3), int(2))
                 },
                 LinkSpec {
-                    length: ratio(9, 10),
-                    mass: ratio(1, 1000),
                     inertia: ratio(1, 12),
-                    com: int(3),
+                    com: (int(3), ratio(1, 5)),
+                    armature: ratio(1, 50),
+                    damping: ratio(1, 10),
+                    frictionloss: ratio(3, 10),
+                    ..LinkSpec::rod(ratio(9, 10), ratio(1, 1000))
                 },
             ],
             gravity: ratio(981, 100),
+            payload: Some(PayloadSpec {
+                mass: ratio(1, 2),
+                inertia: ratio(1, 100),
+                com: (ratio(1, 10), ratio(-1, 10)),
+            }),
         });
         arms.push(ArmSpec {
             links: vec![LinkSpec::rod(ratio(1, 1000), int(1000)); 4],
             gravity: ratio(980_665, 100_000),
+            payload: None,
         });
         arms
     }

@@ -81,7 +81,7 @@ fn strict_lints_accept_derived_arms() {
     let pose: Isometry2<f64> = three.tip_pose(&q3);
     assert!(three.inverse_kinematics(&pose).is_ok());
     assert!(three.tip_wrench(&q3, &q3).is_ok());
-    let links: [Link; 3] = Three::LINKS;
+    let links: [Link; 3] = three.links();
     assert!(links.iter().all(|l| l.mass > 0.0));
 
     let four = Four::default();

@@ -1,5 +1,5 @@
 //! Kinematics and statics of derived arms, checked against oracles that share nothing with the
-//! generated formulas: an independent forward kinematics from `LINKS`, central finite
+//! generated formulas: an independent forward kinematics from `links()`, central finite
 //! differences, virtual work, brute-force sampling of configurations and orientations.
 //!
 //! The arms: the paper's two equal links, an unequal pair, three equal links, three links with
@@ -157,8 +157,8 @@ impl Rng {
     }
 }
 
-fn lengths<A: PlanarArm<N>, const N: usize>() -> [f64; N] {
-    A::LINKS.map(|l| l.length)
+fn lengths<A: PlanarArm<N>, const N: usize>(arm: &A) -> [f64; N] {
+    arm.links().map(|l| l.length)
 }
 
 /// Forward kinematics from the link lengths alone: the tip and the last link's angle.
@@ -221,7 +221,7 @@ fn two_link_round_trip<A>(arm: &A)
 where
     A: PlanarArm<2> + ClosedFormIk<2, Target = Point2<f64>>,
 {
-    let l = lengths::<A, 2>();
+    let l = lengths(arm);
     let w = arm.workspace();
     let (inner, outer) = (w.inner_radius(), w.outer_radius());
     assert!((inner - (l[0] - l[1]).abs()).abs() < 1e-15 && outer == l[0] + l[1]);
@@ -368,7 +368,7 @@ fn three_link_round_trip<A>(arm: &A)
 where
     A: PlanarArm<3> + ClosedFormIk<3, Target = Isometry2<f64>>,
 {
-    let l = lengths::<A, 3>();
+    let l = lengths(arm);
     let (inner, outer) = ((l[0] - l[1]).abs(), l[0] + l[1]);
     let reach = l.iter().sum::<f64>();
     for i in 0..=24 {
@@ -425,7 +425,7 @@ fn three_link_inverse_kinematics_round_trips() {
 // Jacobian, statics and virtual work.
 
 fn jacobian_by_differences<A: PlanarArm<N>, const N: usize>(arm: &A, rng: &mut Rng) {
-    let l = lengths::<A, N>();
+    let l = lengths(arm);
     let reach: f64 = l.iter().sum();
     for _ in 0..100 {
         let q = rng.config::<N>();
@@ -457,7 +457,7 @@ fn jacobian_matches_central_differences_of_tip_pose() {
 }
 
 fn virtual_work<A: PlanarArm<N>, const N: usize>(arm: &A, rng: &mut Rng) {
-    let l = lengths::<A, N>();
+    let l = lengths(arm);
     let reach: f64 = l.iter().sum();
     for _ in 0..100 {
         let q = rng.config::<N>();
@@ -661,7 +661,7 @@ fn dexterous_by_brute_force<A>(arm: &A, rng: &mut Rng) -> DexterousWorkspace
 where
     A: PlanarArm<3> + ClosedFormIk<3, Target = Isometry2<f64>>,
 {
-    let l = lengths::<A, 3>();
+    let l = lengths(arm);
     let d = DexterousWorkspace::of_lengths(l[0], l[1], l[2]);
     let (a, b) = ((l[0] - l[1]).abs(), l[0] + l[1]);
     let all = arm.workspace();
@@ -762,7 +762,7 @@ fn tip_polar_radius_is_independent_of_q1() {
 }
 
 fn joint_positions_chain<A: PlanarArm<N>, const N: usize>(arm: &A, rng: &mut Rng) {
-    let l = lengths::<A, N>();
+    let l = lengths(arm);
     for _ in 0..200 {
         let q = rng.config::<N>();
         let joints = arm.joint_positions(&q);
@@ -795,7 +795,7 @@ fn joint_positions_are_consistent_with_tip_pose() {
 fn manipulability_is_l1_l2_sin_q2() {
     let mut rng = Rng(10);
     fn check<A: PlanarArm<N>, const N: usize>(arm: &A, rng: &mut Rng) {
-        let l = lengths::<A, N>();
+        let l = lengths(arm);
         for _ in 0..500 {
             let q = rng.config::<N>();
             let expected = (l[0] * l[1] * q[1].sin()).abs();
@@ -838,7 +838,7 @@ fn dls_converges<A: PlanarArm<N>, const N: usize>(arm: &A, rng: &mut Rng) {
             let q = arm
                 .inverse_kinematics_near(&target, &seed, &options)
                 .unwrap_or_else(|e| panic!("N = {N}, pose {pose}: {e}"));
-            let (tip, phi) = fk(&lengths::<A, N>(), &q);
+            let (tip, phi) = fk(&lengths(arm), &q);
             assert!((tip - goal.translation.vector).norm() <= 1e-10);
             if pose {
                 assert!(angle_gap(phi, goal.rotation.angle()) <= 1e-10);

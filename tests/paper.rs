@@ -276,6 +276,7 @@ fn rods(lengths: &[Rational], masses: &[Rational], gravity: Rational) -> ArmSpec
             .map(|(l, m)| LinkSpec::rod(l.clone(), m.clone()))
             .collect(),
         gravity,
+        payload: None,
     }
 }
 
@@ -754,7 +755,7 @@ fn three_link_inverse_kinematics() {
 #[test]
 fn three_link_usable_workspace() {
     // l = (2, 1, 1/2), l3 < |l1 - l2|: the annulus l3 + |l1 - l2| ..= l1 + l2 - l3 = 3/2 ..= 5/2.
-    let [a, b, h] = <ShortHand as PlanarArm<3>>::LINKS.map(|l| l.length);
+    let [a, b, h] = ShortHand::default().links().map(|l| l.length);
     let usable = DexterousWorkspace::of_lengths(a, b, h);
     assert_eq!(usable.disk_radius(), None);
     let (inner, outer) = usable.annulus().unwrap();
@@ -976,14 +977,13 @@ fn three_link_m_prime(c12: E) -> Matrix {
 fn three_link_link3_com_speed_squared() {
     // Only link 3 carries mass, as a point of mass 2 at its middle: T = |v_G3|^2.
     let point = |mass: i64| LinkSpec {
-        length: int(1),
-        mass: int(mass),
         inertia: int(0),
-        com: ratio(1, 2),
+        ..LinkSpec::rod(int(1), int(mass))
     };
     let arm = ArmSpec {
         links: vec![point(0), point(0), point(2)],
         gravity: int(0),
+        payload: None,
     };
     let v2 = Dynamics::derive(&arm).kinetic_energy;
     let speed = |c12: E| {
@@ -1010,6 +1010,7 @@ fn three_link_link3_com_speed_squared() {
     let cut = Kinematics::derive(&ArmSpec {
         links: vec![point(1), point(1), LinkSpec::rod(ratio(1, 2), int(1))],
         gravity: int(0),
+        payload: None,
     });
     let rate = |row: usize| {
         (0..3).fold(E(Expr::zero()), |acc, j| {
@@ -1025,6 +1026,7 @@ fn three_link_link3_com_speed_squared() {
     let arm2 = ArmSpec {
         links: vec![point(0), point(2)],
         gravity: int(0),
+        payload: None,
     };
     same(
         &Dynamics::derive(&arm2).kinetic_energy,

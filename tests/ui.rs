@@ -10,6 +10,7 @@ fn ui() {
     t.compile_fail("tests/ui/attr/*.rs");
     t.compile_fail("tests/ui/value/*.rs");
     t.compile_fail("tests/ui/physics/*.rs");
+    t.compile_fail("tests/ui/param/*.rs");
     t.compile_fail("tests/ui/stub/*.rs");
     t.pass("tests/ui/pass/*.rs");
 }

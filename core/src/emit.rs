@@ -17,8 +17,9 @@ use quote::quote;
 
 use crate::expr::Expr;
 use crate::methods::{two, Derived, Method};
+use crate::poly::Param;
 use crate::ring::{show, to_f64, to_i128_pair, Rational};
-use crate::slp::{Id, Input, Node};
+use crate::slp::{Emit, Id, Input, Node, Program};
 
 /// Why an arm cannot be emitted.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -101,10 +102,11 @@ pub fn local(name: &str) -> Ident {
     Ident::new(&format!("__{name}"), Span::mixed_site())
 }
 
-/// The local name of an input.
+/// The local name of an input; a run-time parameter's is `self_` and its field's name.
 #[must_use]
-pub fn input_name(i: Input) -> String {
+pub fn input_name(i: Input, params: &[Param]) -> String {
     match i {
+        Input::Param(k) => format!("self_{}", params.get(k).map_or("", |p| p.name())),
         Input::Q(j) => format!("q{}", j + 1),
         Input::Qd(j) => format!("qd{}", j + 1),
         Input::Qdd(j) => format!("qdd{}", j + 1),
@@ -154,7 +156,7 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
         inputs_used.insert(Input::Q(j));
     }
     for &i in &inputs_used {
-        taken.insert(input_name(i));
+        taken.insert(input_name(i, p.params()));
     }
     for &j in joints.keys() {
         taken.insert(format!("s{}", j + 1));
@@ -168,12 +170,20 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
         .collect();
 
     let mut statements = Vec::new();
+    // Run-time parameters are read from their fields once, at the top.
+    for &i in &inputs_used {
+        if let Input::Param(k) = i {
+            let name = local(&input_name(i, p.params()));
+            let field = Ident::new(p.params()[k].name(), Span::call_site());
+            statements.push(quote!(let #name: f64 = self.#field;));
+        }
+    }
     if !joints.is_empty() {
         // One call for all the angles: the kernel evaluates them two at a time in SIMD lanes.
         let mut angles = Vec::new();
         let mut pairs = Vec::new();
         for (&j, &(s, c)) in &joints {
-            angles.push(local(&input_name(Input::Q(j))));
+            angles.push(local(&input_name(Input::Q(j), &[])));
             let name = |used: bool, prefix: &str| {
                 if used {
                     local(&format!("{prefix}{}", j + 1))
@@ -208,7 +218,10 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
             }
         };
         let (prec, ts) = match node {
-            Node::Input(i) => (Prec::Atom, local(&input_name(*i)).into_token_stream()),
+            Node::Input(i) => (
+                Prec::Atom,
+                local(&input_name(*i, p.params())).into_token_stream(),
+            ),
             Node::Const(r) => (Prec::Atom, f64_tokens(r)?),
             Node::Sin(j) => (
                 Prec::Atom,
@@ -250,6 +263,14 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
             Node::Neg(a) => {
                 let a = paren(get(*a, &exprs), Prec::Atom);
                 (Prec::Sum, quote!(-#a))
+            }
+            Node::Abs(a) => {
+                let a = paren(get(*a, &exprs), Prec::Atom);
+                (Prec::Atom, quote!(#a.abs()))
+            }
+            Node::Sign(a) => {
+                let (_, a) = get(*a, &exprs);
+                (Prec::Atom, quote!(::planar_arm::__private::sign(#a)))
             }
         };
         let is_leaf = matches!(
@@ -309,9 +330,30 @@ fn syn_ident(ts: &TokenStream) -> Option<Ident> {
     }
 }
 
+/// An `f64` expression of a coefficient: a literal such as `(10.0 / 3.0)`, or for one with
+/// run-time parameters a block that reads them from `self` and evaluates the polynomial.
+///
+/// # Errors
+/// If a constant does not fit in `f64`.
+pub fn coefficient_tokens<C: Emit>(c: &C) -> Result<TokenStream, EmitError> {
+    if let Some(r) = c.rational() {
+        return f64_tokens(&r);
+    }
+    let mut p = Program::new();
+    let id = p.coefficient(c);
+    let rendered = render(&Method {
+        program: p,
+        outputs: vec![("value".into(), id)],
+        evaluation: String::new(),
+    })?;
+    let statements = &rendered.statements;
+    let out = &rendered.outputs[0];
+    Ok(quote!({ #(#statements)* #out }))
+}
+
 /// Human-readable formulas for a method's doc comment.
 #[must_use]
-pub fn formula_doc(title: &str, rows: &[(String, &Expr)]) -> String {
+pub fn formula_doc<C: Emit>(title: &str, rows: &[(String, &Expr<C>)]) -> String {
     let mut s = format!("{title}\n\n```text\n");
     for (name, e) in rows {
         let _ = writeln!(s, "{name} = {e}");
@@ -324,9 +366,13 @@ pub fn formula_doc(title: &str, rows: &[(String, &Expr)]) -> String {
 ///
 /// # Errors
 /// Names the first entry whose coefficient does not fit.
-pub fn check_representable(d: &Derived) -> Result<(), EmitError> {
-    let check = |what: &str, e: &Expr| -> Result<(), EmitError> {
-        for (_, _, c) in e.terms() {
+pub fn check_representable<C: Emit>(d: &Derived<C>) -> Result<(), EmitError> {
+    let check = |what: &str, e: &Expr<C>| -> Result<(), EmitError> {
+        for (_, _, c) in e
+            .terms()
+            .flat_map(|(m, t, c)| c.parts().into_iter().map(move |(_, r)| (m, t, r)))
+        {
+            let c = &c;
             if to_i128_pair(c).is_none() || to_f64(c).is_none() || c.is_zero() {
                 return Err(EmitError {
                     message: format!(

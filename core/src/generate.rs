@@ -7,11 +7,12 @@ use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
 use crate::emit::{
-    check_representable, f64_tokens, formula_doc, input_name, local, render, EmitError,
+    check_representable, coefficient_tokens, formula_doc, input_name, local, render, EmitError,
 };
 use crate::expr::Expr;
 use crate::methods::{Derived, Method};
 use crate::ring::to_i128_pair;
+use crate::slp::Emit;
 use crate::slp::Input;
 use crate::trig::Trig;
 
@@ -74,7 +75,7 @@ fn emit_fn(n: usize, f: Fn<'_>) -> Result<TokenStream, EmitError> {
                 if used.iter().any(|&u| u) {
                     let pats = (0..n).map(|j| {
                         if used[j] {
-                            let id = local(&input_name(kind(j)));
+                            let id = local(&input_name(kind(j), &[]));
                             quote!(#id)
                         } else {
                             quote!(_)
@@ -139,50 +140,75 @@ fn vector(ids: &[proc_macro2::Ident]) -> TokenStream {
     quote!(::planar_arm::__private::vector([#(#ids),*]))
 }
 
-fn exact_terms(e: &Expr) -> Result<TokenStream, EmitError> {
+fn exact_terms<C: Emit>(e: &Expr<C>) -> Result<TokenStream, EmitError> {
     let mut terms = Vec::new();
-    for (m, t, c) in e.terms() {
-        let (num, den) = to_i128_pair(c).ok_or_else(|| EmitError {
-            message: format!("exact coefficient {c} does not fit in i128"),
-        })?;
-        let (num, den) = (Literal::i128_unsuffixed(num), Literal::i128_unsuffixed(den));
-        let (kind, angle) = match t {
-            Trig::One => (0u8, &[][..]),
-            Trig::Cos(a) => (1, a.coefficients()),
-            Trig::Sin(a) => (2, a.coefficients()),
-        };
-        let kind = Literal::u8_unsuffixed(kind);
-        let angle = angle.iter().map(|&k| Literal::i32_unsuffixed(k));
-        let powers = m.powers().map(|(v, e)| {
-            let (k, j) = match v {
-                crate::expr::Var::Qd(j) => (quote!(Qd), j),
-                crate::expr::Var::Qdd(j) => (quote!(Qdd), j),
+    for (m, t, coeff) in e.terms() {
+        for (pm, c) in coeff.parts() {
+            let c = &c;
+            let (num, den) = to_i128_pair(c).ok_or_else(|| EmitError {
+                message: format!("exact coefficient {c} does not fit in i128"),
+            })?;
+            let (num, den) = (Literal::i128_unsuffixed(num), Literal::i128_unsuffixed(den));
+            let (kind, angle) = match t {
+                Trig::One => (0u8, &[][..]),
+                Trig::Cos(a) => (1, a.coefficients()),
+                Trig::Sin(a) => (2, a.coefficients()),
             };
-            let (j, e) = (Literal::usize_unsuffixed(j), Literal::u32_unsuffixed(e));
-            quote!((::planar_arm::__private::#k(#j), #e))
-        });
-        terms.push(quote!(::planar_arm::__private::term(#num, #den, #kind, &[#(#angle),*], &[#(#powers),*])));
+            let kind = Literal::u8_unsuffixed(kind);
+            let angle = angle.iter().map(|&k| Literal::i32_unsuffixed(k));
+            let powers = m.powers().map(|(v, e)| {
+                let (k, j) = match v {
+                    crate::expr::Var::Qd(j) => (quote!(Qd), j),
+                    crate::expr::Var::Qdd(j) => (quote!(Qdd), j),
+                };
+                let (j, e) = (Literal::usize_unsuffixed(j), Literal::u32_unsuffixed(e));
+                quote!((::planar_arm::__private::#k(#j), #e))
+            });
+            let params = pm.powers().iter().map(|(p, e)| {
+                let (name, e) = (p.name(), Literal::u32_unsuffixed(*e));
+                quote!((#name, #e))
+            });
+            terms.push(quote!(::planar_arm::__private::term(#num, #den, #kind, &[#(#angle),*], &[#(#powers),*], &[#(#params),*])));
+        }
     }
     Ok(quote!(&[#(#terms),*]))
 }
 
-fn link_tokens(d: &Derived) -> Result<Vec<TokenStream>, EmitError> {
-    d.arm
+/// `::planar_arm::Model { ... }` with the arm's values, read from `self` where they are
+/// run-time parameters.
+fn model_tokens<C: Emit>(d: &Derived<C>) -> Result<TokenStream, EmitError> {
+    let v = coefficient_tokens::<C>;
+    let vec2 = |c: &(C, C)| -> Result<TokenStream, EmitError> {
+        let (x, y) = (v(&c.0)?, v(&c.1)?);
+        Ok(quote!(::planar_arm::nalgebra::Vector2::new(#x, #y)))
+    };
+    let links = d
+        .arm
         .links
         .iter()
         .map(|l| {
-            let (length, mass, inertia, com) = (
-                f64_tokens(&l.length)?,
-                f64_tokens(&l.mass)?,
-                f64_tokens(&l.inertia)?,
-                f64_tokens(&l.com)?,
-            );
-            Ok(quote!(::planar_arm::Link { length: #length, mass: #mass, inertia: #inertia, com: #com }))
+            let (length, mass, inertia, com) =
+                (v(&l.length)?, v(&l.mass)?, v(&l.inertia)?, vec2(&l.com)?);
+            let (armature, damping, frictionloss) =
+                (v(&l.armature)?, v(&l.damping)?, v(&l.frictionloss)?);
+            Ok(quote!(::planar_arm::Link {
+                length: #length, mass: #mass, inertia: #inertia, com: #com,
+                armature: #armature, damping: #damping, frictionloss: #frictionloss,
+            }))
         })
-        .collect()
+        .collect::<Result<Vec<_>, EmitError>>()?;
+    let gravity = v(&d.arm.gravity)?;
+    let payload = match &d.arm.payload {
+        None => quote!(::planar_arm::Payload::NONE),
+        Some(p) => {
+            let (mass, inertia, com) = (v(&p.mass)?, v(&p.inertia)?, vec2(&p.com)?);
+            quote!(::planar_arm::Payload { mass: #mass, inertia: #inertia, com: #com })
+        }
+    };
+    Ok(quote!(::planar_arm::Model { links: [#(#links),*], gravity: #gravity, payload: #payload }))
 }
 
-fn rows_doc<'a>(prefix: &str, entries: &'a [Expr]) -> Vec<(String, &'a Expr)> {
+fn rows_doc<'a, C>(prefix: &str, entries: &'a [Expr<C>]) -> Vec<(String, &'a Expr<C>)> {
     entries
         .iter()
         .enumerate()
@@ -195,7 +221,7 @@ fn rows_doc<'a>(prefix: &str, entries: &'a [Expr]) -> Vec<(String, &'a Expr)> {
 /// # Errors
 /// If a derived constant does not fit in `f64` or in the `i128` of the exact `const` data.
 #[allow(clippy::too_many_lines)] // one block per generated method, kept side by side
-pub fn generate(d: &Derived, header: &Header) -> Result<TokenStream, EmitError> {
+pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream, EmitError> {
     check_representable(d)?;
     let n = d.arm.links.len();
     let nn = Literal::usize_unsuffixed(n);
@@ -276,6 +302,79 @@ pub fn generate(d: &Derived, header: &Header) -> Result<TokenStream, EmitError> 
             finish: Box::new(vector),
         },
     )?);
+    let friction_rows: Vec<(String, String)> = d
+        .arm
+        .links
+        .iter()
+        .enumerate()
+        .map(|(i, l)| {
+            let mut terms = Vec::new();
+            if !l.damping.is_zero() {
+                terms.push(format!("{} qd{}", l.damping, i + 1));
+            }
+            if !l.frictionloss.is_zero() {
+                terms.push(format!("{} sign(qd{})", l.frictionloss, i + 1));
+            }
+            if terms.is_empty() {
+                terms.push("0".into());
+            }
+            (format!("f{}", i + 1), terms.join(" + "))
+        })
+        .collect();
+    let mut friction_doc = "The joint friction torques f(qd): viscous `damping qd_i` plus Coulomb \
+                            `frictionloss sign(qd_i)`, with sign(0) = 0 (MuJoCo's `damping` and \
+                            `frictionloss`). The Coulomb term jumps at `qd_i = 0`.\n\n```text\n"
+        .to_string();
+    for (name, f) in &friction_rows {
+        let _ = writeln!(friction_doc, "{name} = {f}");
+    }
+    friction_doc.push_str("```\n");
+    fns.push(emit_fn(
+        n,
+        Fn {
+            name: "friction",
+            params: &[qd],
+            ret: svec.clone(),
+            doc: friction_doc,
+            method: d.friction_method(),
+            touch: TokenStream::new(),
+            finish: Box::new(vector),
+        },
+    )?);
+    fns.push(emit_fn(
+        n,
+        Fn {
+            name: "bias",
+            params: &[q, qd],
+            ret: svec.clone(),
+            doc: "The bias h(q, qd) = c + g + f: every torque but the inertial one, so that \
+                  `inverse_dynamics(q, qd, qdd) = mass_matrix(q) qdd + bias(q, qd)` (Pinocchio's \
+                  `nonLinearEffects`, MuJoCo's `qfrc_bias` plus its passive joint friction)."
+                .to_string(),
+            method: d.bias_method(),
+            touch: TokenStream::new(),
+            finish: Box::new(vector),
+        },
+    )?);
+    fns.push(emit_fn(
+        n,
+        Fn {
+            name: "mass_matrix_and_bias",
+            params: &[q, qd],
+            ret: quote!((#smat, #svec)),
+            doc: "M(q) and h(q, qd) = c + g + f in one pass, sharing the trigonometry and every \
+                  common subexpression: what computed-torque and operational-space controllers \
+                  need every cycle."
+                .to_string(),
+            method: d.mass_matrix_and_bias_method(),
+            touch: TokenStream::new(),
+            finish: Box::new(move |ids| {
+                let m = matrix(n, n, &ids[..n * n]);
+                let h = vector(&ids[n * n..]);
+                quote!((#m, #h))
+            }),
+        },
+    )?);
     fns.push(emit_fn(
         n,
         Fn {
@@ -283,7 +382,8 @@ pub fn generate(d: &Derived, header: &Header) -> Result<TokenStream, EmitError> 
             params: &[q, qd, qdd],
             ret: svec.clone(),
             doc: formula_doc(
-                "Lagrange's equation, tau_i = d/dt dL/dqd_i - dL/dq_i, expanded.",
+                "Lagrange's equation, tau_i = d/dt dL/dqd_i - dL/dq_i, expanded, plus the joint \
+                 friction f(qd) (see `friction`).",
                 &rows_doc("tau", &dy.torques),
             ),
             method: d.inverse_dynamics_method(),
@@ -292,9 +392,9 @@ pub fn generate(d: &Derived, header: &Header) -> Result<TokenStream, EmitError> 
         },
     )?);
     let fd_doc = match n {
-        1 => "qdd = (tau - c - g) / M11.".to_string(),
-        2 => "qdd = M^-1 (tau - c - g) in closed form (Cramer's rule, det = M11 M22 - M12^2 > 0).".to_string(),
-        _ => "qdd = M^-1 (tau - c - g) by an unrolled L D L^T factorisation of M (no square roots, no allocation).".to_string(),
+        1 => "qdd = (tau - c - g - f) / M11.".to_string(),
+        2 => "qdd = M^-1 (tau - c - g - f) in closed form (Cramer's rule, det = M11 M22 - M12^2 > 0).".to_string(),
+        _ => "qdd = M^-1 (tau - c - g - f) by an unrolled L D L^T factorisation of M (no square roots, no allocation).".to_string(),
     };
     fns.push(emit_fn(
         n,
@@ -422,8 +522,7 @@ pub fn generate(d: &Derived, header: &Header) -> Result<TokenStream, EmitError> 
         finish: Box::new(vector),
     })?);
 
-    let links = link_tokens(d)?;
-    let gravity = f64_tokens(&d.arm.gravity)?;
+    let model = model_tokens(d)?;
     let m_exact = dy
         .mass_matrix
         .iter()
@@ -453,8 +552,6 @@ pub fn generate(d: &Derived, header: &Header) -> Result<TokenStream, EmitError> 
     Ok(quote! {
         #[automatically_derived]
         impl #impl_generics ::planar_arm::PlanarArm<#nn> for #ty #where_clause {
-            const LINKS: [::planar_arm::Link; #nn] = [#(#links),*];
-            const GRAVITY: f64 = #gravity;
             const EXACT: ::planar_arm::exact::Derivation<#nn> = ::planar_arm::exact::Derivation {
                 kinetic_energy: #t_exact,
                 potential_energy: #v_exact,
@@ -462,6 +559,10 @@ pub fn generate(d: &Derived, header: &Header) -> Result<TokenStream, EmitError> 
                 coriolis: [#(#c_exact),*],
                 gravity: [#(#g_exact),*],
             };
+            #[inline]
+            fn model(&self) -> ::planar_arm::Model<#nn> {
+                #model
+            }
             #(#fns)*
         }
     })
@@ -469,17 +570,21 @@ pub fn generate(d: &Derived, header: &Header) -> Result<TokenStream, EmitError> 
 
 /// A readable summary of the derivation for docs: link table and Lagrangian.
 #[must_use]
-pub fn summary(d: &Derived) -> String {
+pub fn summary<C: Emit>(d: &Derived<C>) -> String {
     let mut s = String::new();
     for (i, l) in d.arm.links.iter().enumerate() {
         let _ = writeln!(
             s,
-            "link {}: length {}, mass {}, inertia {}, com {}",
+            "link {}: length {}, mass {}, inertia {}, com ({}, {}), armature {}, damping {}, frictionloss {}",
             i + 1,
             l.length,
             l.mass,
             l.inertia,
-            l.com
+            l.com.0,
+            l.com.1,
+            l.armature,
+            l.damping,
+            l.frictionloss
         );
     }
     let _ = writeln!(s, "gravity {}", d.arm.gravity);
@@ -489,7 +594,7 @@ pub fn summary(d: &Derived) -> String {
 /// Closed-form inverse kinematics and inverse statics for two and three links (the paper's
 /// solutions, specialised by inlining the arm's constant lengths); nothing for other `N`.
 #[must_use]
-pub fn closed_forms(d: &Derived, header: &Header) -> TokenStream {
+pub fn closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
     let Header {
         impl_generics,
         ty,
@@ -500,7 +605,7 @@ pub fn closed_forms(d: &Derived, header: &Header) -> TokenStream {
         .arm
         .links
         .iter()
-        .map(|l| f64_tokens(&l.length).unwrap_or_else(|_| quote!(0.0)))
+        .map(|l| coefficient_tokens(&l.length).unwrap_or_else(|_| quote!(0.0)))
         .collect();
     let target = local("target");
     let (q, tau) = (local("q"), local("tau"));
@@ -581,8 +686,6 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
     quote! {
         #[automatically_derived]
         impl #impl_generics ::planar_arm::PlanarArm<#nn> for #ty #where_clause {
-            const LINKS: [::planar_arm::Link; #nn] = [::planar_arm::Link { length: 1.0, mass: 1.0, inertia: 1.0, com: 0.0 }; #nn];
-            const GRAVITY: f64 = 0.0;
             const EXACT: ::planar_arm::exact::Derivation<#nn> = ::planar_arm::exact::Derivation {
                 kinetic_energy: &[],
                 potential_energy: &[],
@@ -594,6 +697,10 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
             fn coriolis(&self, _: #v, _: #v) -> #sv #body
             fn coriolis_matrix(&self, _: #v, _: #v) -> #m #body
             fn gravity(&self, _: #v) -> #sv #body
+            fn friction(&self, _: #v) -> #sv #body
+            fn bias(&self, _: #v, _: #v) -> #sv #body
+            fn mass_matrix_and_bias(&self, _: #v, _: #v) -> (#m, #sv) #body
+            fn model(&self) -> ::planar_arm::Model<#nn> #body
             fn inverse_dynamics(&self, _: #v, _: #v, _: #v) -> #sv #body
             fn forward_dynamics(&self, _: #v, _: #v, _: #v) -> #sv #body
             fn kinetic_energy(&self, _: #v, _: #v) -> f64 #body

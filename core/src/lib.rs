@@ -38,11 +38,13 @@
 
 pub mod expr;
 pub mod mechanics;
+pub mod poly;
 pub mod ring;
 pub mod trig;
 
 pub use expr::{Expr, Monomial, Var};
-pub use mechanics::{ArmSpec, Dynamics, Kinematics, LinkSpec};
+pub use mechanics::{ArmSpec, Body, Dynamics, Kinematics, LinkSpec, PayloadSpec};
+pub use poly::{Param, Poly};
 pub use ring::{Coefficient, Rational};
 pub use trig::{Angle, Trig};
 pub mod emit;

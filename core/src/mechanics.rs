@@ -9,7 +9,7 @@ use crate::expr::{Expr, Monomial, Var};
 use crate::ring::{int, ratio, Coefficient, Rational};
 use crate::trig::Angle;
 
-/// One revolute link: exact parameters.
+/// One revolute link: exact parameters (or polynomials in run-time parameters).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct LinkSpec<C = Rational> {
     /// Joint-to-joint length.
@@ -18,31 +18,57 @@ pub struct LinkSpec<C = Rational> {
     pub mass: C,
     /// Moment of inertia about the centre of mass.
     pub inertia: C,
-    /// Distance of the centre of mass from the link's own joint, along the link.
-    pub com: C,
+    /// The centre of mass in the link's frame: `.0` along the link from its own joint toward
+    /// the next, `.1` perpendicular to it, counter-clockwise.
+    pub com: (C, C),
+    /// Reflected rotor inertia at this link's joint (MuJoCo's `armature`): kinetic energy
+    /// `armature qd_i^2 / 2`, so it adds to `M_ii`.
+    pub armature: C,
+    /// Viscous friction at this link's joint: torque `damping qd_i`.
+    pub damping: C,
+    /// Coulomb friction at this link's joint: torque `frictionloss sign(qd_i)`.
+    pub frictionloss: C,
 }
 
-impl LinkSpec<Rational> {
-    /// A uniform rod: inertia `m l^2 / 12`, centre of mass at `l / 2`.
+impl<C: Coefficient> LinkSpec<C> {
+    /// A uniform rod: inertia `m l^2 / 12`, centre of mass at `(l / 2, 0)`, no armature, no
+    /// friction.
     #[must_use]
-    pub fn rod(length: Rational, mass: Rational) -> Self {
+    pub fn rod(length: C, mass: C) -> Self {
+        let zero = C::from_rational(int(0));
         Self {
-            inertia: &mass * &length * &length * ratio(1, 12),
-            com: &length * ratio(1, 2),
+            inertia: (mass.clone() * length.clone() * length.clone()).scale(&ratio(1, 12)),
+            com: (length.scale(&ratio(1, 2)), zero.clone()),
             length,
             mass,
+            armature: zero.clone(),
+            damping: zero.clone(),
+            frictionloss: zero,
         }
     }
 }
 
+/// A body rigidly held at the tip of the last link: a payload, a tool, a gripper.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PayloadSpec<C = Rational> {
+    /// Mass.
+    pub mass: C,
+    /// Moment of inertia about its own centre of mass.
+    pub inertia: C,
+    /// Its centre of mass relative to the tip, in the last link's frame.
+    pub com: (C, C),
+}
+
 /// A planar serial arm of revolute links, base first, with gravity of magnitude `gravity`
-/// along -y.
+/// along -y and perhaps a payload at the tip.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ArmSpec<C = Rational> {
     /// The links, base first.
     pub links: Vec<LinkSpec<C>>,
     /// Magnitude of gravity, along -y.
     pub gravity: C,
+    /// The body held at the tip, if any.
+    pub payload: Option<PayloadSpec<C>>,
 }
 
 impl ArmSpec<Rational> {
@@ -52,8 +78,65 @@ impl ArmSpec<Rational> {
         Self {
             links: vec![LinkSpec::rod(int(1), int(1)); n],
             gravity: int(0),
+            payload: None,
         }
     }
+}
+
+impl<C: Coefficient> ArmSpec<C> {
+    /// Whether any joint has friction (a non-zero damping or frictionloss).
+    #[must_use]
+    pub fn has_friction(&self) -> bool {
+        self.links
+            .iter()
+            .any(|l| !l.damping.is_zero() || !l.frictionloss.is_zero())
+    }
+
+    /// The rigid bodies the links carry, one per link: each link with the payload merged into
+    /// the last one, as `(mass, first moment about the link's joint in its frame, moment of
+    /// inertia about the joint)`, what the recursions need. The Lagrangian does not use this:
+    /// it sums the energies of the links and the payload separately.
+    #[must_use]
+    pub fn bodies(&self) -> Vec<Body<C>> {
+        let n = self.links.len();
+        self.links
+            .iter()
+            .enumerate()
+            .map(|(i, l)| {
+                let (cx, cy) = l.com.clone();
+                let mut body = Body {
+                    mass: l.mass.clone(),
+                    first: (l.mass.clone() * cx.clone(), l.mass.clone() * cy.clone()),
+                    inertia: l.inertia.clone()
+                        + l.mass.clone() * (cx.clone() * cx + cy.clone() * cy),
+                };
+                if let (Some(p), true) = (&self.payload, i + 1 == n) {
+                    let px = l.length.clone() + p.com.0.clone();
+                    let py = p.com.1.clone();
+                    body.mass = body.mass + p.mass.clone();
+                    body.first = (
+                        body.first.0 + p.mass.clone() * px.clone(),
+                        body.first.1 + p.mass.clone() * py.clone(),
+                    );
+                    body.inertia = body.inertia
+                        + p.inertia.clone()
+                        + p.mass.clone() * (px.clone() * px + py.clone() * py);
+                }
+                body
+            })
+            .collect()
+    }
+}
+
+/// A rigid body carried by one link, about that link's joint in the link's frame.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Body<C = Rational> {
+    /// Mass.
+    pub mass: C,
+    /// First moment of mass (mass times centre of mass) about the joint, link frame.
+    pub first: (C, C),
+    /// Moment of inertia about the joint.
+    pub inertia: C,
 }
 
 /// The equations of motion `tau = M(q) qdd + c(q, qd) + g(q)`, exact.
@@ -103,16 +186,29 @@ fn link_angle(i: usize) -> Angle {
     Angle::range(0, i + 1)
 }
 
-/// `(x, y)` of the point at distance `along` on link `i`, all earlier links full length.
-fn point_on_link<C: Coefficient>(arm: &ArmSpec<C>, i: usize, along: &C) -> (Expr<C>, Expr<C>) {
+/// `(x, y)` of the point `at` (in link `i`'s frame, from its joint) of link `i`, all earlier
+/// links full length.
+fn point_on_link<C: Coefficient>(arm: &ArmSpec<C>, i: usize, at: &(C, C)) -> (Expr<C>, Expr<C>) {
     let mut x = Expr::zero();
     let mut y = Expr::zero();
-    for (j, link) in arm.links.iter().enumerate().take(i + 1) {
-        let r = if j == i { along } else { &link.length };
-        x = x.add(&Expr::cos(r.clone(), link_angle(j)));
-        y = y.add(&Expr::sin(r.clone(), link_angle(j)));
+    for (j, link) in arm.links.iter().enumerate().take(i) {
+        x = x.add(&Expr::cos(link.length.clone(), link_angle(j)));
+        y = y.add(&Expr::sin(link.length.clone(), link_angle(j)));
     }
+    // R(phi_i) (a, b) = (a cos - b sin, a sin + b cos)
+    let (a, b) = at;
+    x = x
+        .add(&Expr::cos(a.clone(), link_angle(i)))
+        .sub(&Expr::sin(b.clone(), link_angle(i)));
+    y = y
+        .add(&Expr::sin(a.clone(), link_angle(i)))
+        .add(&Expr::cos(b.clone(), link_angle(i)));
     (x, y)
+}
+
+/// The end of link `i` in its own frame.
+fn link_end<C: Coefficient>(link: &LinkSpec<C>) -> (C, C) {
+    (link.length.clone(), C::from_rational(int(0)))
 }
 
 impl<C: Coefficient> Kinematics<C> {
@@ -122,7 +218,7 @@ impl<C: Coefficient> Kinematics<C> {
         let n = arm.links.len();
         let mut points = vec![(Expr::zero(), Expr::zero())];
         for i in 0..n {
-            points.push(point_on_link(arm, i, &arm.links[i].length));
+            points.push(point_on_link(arm, i, &link_end(&arm.links[i])));
         }
         let (x, y) = points[n].clone();
         let jacobian = vec![
@@ -152,16 +248,37 @@ impl<C: Coefficient> Dynamics<C> {
         let mut kinetic = Expr::zero();
         let mut potential = Expr::zero();
         let mut omega = Expr::zero();
-        for (i, link) in arm.links.iter().enumerate() {
-            omega = omega.add(&Expr::var(rate(i)));
-            let (x, y) = point_on_link(arm, i, &link.com);
+        // Each body: (link, centre of mass in the link's frame, mass, inertia about the centre).
+        let mut bodies: Vec<(usize, (C, C), &C, &C)> = arm
+            .links
+            .iter()
+            .enumerate()
+            .map(|(i, l)| (i, l.com.clone(), &l.mass, &l.inertia))
+            .collect();
+        if let (Some(p), Some(last)) = (&arm.payload, arm.links.last()) {
+            let at = (last.length.clone() + p.com.0.clone(), p.com.1.clone());
+            bodies.push((n - 1, at, &p.mass, &p.inertia));
+        }
+        let omegas: Vec<Expr<C>> = (0..n)
+            .map(|i| {
+                omega = omega.add(&Expr::var(rate(i)));
+                omega.clone()
+            })
+            .collect();
+        for (i, at, mass, inertia) in bodies {
+            let (x, y) = point_on_link(arm, i, &at);
             // Velocity of the centre of mass by the chain rule on its position.
             let (vx, vy) = (x.dt(n), y.dt(n));
             let v2 = vx.mul(&vx).add(&vy.mul(&vy));
             kinetic = kinetic
-                .add(&v2.scale_by(&link.mass).scale(&half))
-                .add(&omega.mul(&omega).scale_by(&link.inertia).scale(&half));
-            potential = potential.add(&y.scale_by(&(arm.gravity.clone() * link.mass.clone())));
+                .add(&v2.scale_by(mass).scale(&half))
+                .add(&omegas[i].mul(&omegas[i]).scale_by(inertia).scale(&half));
+            potential = potential.add(&y.scale_by(&(arm.gravity.clone() * mass.clone())));
+        }
+        // The rotors' kinetic energy: armature times the joint's own rate squared.
+        for (i, link) in arm.links.iter().enumerate() {
+            let qd = Expr::var(rate(i));
+            kinetic = kinetic.add(&qd.mul(&qd).scale_by(&link.armature).scale(&half));
         }
         let lagrangian = kinetic.sub(&potential);
         let torques: Vec<Expr<C>> = (0..n)
@@ -297,7 +414,9 @@ mod tests {
                     length: ratio(i as i64 + 2, 3),
                     mass: ratio(2 * i as i64 + 1, 2),
                     inertia: ratio(1, i as i64 + 5),
-                    com: ratio(1, i as i64 + 2),
+                    com: (ratio(1, i as i64 + 2), ratio(1 - i as i64, 7)),
+                    armature: ratio(i as i64, 10),
+                    ..LinkSpec::rod(int(1), int(1))
                 };
             }
             let d = Dynamics::derive(&arm);

@@ -11,25 +11,28 @@ use num_traits::{Signed, Zero};
 use crate::expr::Expr;
 use crate::mechanics::{ArmSpec, Dynamics, Kinematics};
 use crate::ring::Rational;
-use crate::slp::{Id, Input, OpCount, Program};
+use crate::slp::{Emit, Id, Input, OpCount, Program};
 use crate::trig::Angle;
 use crate::unrolled::{composite_mass_matrix, ldlt_solve, newton_euler, pivot_floor, Terms};
 
 /// Everything derived for one arm, ready to emit.
+///
+/// `C` is the coefficient ring: [`Rational`] for an arm whose values are all literals,
+/// [`Poly`](crate::poly::Poly) for one with run-time parameters.
 #[derive(Clone, Debug)]
-pub struct Derived {
+pub struct Derived<C = Rational> {
     /// The arm.
-    pub arm: ArmSpec,
+    pub arm: ArmSpec<C>,
     /// Its equations of motion.
-    pub dynamics: Dynamics,
+    pub dynamics: Dynamics<C>,
     /// Its kinematics.
-    pub kinematics: Kinematics,
+    pub kinematics: Kinematics<C>,
 }
 
-impl Derived {
+impl<C: Emit> Derived<C> {
     /// Derives dynamics and kinematics of the arm.
     #[must_use]
-    pub fn new(arm: &ArmSpec) -> Self {
+    pub fn new(arm: &ArmSpec<C>) -> Self {
         Self {
             dynamics: Dynamics::derive(arm),
             kinematics: Kinematics::derive(arm),
@@ -121,7 +124,7 @@ pub(crate) fn two(i: usize, j: usize) -> String {
 }
 
 /// The straight-line program of each generated method.
-impl Derived {
+impl<C: Emit> Derived<C> {
     /// `M(q)`: the cheaper (by [`OpCount`]) of the expanded entries and an unrolled
     /// composite-rigid-body recursion. Upper triangle; the lower one is the same nodes.
     #[must_use]
@@ -167,6 +170,84 @@ impl Derived {
         ])
     }
 
+    /// The bias `h(q, qd) = c + g + f`, everything but the inertial term: the cheaper of the
+    /// expanded formulas and an unrolled Newton-Euler recursion (no accelerations), plus
+    /// friction.
+    #[must_use]
+    pub fn bias_method(&self) -> Method {
+        cheapest(vec![
+            self.with_friction(self.expanded_bias_method()),
+            self.with_friction(self.newton_euler_method("h", Terms::BIAS)),
+        ])
+    }
+
+    fn expanded_bias_method(&self) -> Method {
+        let mut p = Program::new();
+        let h = self.expanded_bias(&mut p);
+        let outputs = h
+            .into_iter()
+            .enumerate()
+            .map(|(i, id)| (format!("h{}", i + 1), id))
+            .collect();
+        Method::new(p, outputs)
+    }
+
+    /// `c + g` from the expanded formulas.
+    fn expanded_bias(&self, p: &mut Program) -> Vec<Id> {
+        (0..self.n())
+            .map(|i| {
+                let e = self.dynamics.coriolis[i].add(&self.dynamics.gravity[i]);
+                p.expr(&e)
+            })
+            .collect()
+    }
+
+    /// `M(q)` and `h(q, qd) = c + g + f` in one program: one `sin_cos` per joint, and every
+    /// subexpression the two share (rotations, products of parameters) computed once. The
+    /// cheapest of the expanded and recursive forms of each, chosen together.
+    #[must_use]
+    pub fn mass_matrix_and_bias_method(&self) -> Method {
+        let mut candidates = Vec::new();
+        for composite in [false, true] {
+            for recursive in [false, true] {
+                let mut p = Program::new();
+                let m = if composite {
+                    composite_mass_matrix(&mut p, &self.arm)
+                } else {
+                    expanded_mass_matrix(&mut p, &self.dynamics)
+                };
+                let h = if recursive {
+                    newton_euler(&mut p, &self.arm, Terms::BIAS)
+                } else {
+                    self.expanded_bias(&mut p)
+                };
+                let f = self.friction_nodes(&mut p);
+                let mut outputs = matrix_outputs(&m);
+                for (i, (h, f)) in h.into_iter().zip(f).enumerate() {
+                    outputs.push((format!("h{}", i + 1), p.add(h, f)));
+                }
+                let how = match (composite, recursive) {
+                    (false, false) => String::new(),
+                    (c, r) => format!(
+                        "M {}, h {}.",
+                        if c {
+                            "by the composite-rigid-body algorithm unrolled for this arm"
+                        } else {
+                            "from the formulas"
+                        },
+                        if r {
+                            "by the recursive Newton-Euler algorithm unrolled for this arm"
+                        } else {
+                            "from the formulas"
+                        }
+                    ),
+                };
+                candidates.push(Method::new(p, outputs).described(&how));
+            }
+        }
+        cheapest(candidates)
+    }
+
     /// `tau = M qdd + c + g`: the cheaper of the expanded Lagrangian torques and an unrolled
     /// Newton-Euler recursion.
     #[must_use]
@@ -177,16 +258,17 @@ impl Derived {
         ])
     }
 
-    /// `tau` from the expanded Lagrangian torques, term by term.
+    /// `tau` from the expanded Lagrangian torques, term by term, plus friction.
     #[must_use]
     pub fn inverse_dynamics_lagrange_method(&self) -> Method {
-        self.vector_method("tau", &self.dynamics.torques)
+        self.with_friction(self.vector_method("tau", &self.dynamics.torques))
     }
 
-    /// `tau` by the planar recursive Newton-Euler algorithm unrolled for this arm.
+    /// `tau` by the planar recursive Newton-Euler algorithm unrolled for this arm, plus
+    /// friction.
     #[must_use]
     pub fn inverse_dynamics_newton_euler_method(&self) -> Method {
-        self.newton_euler_method("tau", Terms::ALL)
+        self.with_friction(self.newton_euler_method("tau", Terms::ALL))
     }
 
     fn newton_euler_method(&self, name: &str, terms: Terms) -> Method {
@@ -232,7 +314,7 @@ impl Derived {
         )
     }
 
-    fn vector_method(&self, name: &str, entries: &[Expr]) -> Method {
+    fn vector_method(&self, name: &str, entries: &[Expr<C>]) -> Method {
         let mut p = Program::new();
         let single = matches!(name, "kinetic" | "potential");
         let outputs = entries
@@ -268,22 +350,24 @@ impl Derived {
     }
 
     /// `det M` of a two-link arm as `det0 + f^2 sin^2 q2`: with `M11 = a + b cos q2`,
-    /// `M12 = e + f cos q2`, `M22 = d` and `b d = 2 e f` (always so for a planar arm),
+    /// `M12 = e + f cos q2`, `M22 = d` and `b d = 2 e f` (always so for a planar arm whose
+    /// centres of mass lie on the links),
     /// `M11 M22 - M12^2 = (a d - e^2 - f^2) + f^2 sin^2 q2`, where `det0 = det M(q2 = 0) > 0`.
     /// Both terms are non-negative, so unlike `M11 M22 - M12^2` it never cancels to zero or
     /// below. `None` if `M` does not have that form.
     fn two_link_det(&self, p: &mut Program) -> Option<Id> {
         use crate::trig::Trig;
         let q2 = Angle::new(vec![0, 1]);
-        let split = |e: &Expr| -> Option<(Rational, Rational)> {
-            let (mut k, mut c) = (Rational::zero(), Rational::zero());
+        let zero = || C::from_rational(Rational::zero());
+        let split = |e: &Expr<C>| -> Option<(C, C)> {
+            let (mut k, mut c) = (zero(), zero());
             for (mono, t, coeff) in e.terms() {
                 if mono.degree() != 0 {
                     return None;
                 }
                 match t {
-                    Trig::One => k += coeff,
-                    Trig::Cos(a) if *a == q2 => c += coeff,
+                    Trig::One => k = k + coeff.clone(),
+                    Trig::Cos(a) if *a == q2 => c = c + coeff.clone(),
                     _ => return None,
                 }
             }
@@ -293,20 +377,64 @@ impl Derived {
         let (a, b) = split(&mm[0][0])?;
         let (e, f) = split(&mm[0][1])?;
         let (d, d_cos) = split(&mm[1][1])?;
-        let two = Rational::from_integer(2.into());
-        if !d_cos.is_zero() || &b * &d != two * &e * &f {
+        if !d_cos.is_zero()
+            || b * d.clone() != (e.clone() * f.clone()).scale(&Rational::from_integer(2.into()))
+        {
             return None;
         }
-        let det0 = &a * &d - &e * &e - &f * &f;
-        if !det0.is_positive() {
+        let det0 = a * d - e.clone() * e - f.clone() * f.clone();
+        // With run-time parameters the sign is not known here; det0 is then det M at
+        // q2 = 0, positive for any physical arm.
+        if det0.rational().is_some_and(|r| !r.is_positive()) {
             return None;
         }
-        let det0 = p.constant(det0);
-        let f2 = p.constant(&f * &f);
+        let det0 = p.coefficient(&det0);
+        let f2 = p.coefficient(&(f.clone() * f));
         let (_, s2) = p.trig_pair(&q2);
         let s2s2 = p.mul(s2, s2);
         let varying = p.mul(f2, s2s2);
         Some(p.add(det0, varying))
+    }
+
+    /// The joint friction torques `damping qd_i + frictionloss sign(qd_i)` (zero nodes for an
+    /// arm without friction).
+    fn friction_nodes(&self, p: &mut Program) -> Vec<Id> {
+        self.arm
+            .links
+            .iter()
+            .enumerate()
+            .map(|(i, link)| {
+                let qd = p.input(Input::Qd(i));
+                let b = p.coefficient(&link.damping);
+                let f = p.coefficient(&link.frictionloss);
+                let viscous = p.mul(b, qd);
+                let sign = p.sign(qd);
+                let coulomb = p.mul(f, sign);
+                p.add(viscous, coulomb)
+            })
+            .collect()
+    }
+
+    /// `f(qd)`: the joint friction torques, `damping qd_i + frictionloss sign(qd_i)`.
+    #[must_use]
+    pub fn friction_method(&self) -> Method {
+        let mut p = Program::new();
+        let f = self.friction_nodes(&mut p);
+        let outputs = f
+            .into_iter()
+            .enumerate()
+            .map(|(i, id)| (format!("f{}", i + 1), id))
+            .collect();
+        Method::new(p, outputs)
+    }
+
+    /// Adds the friction torques to a torque program's outputs.
+    fn with_friction(&self, mut m: Method) -> Method {
+        let f = self.friction_nodes(&mut m.program);
+        for ((_, id), fi) in m.outputs.iter_mut().zip(f) {
+            *id = m.program.add(*id, fi);
+        }
+        m
     }
 
     /// Forward dynamics with `M` from the composite-rigid-body recursion or the expanded
@@ -335,11 +463,13 @@ impl Derived {
         } else {
             self.dynamics.gravity.iter().map(|e| p.expr(e)).collect()
         };
+        let f = self.friction_nodes(&mut p);
         let rhs: Vec<Id> = (0..n)
             .map(|i| {
                 let tau = p.input(Input::Tau(i));
                 let r = p.sub(tau, c[i]);
-                p.sub(r, g[i])
+                let r = p.sub(r, g[i]);
+                p.sub(r, f[i])
             })
             .collect();
         for (i, &r) in rhs.iter().enumerate() {
@@ -367,8 +497,8 @@ impl Derived {
                 vec![p.div(x0, det), p.div(x1, det)]
             }
             _ => {
-                let floors: Vec<Rational> = (0..n)
-                    .map(|i| pivot_floor(&self.dynamics.mass_matrix[i][i]))
+                let floors: Vec<Id> = (0..n)
+                    .map(|i| pivot_floor(&mut p, &self.dynamics.mass_matrix[i][i]))
                     .collect();
                 ldlt_solve(&mut p, &m, &rhs, &floors)
             }
@@ -489,7 +619,7 @@ const CRBA: &str = "Evaluated not term by term but by the composite-rigid-body a
                     frames, the link constants folded in.";
 
 /// The mass matrix from the expanded entries (upper triangle; the lower is the same nodes).
-fn expanded_mass_matrix(p: &mut Program, d: &Dynamics) -> Vec<Vec<Id>> {
+fn expanded_mass_matrix<C: Emit>(p: &mut Program, d: &Dynamics<C>) -> Vec<Vec<Id>> {
     let n = d.n;
     (0..n)
         .map(|i| {
@@ -515,9 +645,11 @@ fn matrix_outputs(m: &[Vec<Id>]) -> Vec<(String, Id)> {
 mod tests {
     use super::*;
     use crate::mechanics::LinkSpec;
+    use crate::poly::{Param, Poly};
     use crate::ring::ratio;
 
-    /// An arm with uneven parameters (an offset centre of mass, a counterweight).
+    /// An arm with uneven parameters (an offset centre of mass off the link's axis, a
+    /// counterweight, armature, friction and a payload).
     fn arm(n: usize) -> ArmSpec {
         let k = |i: usize| i64::try_from(i).unwrap_or(0);
         ArmSpec {
@@ -526,23 +658,141 @@ mod tests {
                     length: ratio(k(i) + 3, 4),
                     mass: ratio(2 * k(i) + 1, 3),
                     inertia: ratio(1, k(i) + 5),
-                    com: ratio(k(i % 3) - 1, 2),
+                    com: (ratio(k(i % 3) - 1, 2), ratio(k(i % 2), 9)),
+                    armature: ratio(k(i), 7),
+                    damping: ratio(1, k(i) + 2),
+                    frictionloss: ratio(k(i % 2), 3),
                 })
                 .collect(),
             gravity: ratio(981, 100),
+            payload: Some(crate::mechanics::PayloadSpec {
+                mass: ratio(3, 4),
+                inertia: ratio(1, 50),
+                com: (ratio(1, 10), ratio(-1, 20)),
+            }),
         }
     }
 
-    fn eval(m: &Method, n: usize) -> Vec<f64> {
+    /// The same arm with every value a run-time parameter named `v0, v1, ...`, and their
+    /// values.
+    fn parameterised(arm: &ArmSpec) -> (ArmSpec<Poly>, Vec<(String, f64)>) {
+        let mut values = Vec::new();
+        let mut param = |r: &Rational| {
+            let name = format!("v{}", values.len());
+            values.push((name.clone(), crate::ring::to_f64(r).unwrap_or(f64::NAN)));
+            Poly::param(Param::new(&name))
+        };
+        let links = arm
+            .links
+            .iter()
+            .map(|l| LinkSpec {
+                length: param(&l.length),
+                mass: param(&l.mass),
+                inertia: param(&l.inertia),
+                com: (param(&l.com.0), param(&l.com.1)),
+                armature: param(&l.armature),
+                damping: param(&l.damping),
+                frictionloss: param(&l.frictionloss),
+            })
+            .collect();
+        let gravity = param(&arm.gravity);
+        let payload = arm.payload.as_ref().map(|p| crate::mechanics::PayloadSpec {
+            mass: param(&p.mass),
+            inertia: param(&p.inertia),
+            com: (param(&p.com.0), param(&p.com.1)),
+        });
+        (
+            ArmSpec {
+                links,
+                gravity,
+                payload,
+            },
+            values,
+        )
+    }
+
+    fn eval_with(m: &Method, n: usize, params: &[(String, f64)]) -> Vec<f64> {
         #[allow(clippy::cast_precision_loss)]
         let at = |j: usize, k: f64| (j as f64 + 1.0).mul_add(0.37, k).sin() * 2.0;
+        let names = m.program.params().to_vec();
         m.eval(&|i| match i {
             Input::Q(j) => at(j, 0.1),
             Input::Qd(j) => at(j, 1.3),
             Input::Qdd(j) => at(j, 2.9),
             Input::Tau(j) => at(j + n, 4.1) * 10.0,
             Input::Force(_) | Input::TipTorque => 0.0,
+            Input::Param(k) => params
+                .iter()
+                .find(|(name, _)| name == names[k].name())
+                .map_or(f64::NAN, |p| p.1),
         })
+    }
+
+    fn eval(m: &Method, n: usize) -> Vec<f64> {
+        eval_with(m, n, &[])
+    }
+
+    #[test]
+    fn parameters_give_the_literal_numbers() {
+        for n in 1..=4 {
+            let literal = Derived::new(&arm(n));
+            let (spec, values) = parameterised(&arm(n));
+            let symbolic = Derived::new(&spec);
+            let pairs = [
+                (literal.mass_matrix_method(), symbolic.mass_matrix_method()),
+                (literal.coriolis_method(), symbolic.coriolis_method()),
+                (literal.gravity_method(), symbolic.gravity_method()),
+                (literal.friction_method(), symbolic.friction_method()),
+                (
+                    literal.inverse_dynamics_method(),
+                    symbolic.inverse_dynamics_method(),
+                ),
+                (
+                    literal.forward_dynamics_method(),
+                    symbolic.forward_dynamics_method(),
+                ),
+                (
+                    literal.kinetic_energy_method(),
+                    symbolic.kinetic_energy_method(),
+                ),
+                (
+                    literal.potential_energy_method(),
+                    symbolic.potential_energy_method(),
+                ),
+                (literal.jacobian_method(), symbolic.jacobian_method()),
+            ];
+            for (k, (a, b)) in pairs.iter().enumerate() {
+                // (A single link has no velocity-product torque.)
+                let coriolis_of_one = n == 1 && k == 1;
+                assert!(
+                    coriolis_of_one || !b.program.params().is_empty(),
+                    "method {k} reads no parameter"
+                );
+                same(
+                    &eval(a, n),
+                    &eval_with(b, n, &values),
+                    "literal vs parameters",
+                );
+            }
+            // The Lagrangian over polynomials, evaluated, is the one over the rationals.
+            let candidates = [
+                (
+                    symbolic.inverse_dynamics_lagrange_method(),
+                    symbolic.inverse_dynamics_newton_euler_method(),
+                ),
+                (
+                    symbolic.mass_matrix_expanded_method(),
+                    symbolic.mass_matrix_composite_method(),
+                ),
+            ];
+            for (a, b) in &candidates {
+                same(
+                    &eval_with(a, n, &values),
+                    &eval_with(b, n, &values),
+                    "candidates",
+                );
+            }
+        }
     }
 
     #[track_caller]

@@ -10,6 +10,7 @@ use std::collections::BTreeMap;
 use num_traits::{One, Signed, Zero};
 
 use crate::expr::{Expr, Monomial, Var};
+use crate::poly::{Param, ParamMonomial, Poly};
 use crate::ring::Rational;
 use crate::trig::{Angle, Trig};
 
@@ -36,6 +37,8 @@ pub enum Input {
     Force(usize),
     /// Torque applied at the tip.
     TipTorque,
+    /// A run-time parameter, by its index in [`Program::params`], read from the arm's field.
+    Param(usize),
 }
 
 /// A node of a straight-line program.
@@ -61,6 +64,10 @@ pub enum Node {
     Neg(Id),
     /// The larger of two values, `a.max(b)`: keeps a pivot above its rounding noise.
     Max(Id, Id),
+    /// `|a|`.
+    Abs(Id),
+    /// The sign of `a`: -1, 0 or 1 (0 at zero, unlike `f64::signum`; NaN stays NaN).
+    Sign(Id),
 }
 
 /// Operation counts of a program (or of the part that reaches given outputs).
@@ -94,6 +101,7 @@ pub struct Program {
     memo: BTreeMap<Node, Id>,
     trig: BTreeMap<Angle, (Id, Id)>,
     names: BTreeMap<Id, String>,
+    params: Vec<Param>,
 }
 
 impl Program {
@@ -151,6 +159,55 @@ impl Program {
     /// An exact constant.
     pub fn constant(&mut self, r: Rational) -> Id {
         self.intern(Node::Const(r))
+    }
+
+    /// The run-time parameters the program reads, in the order of [`Input::Param`] indices
+    /// (first use).
+    #[must_use]
+    pub fn params(&self) -> &[Param] {
+        &self.params
+    }
+
+    /// A run-time parameter.
+    pub fn param(&mut self, param: &Param) -> Id {
+        let k = match self.params.iter().position(|p| p == param) {
+            Some(k) => k,
+            None => {
+                self.params.push(param.clone());
+                self.params.len() - 1
+            }
+        };
+        self.input(Input::Param(k))
+    }
+
+    /// A coefficient: a constant, or a polynomial in run-time parameters.
+    pub fn coefficient<C: Emit>(&mut self, c: &C) -> Id {
+        c.node(self)
+    }
+
+    /// A polynomial in run-time parameters: its monomials' products are hash-consed, so a
+    /// product of parameters used by several coefficients is computed once.
+    pub fn poly(&mut self, poly: &Poly) -> Id {
+        let mut terms = Vec::new();
+        for (m, c) in poly.terms() {
+            let mut acc: Option<Id> = None;
+            for (param, e) in m.powers() {
+                let x = self.param(param);
+                for _ in 0..*e {
+                    acc = Some(match acc {
+                        Some(a) => self.mul(a, x),
+                        None => x,
+                    });
+                }
+            }
+            let magnitude = self.constant(c.abs());
+            let term = match acc {
+                Some(a) => self.mul(magnitude, a),
+                None => magnitude,
+            };
+            terms.push((c.is_negative(), term));
+        }
+        self.signed_sum(&terms)
     }
 
     /// `a + b`, folded and ordered so that `a + b` and `b + a` are one node.
@@ -229,6 +286,22 @@ impl Program {
     /// `a.max(b)`.
     pub fn max(&mut self, a: Id, b: Id) -> Id {
         self.intern(Node::Max(a, b))
+    }
+
+    /// `|a|`, folded.
+    pub fn abs(&mut self, a: Id) -> Id {
+        if let Some(x) = self.constant_value(a).cloned() {
+            return self.constant(x.abs());
+        }
+        self.intern(Node::Abs(a))
+    }
+
+    /// The sign of `a` (0 at zero).
+    pub fn sign(&mut self, a: Id) -> Id {
+        if let Some(x) = self.constant_value(a).cloned() {
+            return self.constant(x.signum());
+        }
+        self.intern(Node::Sign(a))
     }
 
     /// `-a`, folded.
@@ -340,8 +413,8 @@ impl Program {
 
     /// The value of an exact expression: `sum over monomials m of m x (sum c_t atom_t)`,
     /// factoring each monomial out of its trig polynomial.
-    pub fn expr(&mut self, e: &Expr<Rational>) -> Id {
-        let mut groups: BTreeMap<&Monomial, Vec<(&Trig, &Rational)>> = BTreeMap::new();
+    pub fn expr<C: Emit>(&mut self, e: &Expr<C>) -> Id {
+        let mut groups: BTreeMap<&Monomial, Vec<(&Trig, &C)>> = BTreeMap::new();
         for (m, t, c) in e.terms() {
             groups.entry(m).or_default().push((t, c));
         }
@@ -350,8 +423,9 @@ impl Program {
             let mut inner = Vec::new();
             for (t, c) in terms {
                 let atom = self.atom(t);
-                let magnitude = self.constant(c.abs());
-                inner.push((c.is_negative(), self.mul(magnitude, atom)));
+                let (negative, magnitude) = c.sign_split();
+                let magnitude = magnitude.node(self);
+                inner.push((negative, self.mul(magnitude, atom)));
             }
             // A single negative term keeps its sign outside, to multiply the monomial once.
             let (neg, poly) = if inner.len() == 1 {
@@ -384,6 +458,8 @@ impl Program {
                 Node::Div(a, b) => v[a.0 as usize] / v[b.0 as usize],
                 Node::Neg(a) => -v[a.0 as usize],
                 Node::Max(a, b) => v[a.0 as usize].max(v[b.0 as usize]),
+                Node::Abs(a) => v[a.0 as usize].abs(),
+                Node::Sign(a) => sign(v[a.0 as usize]),
             };
             v.push(x);
         }
@@ -428,9 +504,13 @@ impl Program {
                 .unwrap_or(0);
             depth[i] = match node {
                 Node::Div(..) => below + DIV_LATENCY,
-                Node::Add(..) | Node::Sub(..) | Node::Mul(..) | Node::Neg(..) | Node::Max(..) => {
-                    below + 1
-                }
+                Node::Add(..)
+                | Node::Sub(..)
+                | Node::Mul(..)
+                | Node::Neg(..)
+                | Node::Max(..)
+                | Node::Abs(..)
+                | Node::Sign(..) => below + 1,
                 Node::Input(_) | Node::Const(_) | Node::Sin(_) | Node::Cos(_) => 0,
             };
         }
@@ -453,7 +533,12 @@ impl Program {
             }
             match node {
                 Node::Mul(..) => count.mul += 1,
-                Node::Add(..) | Node::Sub(..) | Node::Neg(..) | Node::Max(..) => count.add += 1,
+                Node::Add(..)
+                | Node::Sub(..)
+                | Node::Neg(..)
+                | Node::Max(..)
+                | Node::Abs(..)
+                | Node::Sign(..) => count.add += 1,
                 Node::Div(..) => count.div += 1,
                 Node::Sin(j) | Node::Cos(j) => {
                     joints.insert(*j);
@@ -473,7 +558,77 @@ pub fn children(node: &Node) -> Vec<Id> {
         Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) | Node::Max(a, b) => {
             vec![a, b]
         }
-        Node::Neg(a) => vec![a],
+        Node::Neg(a) | Node::Abs(a) | Node::Sign(a) => vec![a],
         Node::Input(_) | Node::Const(_) | Node::Sin(_) | Node::Cos(_) => vec![],
+    }
+}
+
+/// The sign the generated code computes (`planar_arm::__private::sign`): 0 at zero (either
+/// sign), NaN for NaN, else -1 or 1.
+#[must_use]
+pub fn sign(x: f64) -> f64 {
+    if x > 0.0 {
+        1.0
+    } else if x < 0.0 {
+        -1.0
+    } else {
+        // 0 for zero, NaN for NaN.
+        x * 0.0
+    }
+}
+
+/// A coefficient the programs can compute: an exact constant ([`Rational`]) or a polynomial in
+/// run-time parameters ([`Poly`]).
+pub trait Emit: crate::ring::Coefficient {
+    /// The node that computes the coefficient.
+    fn node(&self, p: &mut Program) -> Id;
+    /// The exact value, when it involves no parameter.
+    fn rational(&self) -> Option<Rational>;
+    /// `(negative, magnitude)`, the sign pulled out where it is known (a constant, or a
+    /// polynomial whose coefficients are all negative), so that `a - b` is emitted instead of
+    /// `a + (-b)`.
+    fn sign_split(&self) -> (bool, Self);
+    /// The terms: each product of parameters with its rational coefficient (one term with no
+    /// parameter for a constant; none for zero).
+    fn parts(&self) -> Vec<(ParamMonomial, Rational)>;
+}
+
+impl Emit for Rational {
+    fn node(&self, p: &mut Program) -> Id {
+        p.constant(self.clone())
+    }
+    fn rational(&self) -> Option<Rational> {
+        Some(self.clone())
+    }
+    fn sign_split(&self) -> (bool, Self) {
+        (self.is_negative(), self.abs())
+    }
+    fn parts(&self) -> Vec<(ParamMonomial, Rational)> {
+        if Zero::is_zero(self) {
+            Vec::new()
+        } else {
+            vec![(ParamMonomial::default(), self.clone())]
+        }
+    }
+}
+
+impl Emit for Poly {
+    fn node(&self, p: &mut Program) -> Id {
+        p.poly(self)
+    }
+    fn rational(&self) -> Option<Rational> {
+        self.as_rational()
+    }
+    fn sign_split(&self) -> (bool, Self) {
+        let negative =
+            !crate::ring::Coefficient::is_zero(self) && self.terms().all(|(_, c)| c.is_negative());
+        if negative {
+            (true, -self.clone())
+        } else {
+            (false, self.clone())
+        }
+    }
+    fn parts(&self) -> Vec<(ParamMonomial, Rational)> {
+        self.terms().map(|(m, c)| (m.clone(), c.clone())).collect()
     }
 }

@@ -3,13 +3,13 @@
 //! the arm's exact constants folded in. They are candidates next to the expanded formulas
 //! (see [`methods`](crate::methods)).
 
-use num_traits::{Signed, Zero};
+use num_traits::Zero;
 
 use crate::expr::Expr;
 use crate::mechanics::ArmSpec;
 use crate::methods::two;
 use crate::ring::Rational;
-use crate::slp::{Id, Input, Program};
+use crate::slp::{Emit, Id, Input, Program};
 use crate::trig::Angle;
 
 /// Which terms of `tau = M qdd + c + g` an unrolled Newton-Euler recursion evaluates.
@@ -33,6 +33,11 @@ impl Terms {
     };
     pub(crate) const GRAVITY: Self = Self {
         rates: false,
+        accelerations: false,
+        gravity: true,
+    };
+    pub(crate) const BIAS: Self = Self {
+        rates: true,
         accelerations: false,
         gravity: true,
     };
@@ -67,19 +72,18 @@ fn rotate_back(p: &mut Program, cs: V2, v: V2) -> V2 {
 /// Joint torques by the planar recursive Newton-Euler algorithm, unrolled for the arm, in link
 /// frames (x along the link): each link's angular velocity `w` and acceleration `al`, and the
 /// acceleration `a` of its joint, outwards (gravity as an upward acceleration of the base);
-/// the force each link's tail exerts on it and the moment about its joint, inwards.
-pub(crate) fn newton_euler(p: &mut Program, arm: &ArmSpec, terms: Terms) -> Vec<Id> {
+/// the force each link's tail exerts on it and the moment about its joint, inwards. Each link
+/// carries one rigid [`Body`](crate::mechanics::Body) (the payload merged into the last), and
+/// each joint's rotor adds `armature qdd_i`.
+pub(crate) fn newton_euler<C: Emit>(p: &mut Program, arm: &ArmSpec<C>, terms: Terms) -> Vec<Id> {
     let n = arm.links.len();
+    let bodies = arm.bodies();
     let zero = p.constant(Rational::zero());
-    let k = |p: &mut Program, r: Rational| p.constant(r);
-    let g = k(
-        p,
-        if terms.gravity {
-            arm.gravity.clone()
-        } else {
-            Rational::zero()
-        },
-    );
+    let g = if terms.gravity {
+        p.coefficient(&arm.gravity)
+    } else {
+        zero
+    };
     // Acceleration of the current joint in the previous link's frame.
     let mut end: V2 = (zero, g);
     let (mut w, mut al) = (zero, zero);
@@ -87,7 +91,7 @@ pub(crate) fn newton_euler(p: &mut Program, arm: &ArmSpec, terms: Terms) -> Vec<
     let mut force = Vec::with_capacity(n);
     let mut alpha = Vec::with_capacity(n);
     let mut accel = Vec::with_capacity(n);
-    for (i, link) in arm.links.iter().enumerate() {
+    for (i, (link, body)) in arm.links.iter().zip(&bodies).enumerate() {
         let cs = joint_trig(p, i);
         let a = rotate_back(p, cs, end);
         p.set_name(a.0, format!("ax{}", i + 1));
@@ -103,19 +107,23 @@ pub(crate) fn newton_euler(p: &mut Program, arm: &ArmSpec, terms: Terms) -> Vec<
             p.set_name(al, format!("al{}", i + 1));
         }
         let w2 = p.mul(w, w);
-        // The force on the link's centre of mass, m (a + com (-w^2, al)).
-        let m = k(p, link.mass.clone());
-        let mc = k(p, &link.mass * &link.com);
+        // The force on the body, m a + (-w^2 hx - al hy, -w^2 hy + al hx) with h = m com.
+        let m = p.coefficient(&body.mass);
+        let (hx, hy) = (p.coefficient(&body.first.0), p.coefficient(&body.first.1));
         let fx = {
-            let (u, v) = (p.mul(m, a.0), p.mul(mc, w2));
-            p.sub(u, v)
+            let (u, v) = (p.mul(m, a.0), p.mul(hx, w2));
+            let x = p.sub(u, v);
+            let t = p.mul(hy, al);
+            p.sub(x, t)
         };
         let fy = {
-            let (u, v) = (p.mul(m, a.1), p.mul(mc, al));
-            p.add(u, v)
+            let (u, v) = (p.mul(m, a.1), p.mul(hx, al));
+            let y = p.add(u, v);
+            let t = p.mul(hy, w2);
+            p.sub(y, t)
         };
         // The far end of the link: a + l (-w^2, al).
-        let l = k(p, link.length.clone());
+        let l = p.coefficient(&link.length);
         end = {
             let (u, v) = (p.mul(l, w2), p.mul(l, al));
             (p.sub(a.0, u), p.add(a.1, v))
@@ -125,24 +133,26 @@ pub(crate) fn newton_euler(p: &mut Program, arm: &ArmSpec, terms: Terms) -> Vec<
         trig.push(cs);
         force.push((fx, fy));
         alpha.push(al);
-        accel.push(a.1);
+        accel.push(a);
     }
     let mut tau = vec![zero; n];
     let mut tail: Option<V2> = None;
     let mut moment = zero;
     for i in (0..n).rev() {
-        let link = &arm.links[i];
-        // Moment about the joint of the link's own inertia forces:
-        // (I + m com^2) al + m com ay (the centripetal force passes through the joint).
-        let inertia = k(p, &link.inertia + &link.mass * &link.com * &link.com);
-        let mc = k(p, &link.mass * &link.com);
-        let (u, v) = (p.mul(inertia, alpha[i]), p.mul(mc, accel[i]));
+        let (link, body) = (&arm.links[i], &bodies[i]);
+        // Moment about the joint of the body's own inertia forces: J al + hx ay - hy ax, with
+        // J about the joint (the centripetal force passes through the centre of mass).
+        let inertia = p.coefficient(&body.inertia);
+        let (hx, hy) = (p.coefficient(&body.first.0), p.coefficient(&body.first.1));
+        let (u, v) = (p.mul(inertia, alpha[i]), p.mul(hx, accel[i].1));
         let mut here = p.add(u, v);
+        let t = p.mul(hy, accel[i].0);
+        here = p.sub(here, t);
         let mut f = force[i];
         if let Some(child) = tail {
             // The force the tail exerts at the far end of the link, in this link's frame.
             let r = rotate(p, trig[i + 1], child);
-            let l = k(p, link.length.clone());
+            let l = p.coefficient(&link.length);
             let lever = p.mul(l, r.1);
             here = p.add(here, lever);
             f = (p.add(f.0, r.0), p.add(f.1, r.1));
@@ -151,6 +161,13 @@ pub(crate) fn newton_euler(p: &mut Program, arm: &ArmSpec, terms: Terms) -> Vec<
         p.set_name(f.1, format!("fy{}", i + 1));
         moment = p.add(moment, here);
         tau[i] = moment;
+        if terms.accelerations {
+            // The rotor turns with the joint's own rate: its torque is not transmitted inwards.
+            let armature = p.coefficient(&link.armature);
+            let qdd = p.input(Input::Qdd(i));
+            let rotor = p.mul(armature, qdd);
+            tau[i] = p.add(moment, rotor);
+        }
         tail = Some(f);
     }
     tau
@@ -158,38 +175,42 @@ pub(crate) fn newton_euler(p: &mut Program, arm: &ArmSpec, terms: Terms) -> Vec<
 
 /// The mass matrix by the composite-rigid-body algorithm, unrolled for the arm, in link frames:
 /// for each tail of the chain (links `j..`), its mass, first moment `h` about joint `j` and
-/// rotational inertia about joint `j` (`M_jj`); `M_ij = M_(i+1)j + l_i (h in link i's frame).x`.
-pub(crate) fn composite_mass_matrix(p: &mut Program, arm: &ArmSpec) -> Vec<Vec<Id>> {
+/// rotational inertia about joint `j` (`M_jj`, plus the joint's armature);
+/// `M_ij = M_(i+1)j + l_i (h in link i's frame).x`.
+pub(crate) fn composite_mass_matrix<C: Emit>(p: &mut Program, arm: &ArmSpec<C>) -> Vec<Vec<Id>> {
     let n = arm.links.len();
+    let bodies = arm.bodies();
     let zero = p.constant(Rational::zero());
     let trig: Vec<V2> = (0..n).map(|j| joint_trig(p, j)).collect();
     let mut m = vec![vec![zero; n]; n];
-    let mut tail_mass = Rational::zero();
+    let mut tail_mass = C::from_rational(Rational::zero());
     let mut tail: Option<(V2, Id)> = None;
     for j in (0..n).rev() {
-        let link = &arm.links[j];
-        let own = &link.mass * &link.com;
-        let hx = p.constant(&own + &tail_mass * &link.length);
+        let (link, body) = (&arm.links[j], &bodies[j]);
+        let l = &link.length;
+        let hx = p.coefficient(&(body.first.0.clone() + tail_mass.clone() * l.clone()));
+        let hy = p.coefficient(&body.first.1);
         let rot =
-            p.constant(&link.inertia + &own * &link.com + &tail_mass * &link.length * &link.length);
+            p.coefficient(&(body.inertia.clone() + tail_mass.clone() * l.clone() * l.clone()));
         let (h, rot) = match tail {
-            None => ((hx, zero), rot),
+            None => ((hx, hy), rot),
             Some((child, child_rot)) => {
                 let r = rotate(p, trig[j + 1], child);
-                let two_l = p.constant(&link.length * Rational::from_integer(2.into()));
+                let two_l = p.coefficient(&l.scale(&Rational::from_integer(2.into())));
                 let shift = p.mul(two_l, r.0);
                 let rot = p.add(rot, child_rot);
-                ((p.add(hx, r.0), r.1), p.add(rot, shift))
+                ((p.add(hx, r.0), p.add(hy, r.1)), p.add(rot, shift))
             }
         };
         p.set_name(h.0, format!("hx{}", j + 1));
         p.set_name(h.1, format!("hy{}", j + 1));
-        tail_mass += &link.mass;
-        m[j][j] = rot;
+        tail_mass = tail_mass + body.mass.clone();
+        let armature = p.coefficient(&link.armature);
+        m[j][j] = p.add(rot, armature);
         let (mut v, mut mij) = (h, rot);
         for i in (0..j).rev() {
             v = rotate(p, trig[i + 1], v);
-            let l = p.constant(arm.links[i].length.clone());
+            let l = p.coefficient(&arm.links[i].length);
             let step = p.mul(l, v.0);
             mij = p.add(mij, step);
             m[i][j] = mij;
@@ -207,14 +228,25 @@ pub(crate) fn composite_mass_matrix(p: &mut Program, arm: &ArmSpec) -> Vec<Vec<I
 /// the computed pivot. `M` is positive definite, so its exact pivots are positive; a computed
 /// one at or below the floor only means `M` is too ill-conditioned for `f64` there, and the
 /// floor keeps the accelerations finite instead of infinite or NaN.
-pub(crate) fn pivot_floor(m_ii: &Expr) -> Rational {
-    let bound = m_ii
+pub(crate) fn pivot_floor<C: Emit>(p: &mut Program, m_ii: &Expr<C>) -> Id {
+    let magnitudes: Vec<Id> = m_ii
         .terms()
-        .fold(Rational::zero(), |acc, (_, _, c)| acc + c.abs());
-    bound / Rational::from_integer(num_bigint::BigInt::from(1u64 << 52))
+        .map(|(_, _, c)| {
+            let c = p.coefficient(c);
+            p.abs(c)
+        })
+        .collect();
+    let bound = p
+        .balanced_sum(&magnitudes)
+        .unwrap_or_else(|| p.constant(Rational::zero()));
+    let ulp = p.constant(Rational::new(
+        1.into(),
+        num_bigint::BigInt::from(1u64 << 52),
+    ));
+    p.mul(ulp, bound)
 }
 
-pub(crate) fn ldlt_solve(p: &mut Program, m: &[Vec<Id>], b: &[Id], floors: &[Rational]) -> Vec<Id> {
+pub(crate) fn ldlt_solve(p: &mut Program, m: &[Vec<Id>], b: &[Id], floors: &[Id]) -> Vec<Id> {
     let n = m.len();
     let zero = p.constant(Rational::zero());
     let one = p.constant(Rational::from_integer(1.into()));
@@ -239,8 +271,7 @@ pub(crate) fn ldlt_solve(p: &mut Program, m: &[Vec<Id>], b: &[Id], floors: &[Rat
             let w = p.mul(l[i][k], s[i][k]);
             di = p.sub(di, w);
         }
-        let floor = p.constant(floors[i].clone());
-        let di = p.max(di, floor);
+        let di = p.max(di, floors[i]);
         p.set_name(di, format!("d{}", i + 1));
         let inv = p.div(one, di);
         p.set_name(inv, format!("inv_d{}", i + 1));

@@ -22,8 +22,11 @@ impl Link<'_> {
 
 /// The derive input, as far as it could be parsed.
 pub struct Arm<'a> {
-    pub gravity: Option<Value>,
+    /// The struct's own `#[arm(...)]`: gravity and payload.
+    pub attrs: Attrs,
     pub links: Vec<Link<'a>>,
+    /// The named fields that are not links, which `self.NAME` may read.
+    pub others: Vec<&'a syn::Field>,
 }
 
 impl<'a> Arm<'a> {
@@ -73,8 +76,14 @@ impl<'a> Arm<'a> {
             return None;
         }
         let mut links = Vec::new();
+        let mut others = Vec::new();
         for field in &named.named {
             let attrs = attr::parse(cx, &field.attrs, Place::Field);
+            if attrs.is_none() && !is_revolute(&field.ty) {
+                // Not a link: a parameter, a label, anything the user keeps in the struct.
+                others.push(field);
+                continue;
+            }
             if !is_revolute(&field.ty) {
                 cx.error_spanned_by(
                     &field.ty,
@@ -95,25 +104,106 @@ impl<'a> Arm<'a> {
                 ),
             }
         }
+        if links.is_empty() {
+            cx.error_spanned_by(
+                named,
+                "an arm needs at least one link: add a field `#[arm(length = 1, mass = 1)] upper: Revolute`",
+            );
+            return None;
+        }
         Some(Self {
-            gravity: struct_attrs
-                .entries
-                .into_iter()
-                .find(|e| e.key == attr::GRAVITY)
-                .map(|e| e.value),
+            attrs: struct_attrs,
             links,
+            others,
         })
+    }
+
+    /// A struct-level value.
+    pub fn get(&self, key: &str) -> Option<&Value> {
+        self.attrs.get(key)
+    }
+
+    /// Every value with a description of where it stands, struct first.
+    pub fn values(&self) -> Vec<(String, &Value)> {
+        let mut out: Vec<(String, &Value)> = self
+            .attrs
+            .entries
+            .iter()
+            .map(|e| (format!("this {}", e.key), &e.value))
+            .collect();
+        for link in &self.links {
+            for e in &link.attrs.entries {
+                out.push((format!("link `{}`: this {}", link.name(), e.key), &e.value));
+            }
+        }
+        out
+    }
+
+    /// Whether the field `name` is a plain `f64` (what a run-time parameter must be).
+    pub fn f64_field(&self, name: &str) -> Result<(), String> {
+        if self
+            .links
+            .iter()
+            .any(|l| l.field.ident.as_ref().is_some_and(|i| i == name))
+        {
+            return Err(format!(
+                "`self.{name}` is a link, not a run-time parameter; a parameter is an `f64` field of this struct"
+            ));
+        }
+        match self
+            .others
+            .iter()
+            .find(|f| f.ident.as_ref().is_some_and(|i| i == name))
+        {
+            Some(f) if is_f64(&f.ty) => Ok(()),
+            Some(_) => Err(format!(
+                "`self.{name}` must be an `f64` field to serve as a run-time parameter; change its type to `f64`"
+            )),
+            None => {
+                let names: Vec<String> = self
+                    .others
+                    .iter()
+                    .filter(|f| is_f64(&f.ty))
+                    .filter_map(|f| f.ident.as_ref().map(ToString::to_string))
+                    .collect();
+                Err(if names.is_empty() {
+                    format!("no field `{name}`: a run-time parameter is an `f64` field of this struct; add `{name}: f64`")
+                } else {
+                    format!(
+                        "no field `{name}`: a run-time parameter is an `f64` field of this struct (it has {}); or add `{name}: f64`",
+                        names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
+                    )
+                })
+            }
+        }
     }
 
     /// The number of link fields, whether or not each parsed.
     pub fn field_count(input: &DeriveInput) -> Option<usize> {
         match &input.data {
             Data::Struct(s) => match &s.fields {
-                Fields::Named(n) if !n.named.is_empty() => Some(n.named.len()),
+                Fields::Named(n) => {
+                    let links = n.named.iter().filter(|f| is_link_field(f)).count();
+                    (links > 0).then_some(links)
+                }
                 _ => None,
             },
             _ => None,
         }
+    }
+}
+
+/// Whether a field is a link: of type `Revolute`, or carrying `#[arm(...)]`.
+pub fn is_link_field(f: &syn::Field) -> bool {
+    is_revolute(&f.ty) || f.attrs.iter().any(|a| a.path().is_ident(attr::ARM))
+}
+
+fn is_f64(ty: &syn::Type) -> bool {
+    match ty {
+        syn::Type::Path(p) => p.qself.is_none() && p.path.is_ident("f64"),
+        syn::Type::Group(g) => is_f64(&g.elem),
+        syn::Type::Paren(p) => is_f64(&p.elem),
+        _ => false,
     }
 }
 

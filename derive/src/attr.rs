@@ -1,6 +1,6 @@
 //! The `#[arm(...)]` attribute: keywords and parsing of one item's attribute lists.
 
-use planar_arm_core::ring::Rational;
+use planar_arm_core::Poly;
 use proc_macro2::TokenStream;
 use quote::ToTokens;
 use syn::meta::ParseNestedMeta;
@@ -16,15 +16,28 @@ pub const LENGTH: &str = "length";
 pub const MASS: &str = "mass";
 pub const INERTIA: &str = "inertia";
 pub const COM: &str = "com";
+pub const ARMATURE: &str = "armature";
+pub const DAMPING: &str = "damping";
+pub const FRICTIONLOSS: &str = "frictionloss";
+pub const PAYLOAD: &str = "payload";
+pub const PAYLOAD_INERTIA: &str = "payload_inertia";
+pub const PAYLOAD_COM: &str = "payload_com";
 
-pub const STRUCT_KEYS: &[&str] = &[GRAVITY];
-pub const FIELD_KEYS: &[&str] = &[LENGTH, MASS, INERTIA, COM];
+pub const STRUCT_KEYS: &[&str] = &[GRAVITY, PAYLOAD, PAYLOAD_INERTIA, PAYLOAD_COM];
+pub const FIELD_KEYS: &[&str] = &[LENGTH, MASS, INERTIA, COM, ARMATURE, DAMPING, FRICTIONLOSS];
+/// Keys whose value may be a pair `(x, y)`.
+const PAIR_KEYS: &[&str] = &[COM, PAYLOAD_COM];
 
 /// A parsed value with the tokens it came from.
 pub struct Value {
-    pub value: Rational,
+    /// The value (for a pair, its first component).
+    pub value: Poly,
+    /// The second component of a pair `(x, y)`; `None` for a scalar.
+    pub y: Option<Poly>,
     /// The value's tokens, for errors about the value.
     pub tokens: TokenStream,
+    /// The run-time parameters it names.
+    pub params: Vec<value::ParamUse>,
 }
 
 /// Where an `#[arm(...)]` list appears.
@@ -93,7 +106,9 @@ pub fn parse(cx: &Ctxt, attrs: &[syn::Attribute], place: Place) -> Option<Attrs>
 
 fn expected_syntax(place: Place) -> &'static str {
     match place {
-        Place::Struct => "expected #[arm(gravity = ...)], for example #[arm(gravity = 9.81)]",
+        Place::Struct => {
+            "expected #[arm(gravity = ..., payload = ...)], for example #[arm(gravity = 9.81)]"
+        }
         Place::Field => {
             "expected #[arm(length = ..., mass = ...)], for example #[arm(length = 0.5, mass = 2)]"
         }
@@ -172,12 +187,31 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
         );
         return;
     };
-    match value::eval(&expr) {
-        Ok(v) => out.entries.push(Entry {
+    let mut params = Vec::new();
+    let parsed = match &expr {
+        // #[arm(com = (0.11, 0.005))]
+        syn::Expr::Tuple(t) if PAIR_KEYS.contains(&known) && t.elems.len() == 2 => {
+            value::eval(&t.elems[0], &mut params)
+                .and_then(|x| value::eval(&t.elems[1], &mut params).map(|y| (x, Some(y))))
+        }
+        syn::Expr::Tuple(t) if PAIR_KEYS.contains(&known) => Err(syn::Error::new_spanned(
+            t,
+            format!("`{key}` takes one number (along the link) or a pair `(x, y)`"),
+        )),
+        syn::Expr::Tuple(t) => Err(syn::Error::new_spanned(
+            t,
+            format!("`{key}` takes one number; only `com` and `payload_com` take a pair `(x, y)`"),
+        )),
+        _ => value::eval(&expr, &mut params).map(|x| (x, None)),
+    };
+    match parsed {
+        Ok((v, y)) => out.entries.push(Entry {
             key: known,
             value: Value {
                 value: v,
+                y,
                 tokens: expr.to_token_stream(),
+                params,
             },
         }),
         Err(err) => cx.syn_error(err),

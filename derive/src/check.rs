@@ -1,12 +1,19 @@
 //! Physical validation, apart from attribute parsing: what a well-formed attribute can still
-//! get wrong. Produces the engine's exact [`ArmSpec`].
+//! get wrong. Produces the engine's exact [`ArmSpec`], its values polynomials in the run-time
+//! parameters (constants when every value is a literal).
+//!
+//! Signs and ranges can only be checked for literal values; a value that names a parameter is
+//! checked when the methods run (see the `planar_arm` docs on run-time parameters).
 
 use num_traits::{Signed, Zero};
 use planar_arm_core::ring::{parse_decimal, ratio, to_f64, Rational};
-use planar_arm_core::{ArmSpec, LinkSpec};
+use planar_arm_core::{ArmSpec, LinkSpec, PayloadSpec, Poly};
 
 use crate::ast::{Arm, Link};
-use crate::attr::{Value, COM, INERTIA, LENGTH, MASS};
+use crate::attr::{
+    Value, ARMATURE, COM, DAMPING, FRICTIONLOSS, GRAVITY, INERTIA, LENGTH, MASS, PAYLOAD,
+    PAYLOAD_COM, PAYLOAD_INERTIA,
+};
 use crate::ctxt::Ctxt;
 
 /// Standard gravity, 9.80665 m/s^2, exactly.
@@ -14,47 +21,79 @@ fn standard_gravity() -> Rational {
     parse_decimal("9.80665").unwrap_or_else(|| ratio(980_665, 100_000))
 }
 
-/// Rejects values outside the finite range of `f64`, and non-zero values that round to zero.
+/// Rejects coefficients outside the finite range of `f64`, and non-zero ones that round to
+/// zero.
 fn representable(cx: &Ctxt, what: &str, v: &Value) -> bool {
-    match to_f64(&v.value) {
-        None => {
-            cx.error_spanned_by(
-                &v.tokens,
-                format!("{what} is too large for f64; use a value below 1e308"),
-            );
+    let parts = std::iter::once(&v.value).chain(v.y.as_ref());
+    for poly in parts {
+        for (_, c) in poly.terms() {
+            match to_f64(c) {
+                None => {
+                    cx.error_spanned_by(
+                        &v.tokens,
+                        format!("{what} is too large for f64; use a value below 1e308"),
+                    );
+                    return false;
+                }
+                Some(x) if x == 0.0 && !c.is_zero() => {
+                    cx.error_spanned_by(
+                        &v.tokens,
+                        format!(
+                            "{what} is too small for f64 (it rounds to zero); use a value above 1e-308"
+                        ),
+                    );
+                    return false;
+                }
+                Some(_) => {}
+            }
+        }
+    }
+    true
+}
+
+/// Every `self.NAME` must be an `f64` field that is not a link.
+fn params_exist(cx: &Ctxt, arm: &Arm<'_>) -> bool {
+    let mut ok = true;
+    for (_, v) in arm.values() {
+        for p in &v.params {
+            if let Err(msg) = arm.f64_field(&p.name) {
+                cx.error_spanned_by(&p.tokens, msg);
+                ok = false;
+            }
+        }
+    }
+    ok
+}
+
+/// A literal value that must not be negative (or must be positive).
+fn sign_check(cx: &Ctxt, v: &Value, positive: bool, message: &str) -> bool {
+    match v.value.as_rational() {
+        Some(r) if r.is_negative() || (positive && r.is_zero()) => {
+            cx.error_spanned_by(&v.tokens, message);
             false
         }
-        Some(x) if x == 0.0 && !v.value.is_zero() => {
-            cx.error_spanned_by(
-                &v.tokens,
-                format!(
-                    "{what} is too small for f64 (it rounds to zero); use a value above 1e-308"
-                ),
-            );
-            false
-        }
-        Some(_) => true,
+        _ => true,
     }
 }
 
 /// Validates the parsed arm; `None` after recording errors in `cx`.
-pub fn check(cx: &Ctxt, arm: &Arm<'_>) -> Option<ArmSpec> {
-    let mut ok = true;
-    let gravity = match &arm.gravity {
+pub fn check(cx: &Ctxt, arm: &Arm<'_>) -> Option<ArmSpec<Poly>> {
+    let mut ok = params_exist(cx, arm);
+    let gravity = match arm.get(GRAVITY) {
         Some(g) => {
             // #[arm(gravity = 9.81)]
-            if g.value.is_negative() {
-                cx.error_spanned_by(
-                    &g.tokens,
-                    "gravity is a magnitude along -y and cannot be negative; use 0 for a horizontal arm",
-                );
-                ok = false;
-            }
+            ok &= sign_check(
+                cx,
+                g,
+                false,
+                "gravity is a magnitude along -y and cannot be negative; use 0 for a horizontal arm",
+            );
             ok &= representable(cx, "gravity", g);
             g.value.clone()
         }
-        None => standard_gravity(),
+        None => Poly::constant(standard_gravity()),
     };
+    let payload = check_payload(cx, arm, &mut ok);
     let mut links = Vec::new();
     for link in &arm.links {
         match check_link(cx, link) {
@@ -62,11 +101,69 @@ pub fn check(cx: &Ctxt, arm: &Arm<'_>) -> Option<ArmSpec> {
             None => ok = false,
         }
     }
-    (ok && links.len() == arm.links.len()).then_some(ArmSpec { links, gravity })
+    (ok && links.len() == arm.links.len()).then_some(ArmSpec {
+        links,
+        gravity,
+        payload,
+    })
+}
+
+/// `payload`, `payload_inertia`, `payload_com` on the struct.
+fn check_payload(cx: &Ctxt, arm: &Arm<'_>, ok: &mut bool) -> Option<PayloadSpec<Poly>> {
+    let zero = Poly::default;
+    let (mass, inertia, com) = (
+        arm.get(PAYLOAD),
+        arm.get(PAYLOAD_INERTIA),
+        arm.get(PAYLOAD_COM),
+    );
+    if mass.is_none() {
+        // #[arm(payload_inertia = ...)] without #[arm(payload = ...)]
+        if let Some(v) = inertia.or(com) {
+            cx.error_spanned_by(
+                &v.tokens,
+                "a payload's inertia or offset needs its mass: add `payload = ...` to the struct's #[arm(...)]",
+            );
+            *ok = false;
+        }
+        return None;
+    }
+    let mut spec = PayloadSpec {
+        mass: zero(),
+        inertia: zero(),
+        com: (zero(), zero()),
+    };
+    if let Some(m) = mass {
+        // #[arm(payload = 0.5)] or #[arm(payload = self.payload)]
+        *ok &= sign_check(
+            cx,
+            m,
+            false,
+            "the payload's mass cannot be negative; use 0 for none",
+        );
+        *ok &= representable(cx, "payload", m);
+        spec.mass = m.value.clone();
+    }
+    if let Some(i) = inertia {
+        // #[arm(payload_inertia = 0.001)]
+        *ok &= sign_check(
+            cx,
+            i,
+            false,
+            "the payload's inertia about its centre of mass cannot be negative; use 0 for a point mass",
+        );
+        *ok &= representable(cx, "payload_inertia", i);
+        spec.inertia = i.value.clone();
+    }
+    if let Some(c) = com {
+        // #[arm(payload_com = (0.02, 0.0))]
+        *ok &= representable(cx, "payload_com", c);
+        spec.com = (c.value.clone(), c.y.clone().unwrap_or_default());
+    }
+    Some(spec)
 }
 
 /// Validates one link: every problem is reported, not only the first.
-fn check_link(cx: &Ctxt, link: &Link<'_>) -> Option<LinkSpec> {
+fn check_link(cx: &Ctxt, link: &Link<'_>) -> Option<LinkSpec<Poly>> {
     let name = link.name();
     let a = &link.attrs;
     let mut ok = true;
@@ -90,40 +187,52 @@ fn check_link(cx: &Ctxt, link: &Link<'_>) -> Option<LinkSpec> {
     }
 
     // #[arm(length = 0.5)], #[arm(mass = 2)]: positive.
-    let mut positive = |key: &str| -> Option<Rational> {
+    let mut positive = |key: &str| -> Option<Poly> {
         let v = a.get(key)?;
         let mut good = representable(cx, key, v);
-        if !v.value.is_positive() {
-            cx.error_spanned_by(
-                &v.tokens,
-                format!("link `{name}`: {key} must be positive, for example `{key} = 0.5`"),
-            );
-            good = false;
-        }
+        good &= sign_check(
+            cx,
+            v,
+            true,
+            &format!("link `{name}`: {key} must be positive, for example `{key} = 0.5`"),
+        );
         ok &= good;
         good.then(|| v.value.clone())
     };
     let length = positive(LENGTH);
     let mass = positive(MASS);
 
-    // #[arm(inertia = 0.02)]: about the centre of mass, not negative.
-    let inertia = a.get(INERTIA).and_then(|i| {
-        let mut good = representable(cx, "inertia", i);
-        if i.value.is_negative() {
-            cx.error_spanned_by(
-                &i.tokens,
-                format!("link `{name}`: inertia about the centre of mass cannot be negative; use 0 for a point mass"),
-            );
-            good = false;
-        }
+    // #[arm(inertia = 0.02)], #[arm(armature = 0.01)], #[arm(damping = 0.1)],
+    // #[arm(frictionloss = 0.2)]: not negative.
+    let mut non_negative = |key: &str, message: String| -> Option<Poly> {
+        let v = a.get(key)?;
+        let mut good = representable(cx, key, v);
+        good &= sign_check(cx, v, false, &message);
         ok &= good;
-        good.then(|| i.value.clone())
-    });
-    // #[arm(com = 0.25)]: any sign (a counterweight lies behind the joint).
+        good.then(|| v.value.clone())
+    };
+    let inertia = non_negative(
+        INERTIA,
+        format!("link `{name}`: inertia about the centre of mass cannot be negative; use 0 for a point mass"),
+    );
+    let armature = non_negative(
+        ARMATURE,
+        format!("link `{name}`: armature (reflected rotor inertia) cannot be negative"),
+    );
+    let damping = non_negative(
+        DAMPING,
+        format!("link `{name}`: damping cannot be negative (it would feed energy in)"),
+    );
+    let frictionloss = non_negative(
+        FRICTIONLOSS,
+        format!("link `{name}`: frictionloss cannot be negative (it would feed energy in)"),
+    );
+    // #[arm(com = 0.25)] or #[arm(com = (0.11, 0.005))]: any sign (a counterweight lies behind
+    // the joint).
     let com = a.get(COM).and_then(|c| {
         let good = representable(cx, "com", c);
         ok &= good;
-        good.then(|| c.value.clone())
+        good.then(|| (c.value.clone(), c.y.clone().unwrap_or_default()))
     });
     if !ok {
         return None;
@@ -131,7 +240,8 @@ fn check_link(cx: &Ctxt, link: &Link<'_>) -> Option<LinkSpec> {
     let rod = LinkSpec::rod(length?, mass?);
     let inertia = inertia.unwrap_or(rod.inertia);
     let com = com.unwrap_or(rod.com);
-    if inertia.is_zero() && com.is_zero() {
+    let literal_zero = |p: &Poly| planar_arm_core::Coefficient::is_zero(p);
+    if literal_zero(&inertia) && literal_zero(&com.0) && literal_zero(&com.1) {
         // Joint k then moves none of link k's mass: with nothing after it (or nothing after it
         // that resists) M is singular and forward dynamics undefined. Both keys are explicit
         // here, since a positive rod's defaults are positive.
@@ -153,5 +263,8 @@ fn check_link(cx: &Ctxt, link: &Link<'_>) -> Option<LinkSpec> {
         mass: rod.mass,
         inertia,
         com,
+        armature: armature.unwrap_or_default(),
+        damping: damping.unwrap_or_default(),
+        frictionloss: frictionloss.unwrap_or_default(),
     })
 }

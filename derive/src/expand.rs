@@ -9,10 +9,10 @@ use planar_arm_core::emit::EmitError;
 use planar_arm_core::generate::{generate, Header};
 use planar_arm_core::methods::Derived;
 use planar_arm_core::ring::{to_i128_pair, Rational};
-use planar_arm_core::Expr;
+use planar_arm_core::slp::Emit;
+use planar_arm_core::{ArmSpec, Expr, LinkSpec, PayloadSpec, Poly};
 
 use crate::ast::Arm;
-use crate::attr::Value;
 use crate::check::check;
 use crate::ctxt::Ctxt;
 
@@ -47,31 +47,65 @@ fn try_derive(input: &DeriveInput) -> Result<TokenStream, TokenStream> {
         return Err(syn::Error::new_spanned(&input.ident, "invalid arm").to_compile_error());
     };
     let header = header(input);
-    let derived = Derived::new(&spec);
-    let mut tokens = generate(&derived, &header)
-        .map_err(|e| emit_error(&arm, &derived, &e).to_compile_error())?;
-    tokens.extend(planar_arm_core::generate::closed_forms(&derived, &header));
+    // An arm whose values are all literals is derived over the rationals: the same result as
+    // over polynomials, with less work.
+    match literal(&spec) {
+        Some(spec) => emit(&arm, &spec, &header),
+        None => emit(&arm, &spec, &header),
+    }
+}
+
+fn emit<C: Emit>(
+    arm: &Arm<'_>,
+    spec: &ArmSpec<C>,
+    header: &Header,
+) -> Result<TokenStream, TokenStream> {
+    let derived = Derived::new(spec);
+    let mut tokens =
+        generate(&derived, header).map_err(|e| emit_error(arm, &derived, &e).to_compile_error())?;
+    tokens.extend(planar_arm_core::generate::closed_forms(&derived, header));
     Ok(tokens)
+}
+
+/// The arm over the rationals, if no value names a run-time parameter.
+fn literal(spec: &ArmSpec<Poly>) -> Option<ArmSpec<Rational>> {
+    let r = Poly::as_rational;
+    let pair = |c: &(Poly, Poly)| Some((r(&c.0)?, r(&c.1)?));
+    Some(ArmSpec {
+        links: spec
+            .links
+            .iter()
+            .map(|l| {
+                Some(LinkSpec {
+                    length: r(&l.length)?,
+                    mass: r(&l.mass)?,
+                    inertia: r(&l.inertia)?,
+                    com: pair(&l.com)?,
+                    armature: r(&l.armature)?,
+                    damping: r(&l.damping)?,
+                    frictionloss: r(&l.frictionloss)?,
+                })
+            })
+            .collect::<Option<Vec<_>>>()?,
+        gravity: r(&spec.gravity)?,
+        payload: match &spec.payload {
+            None => None,
+            Some(p) => Some(PayloadSpec {
+                mass: r(&p.mass)?,
+                inertia: r(&p.inertia)?,
+                com: pair(&p.com)?,
+            }),
+        },
+    })
 }
 
 /// The engine could not emit the arm: some exact coefficient is too large for the generated
 /// `const` data. Every parameter contributes, so the error points at the one with the most
 /// digits, the likeliest culprit, and says which coefficient overflowed.
-fn emit_error(arm: &Arm<'_>, derived: &Derived, err: &EmitError) -> syn::Error {
-    let mut values: Vec<(String, &Value)> = Vec::new();
-    if let Some(g) = &arm.gravity {
-        values.push(("this gravity".to_string(), g));
-    }
-    for link in &arm.links {
-        for entry in &link.attrs.entries {
-            values.push((
-                format!("link `{}`: this {}", link.name(), entry.key),
-                &entry.value,
-            ));
-        }
-    }
+fn emit_error<C: Emit>(arm: &Arm<'_>, derived: &Derived<C>, err: &EmitError) -> syn::Error {
+    let values = arm.values();
     // The first value of greatest height: the likeliest culprit.
-    let mut worst: Option<&(String, &Value)> = None;
+    let mut worst: Option<&(String, &crate::attr::Value)> = None;
     for candidate in &values {
         if worst.is_none_or(|w| height(&candidate.1.value) > height(&w.1.value)) {
             worst = Some(candidate);
@@ -86,8 +120,8 @@ fn emit_error(arm: &Arm<'_>, derived: &Derived, err: &EmitError) -> syn::Error {
             "{what} makes the exact equations of motion too large to emit: the coefficient {} in {place} \
              has {} digits, more than the 38 of i128; use values nearer 1 with fewer digits, \
              for example between 0.001 and 1000",
-            abbreviate(c),
-            digits(c),
+            abbreviate(&c),
+            digits(&c),
         ),
         None => format!("{what}: {}", abbreviate_digits(&err.message)),
     };
@@ -95,15 +129,18 @@ fn emit_error(arm: &Arm<'_>, derived: &Derived, err: &EmitError) -> syn::Error {
 }
 
 /// Bits in the larger of numerator and denominator.
-fn height(r: &Rational) -> u64 {
-    r.numer().abs().bits().max(r.denom().bits())
+fn height(v: &Poly) -> u64 {
+    v.terms()
+        .map(|(_, r)| r.numer().abs().bits().max(r.denom().bits()))
+        .max()
+        .unwrap_or(0)
 }
 
 /// The first coefficient of the emitted `const` data that does not fit in `i128`, in the
 /// order the engine checks them.
-fn overflowing_coefficient(d: &Derived) -> Option<(String, &Rational)> {
+fn overflowing_coefficient<C: Emit>(d: &Derived<C>) -> Option<(String, Rational)> {
     let dy = &d.dynamics;
-    let mut entries: Vec<(String, &Expr)> = vec![
+    let mut entries: Vec<(String, &Expr<C>)> = vec![
         ("the kinetic energy".to_string(), &dy.kinetic_energy),
         ("the potential energy".to_string(), &dy.potential_energy),
     ];
@@ -120,8 +157,9 @@ fn overflowing_coefficient(d: &Derived) -> Option<(String, &Rational)> {
     }
     entries.into_iter().find_map(|(place, e)| {
         e.terms()
-            .find(|(_, _, c)| to_i128_pair(c).is_none())
-            .map(|(_, _, c)| (place, c))
+            .flat_map(|(_, _, c)| c.parts())
+            .find(|(_, c)| to_i128_pair(c).is_none())
+            .map(|(_, c)| (place, c))
     })
 }
 
@@ -236,7 +274,12 @@ fn fallback(input: &DeriveInput) -> TokenStream {
 
 fn field_names(input: &DeriveInput) -> Vec<proc_macro2::Ident> {
     match &input.data {
-        syn::Data::Struct(s) => s.fields.iter().filter_map(|f| f.ident.clone()).collect(),
+        syn::Data::Struct(s) => s
+            .fields
+            .iter()
+            .filter(|f| crate::ast::is_link_field(f))
+            .filter_map(|f| f.ident.clone())
+            .collect(),
         _ => Vec::new(),
     }
 }

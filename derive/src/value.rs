@@ -1,12 +1,20 @@
 //! Exact evaluation of attribute values: integers, decimals (`0.35` is `7/20`), fractions
-//! `a/b`, and `+ - * /` with parentheses. No value passes through a float.
+//! `a/b`, `+ - * /` with parentheses, and run-time parameters `self.NAME`. No value passes
+//! through a float; a value with parameters is a polynomial in them ([`Poly`]).
 
-use num_traits::Zero;
 use planar_arm_core::ring::{parse_decimal, Rational};
+use planar_arm_core::{Param, Poly};
 use syn::{BinOp, Expr, Lit, UnOp};
 
-/// The exact value of `expr`, or an error spanning the offending tokens.
-pub fn eval(expr: &Expr) -> syn::Result<Rational> {
+/// A run-time parameter named in a value: its field name and the `self.NAME` tokens.
+pub struct ParamUse {
+    pub name: String,
+    pub tokens: proc_macro2::TokenStream,
+}
+
+/// The exact value of `expr`, or an error spanning the offending tokens. Every `self.NAME`
+/// met is recorded in `params` (whether the field exists is checked by the caller).
+pub fn eval(expr: &Expr, params: &mut Vec<ParamUse>) -> syn::Result<Poly> {
     match expr {
         Expr::Lit(lit) => match &lit.lit {
             Lit::Int(i) => literal(i.base10_digits(), i.suffix(), &lit.lit),
@@ -20,38 +28,64 @@ pub fn eval(expr: &Expr) -> syn::Result<Rational> {
                 "expected a number such as 1, 0.35 or 3/2",
             )),
         },
-        Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => Ok(-eval(&u.expr)?),
-        Expr::Paren(p) => eval(&p.expr),
-        Expr::Group(g) => eval(&g.expr),
+        Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => Ok(-eval(&u.expr, params)?),
+        Expr::Paren(p) => eval(&p.expr, params),
+        Expr::Group(g) => eval(&g.expr, params),
         Expr::Binary(b) => {
-            let (l, r) = (eval(&b.left)?, eval(&b.right)?);
+            let (l, r) = (eval(&b.left, params)?, eval(&b.right, params)?);
             match b.op {
                 BinOp::Add(_) => Ok(l + r),
                 BinOp::Sub(_) => Ok(l - r),
                 BinOp::Mul(_) => Ok(l * r),
-                BinOp::Div(_) if r.is_zero() => Err(syn::Error::new_spanned(
-                    &b.right,
-                    "division by zero; the divisor of a link parameter must not be zero",
-                )),
-                BinOp::Div(_) => Ok(l / r),
+                BinOp::Div(_) => match r.as_rational() {
+                    Some(d) if num_traits::Zero::is_zero(&d) => Err(syn::Error::new_spanned(
+                        &b.right,
+                        "division by zero; the divisor of a link parameter must not be zero",
+                    )),
+                    Some(d) => Ok(planar_arm_core::Coefficient::scale(
+                        &l,
+                        &(Rational::from_integer(1.into()) / d),
+                    )),
+                    None => Err(syn::Error::new_spanned(
+                        &b.right,
+                        "division by a run-time parameter is not supported: values must stay \
+                         polynomial in the parameters so that the derivation is exact; divide \
+                         by a number, or make the quotient itself the parameter (an f64 field)",
+                    )),
+                },
                 _ => Err(syn::Error::new_spanned(
                     b.op,
                     "unsupported operator; link parameters allow + - * / and parentheses",
                 )),
             }
         }
+        // self.m1
+        Expr::Field(f) if is_self(&f.base) => match &f.member {
+            syn::Member::Named(name) => {
+                params.push(ParamUse {
+                    name: name.to_string(),
+                    tokens: quote::quote!(#f),
+                });
+                Ok(Poly::param(Param::new(&name.to_string())))
+            }
+            syn::Member::Unnamed(_) => Err(syn::Error::new_spanned(
+                f,
+                "a run-time parameter is a named `f64` field of the struct: `self.name`",
+            )),
+        },
         Expr::Path(p) => Err(syn::Error::new_spanned(
             p,
             format!(
-                "expected a number, found `{}`; write the value itself (1, 0.35, 3/2): \
-                 parameters are evaluated exactly at compile time and cannot name constants",
-                quote::quote!(#p).to_string().replace(' ', "")
+                "expected a number, found `{}`; write the value itself (1, 0.35, 3/2): values are \
+                 evaluated exactly at compile time and cannot name constants; to read a value at \
+                 run time, name an `f64` field of the struct: `self.field`",
+                quote::quote!(#p).to_string().replace(' ', ""),
             ),
         )),
         Expr::Call(_) | Expr::MethodCall(_) | Expr::Macro(_) => Err(syn::Error::new_spanned(
             expr,
-            "expected a number, found a call; parameters are evaluated exactly at compile time, \
-             so only numbers, + - * / and parentheses are allowed",
+            "expected a number, found a call; values are numbers, `self.field` (an f64 field \
+             read at run time), + - * / and parentheses",
         )),
         Expr::Cast(c) => Err(syn::Error::new_spanned(
             c,
@@ -59,12 +93,16 @@ pub fn eval(expr: &Expr) -> syn::Result<Rational> {
         )),
         other => Err(syn::Error::new_spanned(
             other,
-            "expected a number such as 1, 0.35 or 3/2",
+            "expected a number such as 1, 0.35 or 3/2, or `self.field`",
         )),
     }
 }
 
-fn literal(digits: &str, suffix: &str, span: &Lit) -> syn::Result<Rational> {
+fn is_self(e: &Expr) -> bool {
+    matches!(e, Expr::Path(p) if p.qself.is_none() && p.path.is_ident("self"))
+}
+
+fn literal(digits: &str, suffix: &str, span: &Lit) -> syn::Result<Poly> {
     if !matches!(
         suffix,
         "" | "f64" | "f32" | "i32" | "i64" | "u32" | "u64" | "usize" | "isize"
@@ -74,7 +112,7 @@ fn literal(digits: &str, suffix: &str, span: &Lit) -> syn::Result<Rational> {
             format!("unsupported suffix `{suffix}`; write the number without it"),
         ));
     }
-    parse_decimal(digits).ok_or_else(|| {
+    parse_decimal(digits).map(Poly::constant).ok_or_else(|| {
         syn::Error::new_spanned(
             span,
             "number out of range; link parameters must be ordinary magnitudes such as 0.001 to 1000",
@@ -87,19 +125,36 @@ mod tests {
     use super::*;
     use planar_arm_core::ring::ratio;
 
-    fn ev(s: &str) -> syn::Result<Rational> {
-        eval(&syn::parse_str(s).unwrap())
+    fn ev(s: &str) -> syn::Result<Poly> {
+        eval(&syn::parse_str(s).unwrap(), &mut Vec::new())
     }
 
     #[test]
     fn values_are_exact() {
-        assert_eq!(ev("0.35").unwrap(), ratio(7, 20));
-        assert_eq!(ev("3/2").unwrap(), ratio(3, 2));
-        assert_eq!(ev("-(1 + 1) / 4").unwrap(), ratio(-1, 2));
-        assert_eq!(ev("9.80665").unwrap(), ratio(980_665, 100_000));
-        assert_eq!(ev("1_000").unwrap(), ratio(1000, 1));
+        assert_eq!(ev("0.35").unwrap(), Poly::constant(ratio(7, 20)));
+        assert_eq!(ev("3/2").unwrap(), Poly::constant(ratio(3, 2)));
+        assert_eq!(ev("-(1 + 1) / 4").unwrap(), Poly::constant(ratio(-1, 2)));
+        assert_eq!(
+            ev("9.80665").unwrap(),
+            Poly::constant(ratio(980_665, 100_000))
+        );
+        assert_eq!(ev("1_000").unwrap(), Poly::constant(ratio(1000, 1)));
         assert!(ev("1/0").is_err());
         assert!(ev("\"1\"").is_err());
         assert!(ev("foo").is_err());
+    }
+
+    #[test]
+    fn parameters_stay_polynomial() {
+        let mut uses = Vec::new();
+        let v = eval(
+            &syn::parse_str("self.m * self.l / 2 + 1").unwrap(),
+            &mut uses,
+        )
+        .unwrap();
+        assert_eq!(v.to_string(), "(1 + 1/2 l m)");
+        assert_eq!(uses.len(), 2);
+        assert!(ev("1 / self.m").is_err());
+        assert!(ev("self.0").is_err());
     }
 }

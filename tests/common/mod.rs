@@ -17,12 +17,11 @@ pub fn check_state<A: PlanarArm<N>, const N: usize>(
     qd: &SVector<f64, N>,
     qdd: &SVector<f64, N>,
 ) {
-    let links = A::LINKS;
-    let g = A::GRAVITY;
+    let model = arm.model();
     let m = arm.mass_matrix(q);
-    let m_ref = reference::mass_matrix(&links, q);
+    let m_ref = reference::mass_matrix(&model, q);
     let tau = arm.inverse_dynamics(q, qd, qdd);
-    let tau_ref = reference::inverse_dynamics(&links, g, q, qd, qdd);
+    let tau_ref = reference::inverse_dynamics(&model, q, qd, qdd);
     let scale = m_ref.amax() * (1.0 + qd.amax().powi(2) + qdd.amax()) + tau_ref.amax();
     let tol = 1e-9;
     for i in 0..N {
@@ -42,8 +41,8 @@ pub fn check_state<A: PlanarArm<N>, const N: usize>(
 
     let c = arm.coriolis(q, qd);
     let gv = arm.gravity(q);
-    let c_ref = reference::coriolis(&links, q, qd);
-    let g_ref = reference::gravity_torques(&links, g, q);
+    let c_ref = reference::coriolis(&model, q, qd);
+    let g_ref = reference::gravity_torques(&model, q);
     let cm = arm.coriolis_matrix(q, qd);
     let cqd = cm * qd;
     for i in 0..N {
@@ -61,18 +60,34 @@ pub fn check_state<A: PlanarArm<N>, const N: usize>(
         );
         assert!(close(cqd[i], c[i], tol, scale), "C qd = c, row {i}");
     }
-    // tau = M qdd + c + g, three generated methods against a fourth.
-    let assembled = m * qdd + c + gv;
+    // tau = M qdd + c + g + f, four generated methods against a fifth; the bias and M with
+    // the bias in one pass against the same.
+    let f = arm.friction(qd);
+    let f_ref = reference::friction(&model, qd);
+    let h = arm.bias(q, qd);
+    let (m2, h2) = arm.mass_matrix_and_bias(q, qd);
+    let assembled = m * qdd + c + gv + f;
+    let from_bias = m2 * qdd + h2;
     for i in 0..N {
+        assert!(close(f[i], f_ref[i], tol, scale), "friction[{i}]");
         assert!(
             close(assembled[i], tau[i], tol, scale),
-            "M qdd + c + g, row {i}"
+            "M qdd + c + g + f, row {i}"
         );
+        assert!(close(h[i], c[i] + gv[i] + f[i], tol, scale), "bias[{i}]");
+        assert!(close(h2[i], h[i], tol, scale), "(M, h).h[{i}]");
+        assert!(
+            close(from_bias[i], tau[i], tol, scale),
+            "M qdd + h, row {i}"
+        );
+        for j in 0..N {
+            assert!(close(m2[(i, j)], m[(i, j)], tol, scale), "(M, h).M");
+        }
     }
 
     // Forward dynamics inverts inverse dynamics.
     let back = arm.forward_dynamics(q, qd, &tau);
-    let fd_ref = reference::forward_dynamics(&links, g, q, qd, &tau);
+    let fd_ref = reference::forward_dynamics(&model, q, qd, &tau);
     let m_inv = m
         .cholesky()
         .map(|c| c.inverse())
@@ -111,13 +126,13 @@ pub fn check_state<A: PlanarArm<N>, const N: usize>(
     );
     assert!(close(
         t,
-        reference::kinetic_energy(&links, q, qd),
+        reference::kinetic_energy(&model, q, qd),
         tol,
         scale
     ));
     assert!(close(
         arm.potential_energy(q),
-        reference::potential_energy(&links, g, q),
+        reference::potential_energy(&model, q),
         tol,
         scale
     ));
@@ -134,7 +149,7 @@ pub fn check_state<A: PlanarArm<N>, const N: usize>(
 
     // Kinematics: tip, joints and Jacobian.
     let tip = arm.tip_pose(q);
-    let tip_ref = reference::tip_position(&links, q);
+    let tip_ref = reference::tip_position(&model, q);
     assert!(close(tip.translation.x, tip_ref.x, tol, 10.0));
     assert!(close(tip.translation.y, tip_ref.y, tol, 10.0));
     let phi: f64 = q.iter().sum();
@@ -142,13 +157,13 @@ pub fn check_state<A: PlanarArm<N>, const N: usize>(
         (tip.rotation.angle() - planar_arm::nalgebra::UnitComplex::new(phi).angle()).abs() < 1e-9
     );
     let j = arm.jacobian(q);
-    let j_ref = reference::jacobian(&links, q);
+    let j_ref = reference::jacobian(&model, q);
     assert!(
         (j - j_ref).amax() <= 1e-9 * j_ref.amax().max(1.0),
         "Jacobian"
     );
     let joints = arm.joint_positions(q);
-    let joints_ref = reference::joint_positions(&links, q);
+    let joints_ref = reference::joint_positions(&model, q);
     for (a, b) in joints.iter().zip(&joints_ref) {
         assert!(
             (a - b).norm() <= 1e-9 * (1.0 + b.coords.norm()),

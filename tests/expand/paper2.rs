@@ -1,20 +1,5 @@
 #[automatically_derived]
 impl ::planar_arm::PlanarArm<2> for Paper2 {
-    const LINKS: [::planar_arm::Link; 2] = [
-        ::planar_arm::Link {
-            length: 1.0,
-            mass: 1.0,
-            inertia: (1.0 / 12.0),
-            com: (1.0 / 2.0),
-        },
-        ::planar_arm::Link {
-            length: 1.0,
-            mass: 1.0,
-            inertia: (1.0 / 12.0),
-            com: (1.0 / 2.0),
-        },
-    ];
-    const GRAVITY: f64 = (981.0 / 100.0);
     const EXACT: ::planar_arm::exact::Derivation<2> = ::planar_arm::exact::Derivation {
         kinetic_energy: &[
             ::planar_arm::__private::term(
@@ -23,6 +8,7 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
                 0,
                 &[],
                 &[(::planar_arm::__private::Qd(0), 2)],
+                &[],
             ),
             ::planar_arm::__private::term(
                 1,
@@ -30,6 +16,7 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
                 1,
                 &[0, 1],
                 &[(::planar_arm::__private::Qd(0), 2)],
+                &[],
             ),
             ::planar_arm::__private::term(
                 1,
@@ -40,6 +27,7 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
                     (::planar_arm::__private::Qd(0), 1),
                     (::planar_arm::__private::Qd(1), 1),
                 ],
+                &[],
             ),
             ::planar_arm::__private::term(
                 1,
@@ -50,6 +38,7 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
                     (::planar_arm::__private::Qd(0), 1),
                     (::planar_arm::__private::Qd(1), 1),
                 ],
+                &[],
             ),
             ::planar_arm::__private::term(
                 1,
@@ -57,29 +46,30 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
                 0,
                 &[],
                 &[(::planar_arm::__private::Qd(1), 2)],
+                &[],
             ),
         ],
         potential_energy: &[
-            ::planar_arm::__private::term(2943, 200, 2, &[1], &[]),
-            ::planar_arm::__private::term(981, 200, 2, &[1, 1], &[]),
+            ::planar_arm::__private::term(2943, 200, 2, &[1], &[], &[]),
+            ::planar_arm::__private::term(981, 200, 2, &[1, 1], &[], &[]),
         ],
         mass_matrix: [
             [
                 &[
-                    ::planar_arm::__private::term(5, 3, 0, &[], &[]),
-                    ::planar_arm::__private::term(1, 1, 1, &[0, 1], &[]),
+                    ::planar_arm::__private::term(5, 3, 0, &[], &[], &[]),
+                    ::planar_arm::__private::term(1, 1, 1, &[0, 1], &[], &[]),
                 ],
                 &[
-                    ::planar_arm::__private::term(1, 3, 0, &[], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 1], &[]),
+                    ::planar_arm::__private::term(1, 3, 0, &[], &[], &[]),
+                    ::planar_arm::__private::term(1, 2, 1, &[0, 1], &[], &[]),
                 ],
             ],
             [
                 &[
-                    ::planar_arm::__private::term(1, 3, 0, &[], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 1], &[]),
+                    ::planar_arm::__private::term(1, 3, 0, &[], &[], &[]),
+                    ::planar_arm::__private::term(1, 2, 1, &[0, 1], &[], &[]),
                 ],
-                &[::planar_arm::__private::term(1, 3, 0, &[], &[])],
+                &[::planar_arm::__private::term(1, 3, 0, &[], &[], &[])],
             ],
         ],
         coriolis: [
@@ -93,6 +83,7 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
                         (::planar_arm::__private::Qd(0), 1),
                         (::planar_arm::__private::Qd(1), 1),
                     ],
+                    &[],
                 ),
                 ::planar_arm::__private::term(
                     -1,
@@ -100,6 +91,7 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
                     2,
                     &[0, 1],
                     &[(::planar_arm::__private::Qd(1), 2)],
+                    &[],
                 ),
             ],
             &[
@@ -109,17 +101,45 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
                     2,
                     &[0, 1],
                     &[(::planar_arm::__private::Qd(0), 2)],
+                    &[],
                 ),
             ],
         ],
         gravity: [
             &[
-                ::planar_arm::__private::term(2943, 200, 1, &[1], &[]),
-                ::planar_arm::__private::term(981, 200, 1, &[1, 1], &[]),
+                ::planar_arm::__private::term(2943, 200, 1, &[1], &[], &[]),
+                ::planar_arm::__private::term(981, 200, 1, &[1, 1], &[], &[]),
             ],
-            &[::planar_arm::__private::term(981, 200, 1, &[1, 1], &[])],
+            &[::planar_arm::__private::term(981, 200, 1, &[1, 1], &[], &[])],
         ],
     };
+    #[inline]
+    fn model(&self) -> ::planar_arm::Model<2> {
+        ::planar_arm::Model {
+            links: [
+                ::planar_arm::Link {
+                    length: 1.0,
+                    mass: 1.0,
+                    inertia: (1.0 / 12.0),
+                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 2.0), 0.0),
+                    armature: 0.0,
+                    damping: 0.0,
+                    frictionloss: 0.0,
+                },
+                ::planar_arm::Link {
+                    length: 1.0,
+                    mass: 1.0,
+                    inertia: (1.0 / 12.0),
+                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 2.0), 0.0),
+                    armature: 0.0,
+                    damping: 0.0,
+                    frictionloss: 0.0,
+                },
+            ],
+            gravity: (981.0 / 100.0),
+            payload: ::planar_arm::Payload::NONE,
+        }
+    }
     /**The mass matrix M(q), derived exactly (symmetric; upper triangle shown). Joint angles `q`, rates `qd`, accelerations `qdd` (1-based in the formulas); `cK` and `sK...` are the cosine and sine of the sum of the joint angles named by the digits.
 
 ```text
@@ -218,7 +238,79 @@ Cost: 4 multiplications, 2 additions, 0 divisions, 2 sin_cos pairs.*/
         let __g1 = (2943.0 / 200.0) * __c1 + __g2;
         ::planar_arm::__private::vector([__g1, __g2])
     }
-    /**Lagrange's equation, tau_i = d/dt dL/dqd_i - dL/dq_i, expanded.
+    /**The joint friction torques f(qd): viscous `damping qd_i` plus Coulomb `frictionloss sign(qd_i)`, with sign(0) = 0 (MuJoCo's `damping` and `frictionloss`). The Coulomb term jumps at `qd_i = 0`.
+
+```text
+f1 = 0
+f2 = 0
+```
+
+
+Cost: 0 multiplications, 0 additions, 0 divisions, 0 sin_cos pairs.*/
+    #[inline]
+    fn friction(
+        &self,
+        _: &::planar_arm::nalgebra::SVector<f64, 2>,
+    ) -> ::planar_arm::nalgebra::SVector<f64, 2> {
+        let __f1 = 0.0;
+        ::planar_arm::__private::vector([__f1, __f1])
+    }
+    /**The bias h(q, qd) = c + g + f: every torque but the inertial one, so that `inverse_dynamics(q, qd, qdd) = mass_matrix(q) qdd + bias(q, qd)` (Pinocchio's `nonLinearEffects`, MuJoCo's `qfrc_bias` plus its passive joint friction).
+
+Cost: 11 multiplications, 5 additions, 0 divisions, 2 sin_cos pairs.*/
+    #[inline]
+    fn bias(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<f64, 2>,
+    ) -> ::planar_arm::nalgebra::SVector<f64, 2> {
+        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
+        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+        ]);
+        let __c12 = __c1 * __c2 - __s1 * __s2;
+        let __t1 = (981.0 / 200.0) * __c12;
+        let __t2 = (1.0 / 2.0) * __s2;
+        let __h1 = (2943.0 / 200.0) * __c1 + __t1
+            - (__s2 * __qd1 * __qd2 + __t2 * __qd2 * __qd2);
+        let __h2 = __t1 + __t2 * __qd1 * __qd1;
+        ::planar_arm::__private::vector([__h1, __h2])
+    }
+    /**M(q) and h(q, qd) = c + g + f in one pass, sharing the trigonometry and every common subexpression: what computed-torque and operational-space controllers need every cycle.
+
+Cost: 12 multiplications, 7 additions, 0 divisions, 2 sin_cos pairs.*/
+    #[inline]
+    fn mass_matrix_and_bias(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<f64, 2>,
+    ) -> (
+        ::planar_arm::nalgebra::SMatrix<f64, 2, 2>,
+        ::planar_arm::nalgebra::SVector<f64, 2>,
+    ) {
+        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
+        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+        ]);
+        let __m11 = (5.0 / 3.0) + __c2;
+        let __m12 = (1.0 / 3.0) + (1.0 / 2.0) * __c2;
+        let __c12 = __c2 * __c1 - __s2 * __s1;
+        let __t1 = (981.0 / 200.0) * __c12;
+        let __t2 = (1.0 / 2.0) * __s2;
+        let __h1 = (2943.0 / 200.0) * __c1 + __t1
+            - (__s2 * __qd1 * __qd2 + __t2 * __qd2 * __qd2);
+        let __h2 = __t1 + __t2 * __qd1 * __qd1;
+        let __m22 = (1.0 / 3.0);
+        (
+            ::planar_arm::__private::matrix([[__m11, __m12], [__m12, __m22]]),
+            ::planar_arm::__private::vector([__h1, __h2]),
+        )
+    }
+    /**Lagrange's equation, tau_i = d/dt dL/dqd_i - dL/dq_i, expanded, plus the joint friction f(qd) (see `friction`).
 
 ```text
 tau1 = (2943/200 c1 + 981/200 c12) + (5/3 + c2) qdd1 + (1/3 + 1/2 c2) qdd2 - s2 qd1 qd2 - 1/2 s2 qd2^2
@@ -251,7 +343,7 @@ Cost: 16 multiplications, 11 additions, 0 divisions, 2 sin_cos pairs.*/
         let __tau2 = __t1 + __qdd1 * __t2 + (1.0 / 3.0) * __qdd2 + __t3 * __qd1 * __qd1;
         ::planar_arm::__private::vector([__tau1, __tau2])
     }
-    /**qdd = M^-1 (tau - c - g) in closed form (Cramer's rule, det = M11 M22 - M12^2 > 0).
+    /**qdd = M^-1 (tau - c - g - f) in closed form (Cramer's rule, det = M11 M22 - M12^2 > 0).
 
 Cost: 18 multiplications, 13 additions, 2 divisions, 2 sin_cos pairs.*/
     #[inline]

@@ -1,26 +1,5 @@
 #[automatically_derived]
 impl ::planar_arm::PlanarArm<3> for Paper3 {
-    const LINKS: [::planar_arm::Link; 3] = [
-        ::planar_arm::Link {
-            length: 1.0,
-            mass: 1.0,
-            inertia: (1.0 / 12.0),
-            com: (1.0 / 2.0),
-        },
-        ::planar_arm::Link {
-            length: 1.0,
-            mass: 1.0,
-            inertia: (1.0 / 12.0),
-            com: (1.0 / 2.0),
-        },
-        ::planar_arm::Link {
-            length: 1.0,
-            mass: 1.0,
-            inertia: (1.0 / 12.0),
-            com: (1.0 / 2.0),
-        },
-    ];
-    const GRAVITY: f64 = (981.0 / 100.0);
     const EXACT: ::planar_arm::exact::Derivation<3> = ::planar_arm::exact::Derivation {
         kinetic_energy: &[
             ::planar_arm::__private::term(
@@ -29,6 +8,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                 0,
                 &[],
                 &[(::planar_arm::__private::Qd(0), 2)],
+                &[],
             ),
             ::planar_arm::__private::term(
                 3,
@@ -36,6 +16,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                 1,
                 &[0, 1],
                 &[(::planar_arm::__private::Qd(0), 2)],
+                &[],
             ),
             ::planar_arm::__private::term(
                 1,
@@ -43,6 +24,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                 1,
                 &[0, 1, 1],
                 &[(::planar_arm::__private::Qd(0), 2)],
+                &[],
             ),
             ::planar_arm::__private::term(
                 1,
@@ -50,6 +32,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                 1,
                 &[0, 0, 1],
                 &[(::planar_arm::__private::Qd(0), 2)],
+                &[],
             ),
             ::planar_arm::__private::term(
                 5,
@@ -60,6 +43,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     (::planar_arm::__private::Qd(0), 1),
                     (::planar_arm::__private::Qd(1), 1),
                 ],
+                &[],
             ),
             ::planar_arm::__private::term(
                 3,
@@ -70,6 +54,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     (::planar_arm::__private::Qd(0), 1),
                     (::planar_arm::__private::Qd(1), 1),
                 ],
+                &[],
             ),
             ::planar_arm::__private::term(
                 1,
@@ -80,6 +65,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     (::planar_arm::__private::Qd(0), 1),
                     (::planar_arm::__private::Qd(1), 1),
                 ],
+                &[],
             ),
             ::planar_arm::__private::term(
                 1,
@@ -90,6 +76,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     (::planar_arm::__private::Qd(0), 1),
                     (::planar_arm::__private::Qd(1), 1),
                 ],
+                &[],
             ),
             ::planar_arm::__private::term(
                 1,
@@ -100,6 +87,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     (::planar_arm::__private::Qd(0), 1),
                     (::planar_arm::__private::Qd(2), 1),
                 ],
+                &[],
             ),
             ::planar_arm::__private::term(
                 1,
@@ -110,6 +98,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     (::planar_arm::__private::Qd(0), 1),
                     (::planar_arm::__private::Qd(2), 1),
                 ],
+                &[],
             ),
             ::planar_arm::__private::term(
                 1,
@@ -120,6 +109,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     (::planar_arm::__private::Qd(0), 1),
                     (::planar_arm::__private::Qd(2), 1),
                 ],
+                &[],
             ),
             ::planar_arm::__private::term(
                 5,
@@ -127,6 +117,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                 0,
                 &[],
                 &[(::planar_arm::__private::Qd(1), 2)],
+                &[],
             ),
             ::planar_arm::__private::term(
                 1,
@@ -134,6 +125,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                 1,
                 &[0, 0, 1],
                 &[(::planar_arm::__private::Qd(1), 2)],
+                &[],
             ),
             ::planar_arm::__private::term(
                 1,
@@ -144,6 +136,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     (::planar_arm::__private::Qd(1), 1),
                     (::planar_arm::__private::Qd(2), 1),
                 ],
+                &[],
             ),
             ::planar_arm::__private::term(
                 1,
@@ -154,6 +147,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     (::planar_arm::__private::Qd(1), 1),
                     (::planar_arm::__private::Qd(2), 1),
                 ],
+                &[],
             ),
             ::planar_arm::__private::term(
                 1,
@@ -161,60 +155,61 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                 0,
                 &[],
                 &[(::planar_arm::__private::Qd(2), 2)],
+                &[],
             ),
         ],
         potential_energy: &[
-            ::planar_arm::__private::term(981, 40, 2, &[1], &[]),
-            ::planar_arm::__private::term(2943, 200, 2, &[1, 1], &[]),
-            ::planar_arm::__private::term(981, 200, 2, &[1, 1, 1], &[]),
+            ::planar_arm::__private::term(981, 40, 2, &[1], &[], &[]),
+            ::planar_arm::__private::term(2943, 200, 2, &[1, 1], &[], &[]),
+            ::planar_arm::__private::term(981, 200, 2, &[1, 1, 1], &[], &[]),
         ],
         mass_matrix: [
             [
                 &[
-                    ::planar_arm::__private::term(4, 1, 0, &[], &[]),
-                    ::planar_arm::__private::term(3, 1, 1, &[0, 1], &[]),
-                    ::planar_arm::__private::term(1, 1, 1, &[0, 1, 1], &[]),
-                    ::planar_arm::__private::term(1, 1, 1, &[0, 0, 1], &[]),
+                    ::planar_arm::__private::term(4, 1, 0, &[], &[], &[]),
+                    ::planar_arm::__private::term(3, 1, 1, &[0, 1], &[], &[]),
+                    ::planar_arm::__private::term(1, 1, 1, &[0, 1, 1], &[], &[]),
+                    ::planar_arm::__private::term(1, 1, 1, &[0, 0, 1], &[], &[]),
                 ],
                 &[
-                    ::planar_arm::__private::term(5, 3, 0, &[], &[]),
-                    ::planar_arm::__private::term(3, 2, 1, &[0, 1], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 1, 1], &[]),
-                    ::planar_arm::__private::term(1, 1, 1, &[0, 0, 1], &[]),
+                    ::planar_arm::__private::term(5, 3, 0, &[], &[], &[]),
+                    ::planar_arm::__private::term(3, 2, 1, &[0, 1], &[], &[]),
+                    ::planar_arm::__private::term(1, 2, 1, &[0, 1, 1], &[], &[]),
+                    ::planar_arm::__private::term(1, 1, 1, &[0, 0, 1], &[], &[]),
                 ],
                 &[
-                    ::planar_arm::__private::term(1, 3, 0, &[], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 1, 1], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 0, 1], &[]),
+                    ::planar_arm::__private::term(1, 3, 0, &[], &[], &[]),
+                    ::planar_arm::__private::term(1, 2, 1, &[0, 1, 1], &[], &[]),
+                    ::planar_arm::__private::term(1, 2, 1, &[0, 0, 1], &[], &[]),
                 ],
             ],
             [
                 &[
-                    ::planar_arm::__private::term(5, 3, 0, &[], &[]),
-                    ::planar_arm::__private::term(3, 2, 1, &[0, 1], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 1, 1], &[]),
-                    ::planar_arm::__private::term(1, 1, 1, &[0, 0, 1], &[]),
+                    ::planar_arm::__private::term(5, 3, 0, &[], &[], &[]),
+                    ::planar_arm::__private::term(3, 2, 1, &[0, 1], &[], &[]),
+                    ::planar_arm::__private::term(1, 2, 1, &[0, 1, 1], &[], &[]),
+                    ::planar_arm::__private::term(1, 1, 1, &[0, 0, 1], &[], &[]),
                 ],
                 &[
-                    ::planar_arm::__private::term(5, 3, 0, &[], &[]),
-                    ::planar_arm::__private::term(1, 1, 1, &[0, 0, 1], &[]),
+                    ::planar_arm::__private::term(5, 3, 0, &[], &[], &[]),
+                    ::planar_arm::__private::term(1, 1, 1, &[0, 0, 1], &[], &[]),
                 ],
                 &[
-                    ::planar_arm::__private::term(1, 3, 0, &[], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 0, 1], &[]),
+                    ::planar_arm::__private::term(1, 3, 0, &[], &[], &[]),
+                    ::planar_arm::__private::term(1, 2, 1, &[0, 0, 1], &[], &[]),
                 ],
             ],
             [
                 &[
-                    ::planar_arm::__private::term(1, 3, 0, &[], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 1, 1], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 0, 1], &[]),
+                    ::planar_arm::__private::term(1, 3, 0, &[], &[], &[]),
+                    ::planar_arm::__private::term(1, 2, 1, &[0, 1, 1], &[], &[]),
+                    ::planar_arm::__private::term(1, 2, 1, &[0, 0, 1], &[], &[]),
                 ],
                 &[
-                    ::planar_arm::__private::term(1, 3, 0, &[], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 0, 1], &[]),
+                    ::planar_arm::__private::term(1, 3, 0, &[], &[], &[]),
+                    ::planar_arm::__private::term(1, 2, 1, &[0, 0, 1], &[], &[]),
                 ],
-                &[::planar_arm::__private::term(1, 3, 0, &[], &[])],
+                &[::planar_arm::__private::term(1, 3, 0, &[], &[], &[])],
             ],
         ],
         coriolis: [
@@ -228,6 +223,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                         (::planar_arm::__private::Qd(0), 1),
                         (::planar_arm::__private::Qd(1), 1),
                     ],
+                    &[],
                 ),
                 ::planar_arm::__private::term(
                     -1,
@@ -238,6 +234,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                         (::planar_arm::__private::Qd(0), 1),
                         (::planar_arm::__private::Qd(1), 1),
                     ],
+                    &[],
                 ),
                 ::planar_arm::__private::term(
                     -1,
@@ -248,6 +245,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                         (::planar_arm::__private::Qd(0), 1),
                         (::planar_arm::__private::Qd(2), 1),
                     ],
+                    &[],
                 ),
                 ::planar_arm::__private::term(
                     -1,
@@ -258,6 +256,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                         (::planar_arm::__private::Qd(0), 1),
                         (::planar_arm::__private::Qd(2), 1),
                     ],
+                    &[],
                 ),
                 ::planar_arm::__private::term(
                     -3,
@@ -265,6 +264,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     2,
                     &[0, 1],
                     &[(::planar_arm::__private::Qd(1), 2)],
+                    &[],
                 ),
                 ::planar_arm::__private::term(
                     -1,
@@ -272,6 +272,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     2,
                     &[0, 1, 1],
                     &[(::planar_arm::__private::Qd(1), 2)],
+                    &[],
                 ),
                 ::planar_arm::__private::term(
                     -1,
@@ -282,6 +283,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                         (::planar_arm::__private::Qd(1), 1),
                         (::planar_arm::__private::Qd(2), 1),
                     ],
+                    &[],
                 ),
                 ::planar_arm::__private::term(
                     -1,
@@ -292,6 +294,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                         (::planar_arm::__private::Qd(1), 1),
                         (::planar_arm::__private::Qd(2), 1),
                     ],
+                    &[],
                 ),
                 ::planar_arm::__private::term(
                     -1,
@@ -299,6 +302,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     2,
                     &[0, 1, 1],
                     &[(::planar_arm::__private::Qd(2), 2)],
+                    &[],
                 ),
                 ::planar_arm::__private::term(
                     -1,
@@ -306,6 +310,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     2,
                     &[0, 0, 1],
                     &[(::planar_arm::__private::Qd(2), 2)],
+                    &[],
                 ),
             ],
             &[
@@ -315,6 +320,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     2,
                     &[0, 1],
                     &[(::planar_arm::__private::Qd(0), 2)],
+                    &[],
                 ),
                 ::planar_arm::__private::term(
                     1,
@@ -322,6 +328,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     2,
                     &[0, 1, 1],
                     &[(::planar_arm::__private::Qd(0), 2)],
+                    &[],
                 ),
                 ::planar_arm::__private::term(
                     -1,
@@ -332,6 +339,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                         (::planar_arm::__private::Qd(0), 1),
                         (::planar_arm::__private::Qd(2), 1),
                     ],
+                    &[],
                 ),
                 ::planar_arm::__private::term(
                     -1,
@@ -342,6 +350,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                         (::planar_arm::__private::Qd(1), 1),
                         (::planar_arm::__private::Qd(2), 1),
                     ],
+                    &[],
                 ),
                 ::planar_arm::__private::term(
                     -1,
@@ -349,6 +358,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     2,
                     &[0, 0, 1],
                     &[(::planar_arm::__private::Qd(2), 2)],
+                    &[],
                 ),
             ],
             &[
@@ -358,6 +368,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     2,
                     &[0, 1, 1],
                     &[(::planar_arm::__private::Qd(0), 2)],
+                    &[],
                 ),
                 ::planar_arm::__private::term(
                     1,
@@ -365,6 +376,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     2,
                     &[0, 0, 1],
                     &[(::planar_arm::__private::Qd(0), 2)],
+                    &[],
                 ),
                 ::planar_arm::__private::term(
                     1,
@@ -375,6 +387,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                         (::planar_arm::__private::Qd(0), 1),
                         (::planar_arm::__private::Qd(1), 1),
                     ],
+                    &[],
                 ),
                 ::planar_arm::__private::term(
                     1,
@@ -382,22 +395,59 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     2,
                     &[0, 0, 1],
                     &[(::planar_arm::__private::Qd(1), 2)],
+                    &[],
                 ),
             ],
         ],
         gravity: [
             &[
-                ::planar_arm::__private::term(981, 40, 1, &[1], &[]),
-                ::planar_arm::__private::term(2943, 200, 1, &[1, 1], &[]),
-                ::planar_arm::__private::term(981, 200, 1, &[1, 1, 1], &[]),
+                ::planar_arm::__private::term(981, 40, 1, &[1], &[], &[]),
+                ::planar_arm::__private::term(2943, 200, 1, &[1, 1], &[], &[]),
+                ::planar_arm::__private::term(981, 200, 1, &[1, 1, 1], &[], &[]),
             ],
             &[
-                ::planar_arm::__private::term(2943, 200, 1, &[1, 1], &[]),
-                ::planar_arm::__private::term(981, 200, 1, &[1, 1, 1], &[]),
+                ::planar_arm::__private::term(2943, 200, 1, &[1, 1], &[], &[]),
+                ::planar_arm::__private::term(981, 200, 1, &[1, 1, 1], &[], &[]),
             ],
-            &[::planar_arm::__private::term(981, 200, 1, &[1, 1, 1], &[])],
+            &[::planar_arm::__private::term(981, 200, 1, &[1, 1, 1], &[], &[])],
         ],
     };
+    #[inline]
+    fn model(&self) -> ::planar_arm::Model<3> {
+        ::planar_arm::Model {
+            links: [
+                ::planar_arm::Link {
+                    length: 1.0,
+                    mass: 1.0,
+                    inertia: (1.0 / 12.0),
+                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 2.0), 0.0),
+                    armature: 0.0,
+                    damping: 0.0,
+                    frictionloss: 0.0,
+                },
+                ::planar_arm::Link {
+                    length: 1.0,
+                    mass: 1.0,
+                    inertia: (1.0 / 12.0),
+                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 2.0), 0.0),
+                    armature: 0.0,
+                    damping: 0.0,
+                    frictionloss: 0.0,
+                },
+                ::planar_arm::Link {
+                    length: 1.0,
+                    mass: 1.0,
+                    inertia: (1.0 / 12.0),
+                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 2.0), 0.0),
+                    armature: 0.0,
+                    damping: 0.0,
+                    frictionloss: 0.0,
+                },
+            ],
+            gravity: (981.0 / 100.0),
+            payload: ::planar_arm::Payload::NONE,
+        }
+    }
     /**The mass matrix M(q), derived exactly (symmetric; upper triangle shown). Joint angles `q`, rates `qd`, accelerations `qdd` (1-based in the formulas); `cK` and `sK...` are the cosine and sine of the sum of the joint angles named by the digits.
 
 ```text
@@ -565,7 +615,122 @@ Cost: 9 multiplications, 6 additions, 0 divisions, 3 sin_cos pairs.*/
         let __g2 = __t1 + __g3;
         ::planar_arm::__private::vector([__g1, __g2, __g3])
     }
-    /**Lagrange's equation, tau_i = d/dt dL/dqd_i - dL/dq_i, expanded.
+    /**The joint friction torques f(qd): viscous `damping qd_i` plus Coulomb `frictionloss sign(qd_i)`, with sign(0) = 0 (MuJoCo's `damping` and `frictionloss`). The Coulomb term jumps at `qd_i = 0`.
+
+```text
+f1 = 0
+f2 = 0
+f3 = 0
+```
+
+
+Cost: 0 multiplications, 0 additions, 0 divisions, 0 sin_cos pairs.*/
+    #[inline]
+    fn friction(
+        &self,
+        _: &::planar_arm::nalgebra::SVector<f64, 3>,
+    ) -> ::planar_arm::nalgebra::SVector<f64, 3> {
+        let __f1 = 0.0;
+        ::planar_arm::__private::vector([__f1, __f1, __f1])
+    }
+    /**The bias h(q, qd) = c + g + f: every torque but the inertial one, so that `inverse_dynamics(q, qd, qdd) = mass_matrix(q) qdd + bias(q, qd)` (Pinocchio's `nonLinearEffects`, MuJoCo's `qfrc_bias` plus its passive joint friction).
+
+Evaluated not term by term but by the planar recursive Newton-Euler algorithm unrolled for this arm (the same function, fewer operations): link-frame velocities and accelerations outwards, forces and moments inwards, one rotation by each joint's (cos, sin) per pass, the link constants folded in.
+
+Cost: 24 multiplications, 19 additions, 0 divisions, 3 sin_cos pairs.*/
+    #[inline]
+    fn bias(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<f64, 3>,
+    ) -> ::planar_arm::nalgebra::SVector<f64, 3> {
+        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+        ]);
+        let __ax1 = (981.0 / 100.0) * __s1;
+        let __ay1 = (981.0 / 100.0) * __c1;
+        let __ex1 = __ax1 - __qd1 * __qd1;
+        let __ax2 = __ex1 * __c2 + __ay1 * __s2;
+        let __ay2 = __ay1 * __c2 - __ex1 * __s2;
+        let __w2 = __qd1 + __qd2;
+        let __t1 = __w2 * __w2;
+        let __ex2 = __ax2 - __t1;
+        let __ax3 = __ex2 * __c3 + __ay2 * __s3;
+        let __ay3 = __ay2 * __c3 - __ex2 * __s3;
+        let __w3 = __w2 + __qd3;
+        let __fx3 = __ax3 - (1.0 / 2.0) * __w3 * __w3;
+        let __h3 = (1.0 / 2.0) * __ay3;
+        let __t2 = __s3 * __fx3 + __c3 * __ay3;
+        let __fx2 = __ax2 - (1.0 / 2.0) * __t1 + __c3 * __fx3 - __s3 * __ay3;
+        let __fy2 = __ay2 + __t2;
+        let __h2 = __h3 + (1.0 / 2.0) * __ay2 + __t2;
+        let __h1 = __h2 + (1.0 / 2.0) * __ay1 + __s2 * __fx2 + __c2 * __fy2;
+        ::planar_arm::__private::vector([__h1, __h2, __h3])
+    }
+    /**M(q) and h(q, qd) = c + g + f in one pass, sharing the trigonometry and every common subexpression: what computed-torque and operational-space controllers need every cycle.
+
+M by the composite-rigid-body algorithm unrolled for this arm, h by the recursive Newton-Euler algorithm unrolled for this arm.
+
+Cost: 31 multiplications, 28 additions, 0 divisions, 3 sin_cos pairs.*/
+    #[inline]
+    fn mass_matrix_and_bias(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<f64, 3>,
+    ) -> (
+        ::planar_arm::nalgebra::SMatrix<f64, 3, 3>,
+        ::planar_arm::nalgebra::SVector<f64, 3>,
+    ) {
+        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+        ]);
+        let __t1 = (1.0 / 2.0) * __c3;
+        let __hy2 = (1.0 / 2.0) * __s3;
+        let __m23 = (1.0 / 3.0) + __t1;
+        let __t2 = __s2 * __hy2;
+        let __m13 = __m23 + __c2 * __t1 - __t2;
+        let __hx2 = __t1 + (3.0 / 2.0);
+        let __m22 = 2.0 * __t1 + (5.0 / 3.0);
+        let __t3 = __c2 * __hx2 - __t2;
+        let __m12 = __m22 + __t3;
+        let __m11 = 2.0 * __t3 + __m22 + (7.0 / 3.0);
+        let __ax1 = (981.0 / 100.0) * __s1;
+        let __ay1 = (981.0 / 100.0) * __c1;
+        let __ex1 = __ax1 - __qd1 * __qd1;
+        let __ax2 = __c2 * __ex1 + __s2 * __ay1;
+        let __ay2 = __c2 * __ay1 - __s2 * __ex1;
+        let __w2 = __qd1 + __qd2;
+        let __t4 = __w2 * __w2;
+        let __ex2 = __ax2 - __t4;
+        let __ax3 = __c3 * __ex2 + __s3 * __ay2;
+        let __ay3 = __c3 * __ay2 - __s3 * __ex2;
+        let __w3 = __w2 + __qd3;
+        let __fx3 = __ax3 - (1.0 / 2.0) * __w3 * __w3;
+        let __h3 = (1.0 / 2.0) * __ay3;
+        let __t5 = __s3 * __fx3 + __c3 * __ay3;
+        let __fx2 = __ax2 - (1.0 / 2.0) * __t4 + __c3 * __fx3 - __s3 * __ay3;
+        let __fy2 = __ay2 + __t5;
+        let __h2 = __h3 + (1.0 / 2.0) * __ay2 + __t5;
+        let __h1 = __h2 + (1.0 / 2.0) * __ay1 + __s2 * __fx2 + __c2 * __fy2;
+        let __m33 = (1.0 / 3.0);
+        (
+            ::planar_arm::__private::matrix([
+                [__m11, __m12, __m13],
+                [__m12, __m22, __m23],
+                [__m13, __m23, __m33],
+            ]),
+            ::planar_arm::__private::vector([__h1, __h2, __h3]),
+        )
+    }
+    /**Lagrange's equation, tau_i = d/dt dL/dqd_i - dL/dq_i, expanded, plus the joint friction f(qd) (see `friction`).
 
 ```text
 tau1 = (981/40 c1 + 2943/200 c12 + 981/200 c123) + (4 + 3 c2 + c23 + c3) qdd1 + (5/3 + 3/2 c2 + 1/2 c23 + c3) qdd2 + (1/3 + 1/2 c23 + 1/2 c3) qdd3 + (-3 s2 - s23) qd1 qd2 + (-s23 - s3) qd1 qd3 + (-3/2 s2 - 1/2 s23) qd2^2 + (-s23 - s3) qd2 qd3 + (-1/2 s23 - 1/2 s3) qd3^2
@@ -618,7 +783,7 @@ Cost: 29 multiplications, 28 additions, 0 divisions, 3 sin_cos pairs.*/
             + __c2 * __fy2;
         ::planar_arm::__private::vector([__tau1, __tau2, __tau3])
     }
-    /**qdd = M^-1 (tau - c - g) by an unrolled L D L^T factorisation of M (no square roots, no allocation).
+    /**qdd = M^-1 (tau - c - g - f) by an unrolled L D L^T factorisation of M (no square roots, no allocation).
 
 M, c and g evaluated as `mass_matrix`, `coriolis` and `gravity` evaluate them: M from the formulas, c by the recursive Newton-Euler algorithm unrolled for this arm, g from the formulas.
 

@@ -43,7 +43,7 @@ fn main() {
     assert_eq!(set.len(), 1);
     let q = SVector::<f64, 2>::new(core::f64::consts::FRAC_PI_2, 0.0);
     assert!((tip_height(&arm, &q) - 0.7).abs() < 1e-12);
-    assert_eq!(Documented::LINKS[1].inertia, 0.01);
+    assert_eq!(arm.links()[1].inertia, 0.01);
     let [up, _] = arm.inverse_kinematics(&Point2::new(0.5, 0.2)).unwrap();
     let reached = arm.tip_pose(&up).translation.vector;
     assert!((reached.x - 0.5).abs() < 1e-12 && (reached.y - 0.2).abs() < 1e-12);

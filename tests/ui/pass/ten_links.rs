@@ -35,7 +35,8 @@ fn main() {
         let qd = SVector::<f64, 10>::from_fn(|i, _| (t - 4.0) * 0.2 * (i as f64).cos());
         let qdd = SVector::<f64, 10>::from_fn(|i, _| 0.3 * t - 0.1 * i as f64);
         let tau = arm.inverse_dynamics(&q, &qd, &qdd);
-        let tau_ref = reference::inverse_dynamics(&Ten::LINKS, Ten::GRAVITY, &q, &qd, &qdd);
+        let tau_ref =
+            reference::inverse_dynamics(&arm.model(), &q, &qd, &qdd);
         assert!(
             (tau - tau_ref).amax() <= 1e-9 * (1.0 + tau_ref.amax()),
             "{tau} {tau_ref}"
@@ -48,6 +49,6 @@ fn main() {
         assert!(arm.mass_matrix(&q).cholesky().is_some());
         assert_eq!(arm.joint_positions(&q).len(), 10);
     }
-    let reach: f64 = Ten::LINKS.iter().map(|l| l.length).sum();
+    let reach: f64 = arm.links().iter().map(|l| l.length).sum();
     assert!((arm.workspace().outer_radius() - reach).abs() < 1e-12);
 }

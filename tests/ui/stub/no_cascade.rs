@@ -20,5 +20,5 @@ fn main() {
     let qdd = arm.forward_dynamics(&q, &q, &q);
     let _ = arm.inverse_kinematics(&Point2::new(1.0, 0.5));
     let _ = arm.tip_force(&q, &q);
-    println!("{m} {qdd} {}", Arm::LINKS[0].length);
+    println!("{m} {qdd} {}", arm.links()[0].length);
 }

@@ -1,0 +1,323 @@
+//! What run-time parameters cost: inverse dynamics, mass matrix and forward dynamics of arms
+//! whose masses, inertias and centres of mass are all `self.NAME` fields, against the same
+//! arms written with literals (the values of `benches/dynamics.rs`'s random arms), in one run.
+//!
+//! Not run in CI. The ratios in docs/performance.md come from one run of
+//!
+//! ```text
+//! CARGO_TARGET_DIR=/tmp/target_bench cargo bench --bench parameters
+//! python3 bench/parameters_table.py /tmp/target_bench/criterion
+//! ```
+//!
+//! Before timing, each parameterised arm is checked to give its literal twin's numbers.
+
+use std::hint::black_box;
+use std::time::Duration;
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use planar_arm::nalgebra::SVector;
+use planar_arm::prelude::*;
+
+#[derive(PlanarArm, Default, Debug)]
+#[arm(gravity = 9.80665)]
+struct Literal2 {
+    #[arm(length = 6/1, mass = 3/1, inertia = 6/25, com = 12/5)]
+    a: Revolute,
+    #[arm(length = 4/1, mass = 38/5, inertia = 1/25, com = 4/1)]
+    b: Revolute,
+}
+
+#[derive(PlanarArm, Debug)]
+#[arm(gravity = 9.80665)]
+struct Params2 {
+    #[arm(length = 6/1, mass = self.mass_a, inertia = self.inertia_a, com = self.com_a)]
+    a: Revolute,
+    #[arm(length = 4/1, mass = self.mass_b, inertia = self.inertia_b, com = self.com_b)]
+    b: Revolute,
+    mass_a: f64,
+    inertia_a: f64,
+    com_a: f64,
+    mass_b: f64,
+    inertia_b: f64,
+    com_b: f64,
+}
+
+impl Default for Params2 {
+    fn default() -> Self {
+        Self {
+            a: Revolute,
+            mass_a: 3.0 / 1.0,
+            inertia_a: 6.0 / 25.0,
+            com_a: 12.0 / 5.0,
+            b: Revolute,
+            mass_b: 38.0 / 5.0,
+            inertia_b: 1.0 / 25.0,
+            com_b: 4.0 / 1.0,
+        }
+    }
+}
+
+#[derive(PlanarArm, Default, Debug)]
+#[arm(gravity = 9.80665)]
+struct Literal3 {
+    #[arm(length = 12/5, mass = 26/5, inertia = 5/4, com = 6/25)]
+    a: Revolute,
+    #[arm(length = 23/10, mass = 2/1, inertia = 1/20, com = 69/100)]
+    b: Revolute,
+    #[arm(length = 2/1, mass = 3/2, inertia = 11/25, com = 3/5)]
+    c: Revolute,
+}
+
+#[derive(PlanarArm, Debug)]
+#[arm(gravity = 9.80665)]
+struct Params3 {
+    #[arm(length = 12/5, mass = self.mass_a, inertia = self.inertia_a, com = self.com_a)]
+    a: Revolute,
+    #[arm(length = 23/10, mass = self.mass_b, inertia = self.inertia_b, com = self.com_b)]
+    b: Revolute,
+    #[arm(length = 2/1, mass = self.mass_c, inertia = self.inertia_c, com = self.com_c)]
+    c: Revolute,
+    mass_a: f64,
+    inertia_a: f64,
+    com_a: f64,
+    mass_b: f64,
+    inertia_b: f64,
+    com_b: f64,
+    mass_c: f64,
+    inertia_c: f64,
+    com_c: f64,
+}
+
+impl Default for Params3 {
+    fn default() -> Self {
+        Self {
+            a: Revolute,
+            mass_a: 26.0 / 5.0,
+            inertia_a: 5.0 / 4.0,
+            com_a: 6.0 / 25.0,
+            b: Revolute,
+            mass_b: 2.0 / 1.0,
+            inertia_b: 1.0 / 20.0,
+            com_b: 69.0 / 100.0,
+            c: Revolute,
+            mass_c: 3.0 / 2.0,
+            inertia_c: 11.0 / 25.0,
+            com_c: 3.0 / 5.0,
+        }
+    }
+}
+
+#[derive(PlanarArm, Default, Debug)]
+#[arm(gravity = 9.80665)]
+struct Literal4 {
+    #[arm(length = 9/5, mass = 13/4, inertia = 1/40, com = 9/5)]
+    a: Revolute,
+    #[arm(length = 9/5, mass = 9/2, inertia = 11/40, com = -27/50)]
+    b: Revolute,
+    #[arm(length = 23/8, mass = 3/4, inertia = 3/10, com = 69/20)]
+    c: Revolute,
+    #[arm(length = 14/5, mass = 16/5, inertia = 23/25, com = -14/25)]
+    d: Revolute,
+}
+
+#[derive(PlanarArm, Debug)]
+#[arm(gravity = 9.80665)]
+struct Params4 {
+    #[arm(length = 9/5, mass = self.mass_a, inertia = self.inertia_a, com = self.com_a)]
+    a: Revolute,
+    #[arm(length = 9/5, mass = self.mass_b, inertia = self.inertia_b, com = self.com_b)]
+    b: Revolute,
+    #[arm(length = 23/8, mass = self.mass_c, inertia = self.inertia_c, com = self.com_c)]
+    c: Revolute,
+    #[arm(length = 14/5, mass = self.mass_d, inertia = self.inertia_d, com = self.com_d)]
+    d: Revolute,
+    mass_a: f64,
+    inertia_a: f64,
+    com_a: f64,
+    mass_b: f64,
+    inertia_b: f64,
+    com_b: f64,
+    mass_c: f64,
+    inertia_c: f64,
+    com_c: f64,
+    mass_d: f64,
+    inertia_d: f64,
+    com_d: f64,
+}
+
+impl Default for Params4 {
+    fn default() -> Self {
+        Self {
+            a: Revolute,
+            mass_a: 13.0 / 4.0,
+            inertia_a: 1.0 / 40.0,
+            com_a: 9.0 / 5.0,
+            b: Revolute,
+            mass_b: 9.0 / 2.0,
+            inertia_b: 11.0 / 40.0,
+            com_b: -27.0 / 50.0,
+            c: Revolute,
+            mass_c: 3.0 / 4.0,
+            inertia_c: 3.0 / 10.0,
+            com_c: 69.0 / 20.0,
+            d: Revolute,
+            mass_d: 16.0 / 5.0,
+            inertia_d: 23.0 / 25.0,
+            com_d: -14.0 / 25.0,
+        }
+    }
+}
+
+#[derive(PlanarArm, Default, Debug)]
+#[arm(gravity = 9.80665)]
+struct Literal6 {
+    #[arm(length = 3/1, mass = 12/5, inertia = 1/50, com = 12/5)]
+    a: Revolute,
+    #[arm(length = 4/1, mass = 15/2, inertia = 23/25, com = 6/5)]
+    b: Revolute,
+    #[arm(length = 7/5, mass = 31/8, inertia = 17/40, com = 7/10)]
+    c: Revolute,
+    #[arm(length = 9/2, mass = 39/8, inertia = 7/10, com = -9/10)]
+    d: Revolute,
+    #[arm(length = 17/4, mass = 15/8, inertia = 17/40, com = 17/40)]
+    e: Revolute,
+    #[arm(length = 7/4, mass = 9/1, inertia = 1/4, com = 21/20)]
+    f: Revolute,
+}
+
+#[derive(PlanarArm, Debug)]
+#[arm(gravity = 9.80665)]
+struct Params6 {
+    #[arm(length = 3/1, mass = self.mass_a, inertia = self.inertia_a, com = self.com_a)]
+    a: Revolute,
+    #[arm(length = 4/1, mass = self.mass_b, inertia = self.inertia_b, com = self.com_b)]
+    b: Revolute,
+    #[arm(length = 7/5, mass = self.mass_c, inertia = self.inertia_c, com = self.com_c)]
+    c: Revolute,
+    #[arm(length = 9/2, mass = self.mass_d, inertia = self.inertia_d, com = self.com_d)]
+    d: Revolute,
+    #[arm(length = 17/4, mass = self.mass_e, inertia = self.inertia_e, com = self.com_e)]
+    e: Revolute,
+    #[arm(length = 7/4, mass = self.mass_f, inertia = self.inertia_f, com = self.com_f)]
+    f: Revolute,
+    mass_a: f64,
+    inertia_a: f64,
+    com_a: f64,
+    mass_b: f64,
+    inertia_b: f64,
+    com_b: f64,
+    mass_c: f64,
+    inertia_c: f64,
+    com_c: f64,
+    mass_d: f64,
+    inertia_d: f64,
+    com_d: f64,
+    mass_e: f64,
+    inertia_e: f64,
+    com_e: f64,
+    mass_f: f64,
+    inertia_f: f64,
+    com_f: f64,
+}
+
+impl Default for Params6 {
+    fn default() -> Self {
+        Self {
+            a: Revolute,
+            mass_a: 12.0 / 5.0,
+            inertia_a: 1.0 / 50.0,
+            com_a: 12.0 / 5.0,
+            b: Revolute,
+            mass_b: 15.0 / 2.0,
+            inertia_b: 23.0 / 25.0,
+            com_b: 6.0 / 5.0,
+            c: Revolute,
+            mass_c: 31.0 / 8.0,
+            inertia_c: 17.0 / 40.0,
+            com_c: 7.0 / 10.0,
+            d: Revolute,
+            mass_d: 39.0 / 8.0,
+            inertia_d: 7.0 / 10.0,
+            com_d: -9.0 / 10.0,
+            e: Revolute,
+            mass_e: 15.0 / 8.0,
+            inertia_e: 17.0 / 40.0,
+            com_e: 17.0 / 40.0,
+            f: Revolute,
+            mass_f: 9.0 / 1.0,
+            inertia_f: 1.0 / 4.0,
+            com_f: 21.0 / 20.0,
+        }
+    }
+}
+
+/// States that exercise every term.
+fn state<const N: usize>(k: usize) -> (SVector<f64, N>, SVector<f64, N>, SVector<f64, N>) {
+    #[allow(clippy::cast_precision_loss)]
+    let at = |j: usize, s: f64| ((j + 1) as f64).mul_add(0.37, s + k as f64 * 0.71).sin() * 2.0;
+    (
+        SVector::from_fn(|j, _| at(j, 0.1)),
+        SVector::from_fn(|j, _| at(j, 1.3)),
+        SVector::from_fn(|j, _| at(j, 2.9)),
+    )
+}
+
+fn check<L: PlanarArm<N>, P: PlanarArm<N>, const N: usize>(literal: &L, params: &P) {
+    assert_eq!(literal.model(), params.model());
+    for k in 0..16 {
+        let (q, qd, qdd) = state::<N>(k);
+        let (a, b) = (
+            literal.inverse_dynamics(&q, &qd, &qdd),
+            params.inverse_dynamics(&q, &qd, &qdd),
+        );
+        assert!((a - b).amax() <= 1e-12 * (1.0 + a.amax()), "{a} vs {b}");
+        let (a, b) = (
+            literal.forward_dynamics(&q, &qd, &qdd),
+            params.forward_dynamics(&q, &qd, &qdd),
+        );
+        assert!((a - b).amax() <= 1e-10 * (1.0 + a.amax()), "{a} vs {b}");
+    }
+}
+
+fn bench_pair<L: PlanarArm<N>, P: PlanarArm<N>, const N: usize>(
+    c: &mut Criterion,
+    literal: &L,
+    params: &P,
+) {
+    check(literal, params);
+    let (q, qd, qdd) = state::<N>(0);
+    let mut g = c.benchmark_group(format!("parameters/{N}"));
+    g.bench_function("id/literal", |b| {
+        b.iter(|| literal.inverse_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)));
+    });
+    g.bench_function("id/params", |b| {
+        b.iter(|| params.inverse_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)));
+    });
+    g.bench_function("m/literal", |b| {
+        b.iter(|| literal.mass_matrix(black_box(&q)))
+    });
+    g.bench_function("m/params", |b| b.iter(|| params.mass_matrix(black_box(&q))));
+    g.bench_function("fd/literal", |b| {
+        b.iter(|| literal.forward_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)));
+    });
+    g.bench_function("fd/params", |b| {
+        b.iter(|| params.forward_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)));
+    });
+    g.finish();
+}
+
+fn parameters(c: &mut Criterion) {
+    bench_pair(c, &Literal2::default(), &black_box(Params2::default()));
+    bench_pair(c, &Literal3::default(), &black_box(Params3::default()));
+    bench_pair(c, &Literal4::default(), &black_box(Params4::default()));
+    bench_pair(c, &Literal6::default(), &black_box(Params6::default()));
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default()
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(2));
+    targets = parameters
+}
+criterion_main!(benches);

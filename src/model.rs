@@ -1,0 +1,193 @@
+use nalgebra::Vector2;
+
+use crate::{ArmError, Link};
+
+/// A rigid body held at the tip of the last link: a tool, a gripper and what it carries.
+///
+/// It turns with the last link. Its centre of mass is at `tip + com.x u + com.y perp(u)`, with
+/// `u` the direction of the last link (the same frame as [`Link::com`], moved to the tip).
+///
+/// # Example
+///
+/// ```
+/// use planar_arm::Payload;
+///
+/// // 0.5 kg held 10 cm beyond the tip, a disc of radius 4 cm.
+/// let load = Payload::point(0.5).with_com(0.1, 0.0).with_inertia(0.5 * 0.5 * 0.04 * 0.04);
+/// assert_eq!(load.com.x, 0.1);
+/// assert_eq!(Payload::NONE.mass, 0.0);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Payload {
+    /// Mass, kilograms.
+    pub mass: f64,
+    /// Moment of inertia about the payload's own centre of mass, kg m^2.
+    pub inertia: f64,
+    /// The payload's centre of mass relative to the tip, in the last link's frame (`x` along
+    /// the last link, `y` perpendicular, counter-clockwise), metres.
+    pub com: Vector2<f64>,
+}
+
+impl Payload {
+    /// No payload: zero mass and inertia.
+    pub const NONE: Payload = Payload {
+        mass: 0.0,
+        inertia: 0.0,
+        com: Vector2::new(0.0, 0.0),
+    };
+
+    /// A point mass (kg) exactly at the tip.
+    #[must_use]
+    pub const fn point(mass: f64) -> Self {
+        Self { mass, ..Self::NONE }
+    }
+
+    /// The same payload with its centre of mass at `(x, y)` from the tip in the last link's
+    /// frame, metres.
+    #[must_use]
+    pub const fn with_com(self, x: f64, y: f64) -> Self {
+        Self {
+            com: Vector2::new(x, y),
+            ..self
+        }
+    }
+
+    /// The same payload with the given moment of inertia about its centre of mass, kg m^2.
+    #[must_use]
+    pub const fn with_inertia(self, inertia: f64) -> Self {
+        Self { inertia, ..self }
+    }
+}
+
+/// Everything the dynamics of a planar arm depend on: its links base first, gravity and a
+/// payload at the tip.
+///
+/// The functions of [`reference`](crate::reference) take a model. A derived arm's model, with
+/// its run-time parameters' current values, is [`PlanarArm::model`](crate::PlanarArm::model).
+///
+/// # Example
+///
+/// ```
+/// use planar_arm::{reference, Link, Model, Payload};
+/// use planar_arm::nalgebra::Vector2;
+///
+/// let arm = Model::new([Link::rod(1.0, 1.0), Link::rod(1.0, 1.0)], 9.81)
+///     .with_payload(Payload::point(0.5));
+/// let q = Vector2::new(0.3, 1.2);
+/// let m = reference::mass_matrix(&arm, &q);
+/// // The payload adds 0.5 |tip - joint 2|^2 = 0.5 kg m^2 to M22.
+/// assert!((m[(1, 1)] - (1.0 / 3.0 + 0.5)).abs() < 1e-15);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Model<const N: usize> {
+    /// The links, base first.
+    pub links: [Link; N],
+    /// Magnitude of gravity, which acts along -y, m/s^2.
+    pub gravity: f64,
+    /// The body held at the tip ([`Payload::NONE`] for none).
+    pub payload: Payload,
+}
+
+impl<const N: usize> Model<N> {
+    /// An arm of these links under gravity of magnitude `gravity` (m/s^2) along -y, with no
+    /// payload.
+    #[must_use]
+    pub const fn new(links: [Link; N], gravity: f64) -> Self {
+        Self {
+            links,
+            gravity,
+            payload: Payload::NONE,
+        }
+    }
+
+    /// The same arm holding `payload` at its tip (in place of any payload it held).
+    #[must_use]
+    pub const fn with_payload(self, payload: Payload) -> Self {
+        Self { payload, ..self }
+    }
+
+    /// The links with the payload merged into the last one: what a rigid-body solver sees.
+    ///
+    /// The last link's mass becomes the sum of the two masses, its centre of mass their
+    /// mass-weighted mean in the link's frame (the payload's centre is at
+    /// `(length + com.x, com.y)` there), and its inertia about the new centre the sum of both
+    /// inertias moved there by the parallel-axis theorem. Joint parameters are unchanged. If
+    /// both masses are zero the centre of mass stays the link's and the inertias add. With no
+    /// links there is nothing to merge into and the payload is dropped.
+    #[must_use]
+    pub fn rigid_links(&self) -> [Link; N] {
+        let mut links = self.links;
+        if let Some(last) = links.last_mut() {
+            let p = &self.payload;
+            let p_com = Vector2::new(last.length + p.com.x, p.com.y);
+            let mass = last.mass + p.mass;
+            let com = if mass == 0.0 {
+                last.com
+            } else {
+                (last.com * last.mass + p_com * p.mass) / mass
+            };
+            last.inertia += p.inertia
+                + last.mass * (last.com - com).norm_squared()
+                + p.mass * (p_com - com).norm_squared();
+            last.mass = mass;
+            last.com = com;
+        }
+        links
+    }
+
+    /// Checks that the model is physical: every value finite, lengths and masses positive,
+    /// inertias, armatures, damping, frictionloss, the payload's mass and inertia and gravity
+    /// not negative. What the derive checks at compile time for literal values, for values
+    /// that are read at run time (identified, loaded from a file).
+    ///
+    /// # Errors
+    /// [`ArmError::OutOfRange`] naming the first value that is not.
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use planar_arm::{ArmError, Link, Model};
+    ///
+    /// let ok = Model::new([Link::rod(0.5, 2.0)], 9.81);
+    /// assert!(ok.check().is_ok());
+    /// let bad = Model::new([Link::rod(0.5, -2.0)], 9.81);
+    /// assert!(matches!(bad.check(), Err(ArmError::OutOfRange { what: "mass", link: Some(0), .. })));
+    /// ```
+    pub fn check(&self) -> Result<(), ArmError> {
+        let fail = |what, link, value| Err(ArmError::OutOfRange { what, link, value });
+        for (i, l) in self.links.iter().enumerate() {
+            let values = [
+                ("length", l.length, true),
+                ("mass", l.mass, true),
+                ("inertia", l.inertia, false),
+                ("com.x", l.com.x, false),
+                ("com.y", l.com.y, false),
+                ("armature", l.armature, false),
+                ("damping", l.damping, false),
+                ("frictionloss", l.frictionloss, false),
+            ];
+            for (what, value, positive) in values {
+                let signed = matches!(what, "com.x" | "com.y");
+                if !value.is_finite()
+                    || (positive && value <= 0.0)
+                    || (!signed && !positive && value < 0.0)
+                {
+                    return fail(what, Some(i), value);
+                }
+            }
+        }
+        let p = &self.payload;
+        for (what, value, signed) in [
+            ("payload mass", p.mass, false),
+            ("payload inertia", p.inertia, false),
+            ("payload com.x", p.com.x, true),
+            ("payload com.y", p.com.y, true),
+            ("gravity", self.gravity, false),
+        ] {
+            if !value.is_finite() || (!signed && value < 0.0) {
+                return fail(what, None, value);
+            }
+        }
+        Ok(())
+    }
+}
