@@ -458,3 +458,66 @@ fn parameters_out_of_range_do_not_panic() {
     let _ = arm.forward_dynamics(&q, &q, &q);
     let _ = arm.inverse_kinematics(&Point2::new(0.3, 0.1));
 }
+
+/// Two links whose lengths are run-time parameters: the closed-form inverse kinematics and
+/// inverse statics use the current lengths (the equal-link formula when both name one field).
+#[derive(PlanarArm, Debug)]
+#[arm(gravity = 0)]
+struct Telescope {
+    #[arm(length = self.l1, mass = 1)]
+    upper: Revolute,
+    #[arm(length = self.l2, mass = 1)]
+    fore: Revolute,
+    l1: f64,
+    l2: f64,
+}
+
+#[derive(PlanarArm, Debug)]
+#[arm(gravity = 0)]
+struct EqualParam {
+    #[arm(length = self.l, mass = 1)]
+    upper: Revolute,
+    #[arm(length = self.l, mass = 1)]
+    fore: Revolute,
+    l: f64,
+}
+
+#[test]
+fn closed_forms_follow_run_time_lengths() {
+    let mut rng = Rng(5);
+    for _ in 0..200 {
+        let arm = Telescope {
+            upper: Revolute,
+            fore: Revolute,
+            l1: rng.range(0.2, 2.0),
+            l2: rng.range(0.2, 2.0),
+        };
+        let q = rng.vector::<2>(3.0);
+        let tip = Point2::from(arm.tip_pose(&q).translation.vector);
+        let [a, b] = arm.inverse_kinematics(&tip).expect("reachable");
+        for sol in [a, b] {
+            let reached = Point2::from(arm.tip_pose(&sol).translation.vector);
+            assert!((reached - tip).norm() < 1e-9, "{reached} vs {tip}");
+        }
+        let force = Vector2::new(rng.range(-5.0, 5.0), rng.range(-5.0, 5.0));
+        let tau = arm.joint_torques(&q, &force, 0.0);
+        if let Ok(back) = arm.tip_force(&q, &tau) {
+            assert!((back - force).norm() < 1e-6 * (1.0 + force.norm()));
+        }
+        let outside = Point2::new(arm.l1 + arm.l2 + 0.1, 0.0);
+        assert!(matches!(
+            arm.inverse_kinematics(&outside),
+            Err(ArmError::Unreachable { .. })
+        ));
+        let equal = EqualParam {
+            upper: Revolute,
+            fore: Revolute,
+            l: arm.l1,
+        };
+        let tip = Point2::from(equal.tip_pose(&q).translation.vector);
+        for sol in equal.inverse_kinematics(&tip).expect("reachable") {
+            let reached = Point2::from(equal.tip_pose(&sol).translation.vector);
+            assert!((reached - tip).norm() < 1e-9);
+        }
+    }
+}

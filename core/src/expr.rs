@@ -241,10 +241,15 @@ impl<C: Coefficient> Expr<C> {
     #[must_use]
     pub fn add(&self, other: &Self) -> Self {
         let mut out = self.clone();
-        for ((m, t), c) in &other.terms {
-            out.add_term(c.clone(), t.clone(), m.clone());
-        }
+        out.add_assign(other);
         out
+    }
+
+    /// `self += other`, in place: an accumulating sum need not copy itself at every step.
+    pub fn add_assign(&mut self, other: &Self) {
+        for ((m, t), c) in &other.terms {
+            self.add_term(c.clone(), t.clone(), m.clone());
+        }
     }
 
     /// `self - other`.
@@ -325,9 +330,8 @@ impl<C: Coefficient> Expr<C> {
             .all(|(m, _)| m.powers().all(|(v, _)| matches!(v, Var::Qd(_)))));
         let mut out = Self::zero();
         for j in 0..n {
-            out = out
-                .add(&self.diff_q(j).mul(&Self::var(Var::Qd(j))))
-                .add(&self.diff_var(Var::Qd(j)).mul(&Self::var(Var::Qdd(j))));
+            out.add_assign(&self.diff_q(j).mul(&Self::var(Var::Qd(j))));
+            out.add_assign(&self.diff_var(Var::Qd(j)).mul(&Self::var(Var::Qdd(j))));
         }
         out
     }

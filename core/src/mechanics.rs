@@ -91,52 +91,6 @@ impl<C: Coefficient> ArmSpec<C> {
             .iter()
             .any(|l| !l.damping.is_zero() || !l.frictionloss.is_zero())
     }
-
-    /// The rigid bodies the links carry, one per link: each link with the payload merged into
-    /// the last one, as `(mass, first moment about the link's joint in its frame, moment of
-    /// inertia about the joint)`, what the recursions need. The Lagrangian does not use this:
-    /// it sums the energies of the links and the payload separately.
-    #[must_use]
-    pub fn bodies(&self) -> Vec<Body<C>> {
-        let n = self.links.len();
-        self.links
-            .iter()
-            .enumerate()
-            .map(|(i, l)| {
-                let (cx, cy) = l.com.clone();
-                let mut body = Body {
-                    mass: l.mass.clone(),
-                    first: (l.mass.clone() * cx.clone(), l.mass.clone() * cy.clone()),
-                    inertia: l.inertia.clone()
-                        + l.mass.clone() * (cx.clone() * cx + cy.clone() * cy),
-                };
-                if let (Some(p), true) = (&self.payload, i + 1 == n) {
-                    let px = l.length.clone() + p.com.0.clone();
-                    let py = p.com.1.clone();
-                    body.mass = body.mass + p.mass.clone();
-                    body.first = (
-                        body.first.0 + p.mass.clone() * px.clone(),
-                        body.first.1 + p.mass.clone() * py.clone(),
-                    );
-                    body.inertia = body.inertia
-                        + p.inertia.clone()
-                        + p.mass.clone() * (px.clone() * px + py.clone() * py);
-                }
-                body
-            })
-            .collect()
-    }
-}
-
-/// A rigid body carried by one link, about that link's joint in the link's frame.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Body<C = Rational> {
-    /// Mass.
-    pub mass: C,
-    /// First moment of mass (mass times centre of mass) about the joint, link frame.
-    pub first: (C, C),
-    /// Moment of inertia about the joint.
-    pub inertia: C,
 }
 
 /// The equations of motion `tau = M(q) qdd + c(q, qd) + g(q)`, exact.
@@ -270,15 +224,14 @@ impl<C: Coefficient> Dynamics<C> {
             // Velocity of the centre of mass by the chain rule on its position.
             let (vx, vy) = (x.dt(n), y.dt(n));
             let v2 = vx.mul(&vx).add(&vy.mul(&vy));
-            kinetic = kinetic
-                .add(&v2.scale_by(mass).scale(&half))
-                .add(&omegas[i].mul(&omegas[i]).scale_by(inertia).scale(&half));
-            potential = potential.add(&y.scale_by(&(arm.gravity.clone() * mass.clone())));
+            kinetic.add_assign(&v2.scale_by(mass).scale(&half));
+            kinetic.add_assign(&omegas[i].mul(&omegas[i]).scale_by(inertia).scale(&half));
+            potential.add_assign(&y.scale_by(&(arm.gravity.clone() * mass.clone())));
         }
         // The rotors' kinetic energy: armature times the joint's own rate squared.
         for (i, link) in arm.links.iter().enumerate() {
             let qd = Expr::var(rate(i));
-            kinetic = kinetic.add(&qd.mul(&qd).scale_by(&link.armature).scale(&half));
+            kinetic.add_assign(&qd.mul(&qd).scale_by(&link.armature).scale(&half));
         }
         let lagrangian = kinetic.sub(&potential);
         let torques: Vec<Expr<C>> = (0..n)
@@ -350,7 +303,7 @@ fn christoffel<C: Coefficient>(m: &[Vec<Expr<C>>]) -> Vec<Vec<Expr<C>>> {
                             .add(&m[i][k].diff_q(j))
                             .sub(&m[j][k].diff_q(i))
                             .scale(&half);
-                        c = c.add(&gamma.mul(&Expr::var(rate(k))));
+                        c.add_assign(&gamma.mul(&Expr::var(rate(k))));
                     }
                     c
                 })

@@ -382,14 +382,26 @@ impl<C: Emit> Derived<C> {
         {
             return None;
         }
-        let det0 = a * d - e.clone() * e - f.clone() * f.clone();
-        // With run-time parameters the sign is not known here; det0 is then det M at
-        // q2 = 0, positive for any physical arm.
-        if det0.rational().is_some_and(|r| !r.is_positive()) {
-            return None;
-        }
-        let det0 = p.coefficient(&det0);
-        let f2 = p.coefficient(&(f.clone() * f));
+        let exact = a.clone() * d.clone() - e.clone() * e.clone() - f.clone() * f.clone();
+        let (det0, f2) = match exact.rational() {
+            Some(r) if !r.is_positive() => return None,
+            Some(r) => (p.constant(r), p.coefficient(&(f.clone() * f))),
+            // With run-time parameters the sign is not known here (det0 is det M at q2 = 0,
+            // positive for any physical arm), and det0 is formed from the nodes of a, d, e
+            // and f, which M's entries compute anyway, rather than expanded into a
+            // polynomial in the parameters.
+            None => {
+                let (a, d, e, f) = (
+                    p.coefficient(&a),
+                    p.coefficient(&d),
+                    p.coefficient(&e),
+                    p.coefficient(&f),
+                );
+                let (ad, ee, ff) = (p.mul(a, d), p.mul(e, e), p.mul(f, f));
+                let ad_ee = p.sub(ad, ee);
+                (p.sub(ad_ee, ff), ff)
+            }
+        };
         let (_, s2) = p.trig_pair(&q2);
         let s2s2 = p.mul(s2, s2);
         let varying = p.mul(f2, s2s2);
@@ -498,7 +510,7 @@ impl<C: Emit> Derived<C> {
             }
             _ => {
                 let floors: Vec<Id> = (0..n)
-                    .map(|i| pivot_floor(&mut p, &self.dynamics.mass_matrix[i][i]))
+                    .map(|i| pivot_floor(&mut p, &self.dynamics.mass_matrix[i][i], m[i][i]))
                     .collect();
                 ldlt_solve(&mut p, &m, &rhs, &floors)
             }

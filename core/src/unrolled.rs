@@ -3,7 +3,7 @@
 //! the arm's exact constants folded in. They are candidates next to the expanded formulas
 //! (see [`methods`](crate::methods)).
 
-use num_traits::Zero;
+use num_traits::{Signed, Zero};
 
 use crate::expr::Expr;
 use crate::mechanics::ArmSpec;
@@ -69,15 +69,66 @@ fn rotate_back(p: &mut Program, cs: V2, v: V2) -> V2 {
     (x, p.sub(a, b))
 }
 
+/// A link's rigid body as program nodes: mass, first moment `(hx, hy)` about the joint and
+/// moment of inertia `J` about the joint, in the link's frame, the payload merged into the last.
+struct BodyNodes {
+    mass: Id,
+    first: V2,
+    inertia: Id,
+}
+
+/// The bodies' nodes, formed by node arithmetic from each value's own node rather than as
+/// expanded polynomials: for a literal arm both fold to the same exact constants, but with
+/// run-time parameters the products (`m cx`, then `J = I + hx cx + hy cy`) are computed once
+/// and shared.
+fn body_nodes<C: Emit>(p: &mut Program, arm: &ArmSpec<C>) -> Vec<BodyNodes> {
+    let n = arm.links.len();
+    arm.links
+        .iter()
+        .enumerate()
+        .map(|(i, l)| {
+            let m = p.coefficient(&l.mass);
+            let (cx, cy) = (p.coefficient(&l.com.0), p.coefficient(&l.com.1));
+            let (hx, hy) = (p.mul(m, cx), p.mul(m, cy));
+            let inertia = p.coefficient(&l.inertia);
+            let (a, b) = (p.mul(hx, cx), p.mul(hy, cy));
+            let ab = p.add(a, b);
+            let mut body = BodyNodes {
+                mass: m,
+                first: (hx, hy),
+                inertia: p.add(inertia, ab),
+            };
+            if let (Some(load), true) = (&arm.payload, i + 1 == n) {
+                let mass = p.coefficient(&load.mass);
+                let length = p.coefficient(&l.length);
+                let ox = p.coefficient(&load.com.0);
+                let px = p.add(length, ox);
+                let py = p.coefficient(&load.com.1);
+                let (hpx, hpy) = (p.mul(mass, px), p.mul(mass, py));
+                let own = p.coefficient(&load.inertia);
+                let (a, b) = (p.mul(hpx, px), p.mul(hpy, py));
+                let ab = p.add(a, b);
+                let extra = p.add(own, ab);
+                body = BodyNodes {
+                    mass: p.add(body.mass, mass),
+                    first: (p.add(body.first.0, hpx), p.add(body.first.1, hpy)),
+                    inertia: p.add(body.inertia, extra),
+                };
+            }
+            body
+        })
+        .collect()
+}
+
 /// Joint torques by the planar recursive Newton-Euler algorithm, unrolled for the arm, in link
 /// frames (x along the link): each link's angular velocity `w` and acceleration `al`, and the
 /// acceleration `a` of its joint, outwards (gravity as an upward acceleration of the base);
 /// the force each link's tail exerts on it and the moment about its joint, inwards. Each link
-/// carries one rigid [`Body`](crate::mechanics::Body) (the payload merged into the last), and
+/// carries one rigid body (the payload merged into the last), and
 /// each joint's rotor adds `armature qdd_i`.
 pub(crate) fn newton_euler<C: Emit>(p: &mut Program, arm: &ArmSpec<C>, terms: Terms) -> Vec<Id> {
     let n = arm.links.len();
-    let bodies = arm.bodies();
+    let bodies = body_nodes(p, arm);
     let zero = p.constant(Rational::zero());
     let g = if terms.gravity {
         p.coefficient(&arm.gravity)
@@ -108,8 +159,7 @@ pub(crate) fn newton_euler<C: Emit>(p: &mut Program, arm: &ArmSpec<C>, terms: Te
         }
         let w2 = p.mul(w, w);
         // The force on the body, m a + (-w^2 hx - al hy, -w^2 hy + al hx) with h = m com.
-        let m = p.coefficient(&body.mass);
-        let (hx, hy) = (p.coefficient(&body.first.0), p.coefficient(&body.first.1));
+        let (m, (hx, hy)) = (body.mass, body.first);
         let fx = {
             let (u, v) = (p.mul(m, a.0), p.mul(hx, w2));
             let x = p.sub(u, v);
@@ -142,8 +192,7 @@ pub(crate) fn newton_euler<C: Emit>(p: &mut Program, arm: &ArmSpec<C>, terms: Te
         let (link, body) = (&arm.links[i], &bodies[i]);
         // Moment about the joint of the body's own inertia forces: J al + hx ay - hy ax, with
         // J about the joint (the centripetal force passes through the centre of mass).
-        let inertia = p.coefficient(&body.inertia);
-        let (hx, hy) = (p.coefficient(&body.first.0), p.coefficient(&body.first.1));
+        let (inertia, (hx, hy)) = (body.inertia, body.first);
         let (u, v) = (p.mul(inertia, alpha[i]), p.mul(hx, accel[i].1));
         let mut here = p.add(u, v);
         let t = p.mul(hy, accel[i].0);
@@ -179,24 +228,28 @@ pub(crate) fn newton_euler<C: Emit>(p: &mut Program, arm: &ArmSpec<C>, terms: Te
 /// `M_ij = M_(i+1)j + l_i (h in link i's frame).x`.
 pub(crate) fn composite_mass_matrix<C: Emit>(p: &mut Program, arm: &ArmSpec<C>) -> Vec<Vec<Id>> {
     let n = arm.links.len();
-    let bodies = arm.bodies();
     let zero = p.constant(Rational::zero());
     let trig: Vec<V2> = (0..n).map(|j| joint_trig(p, j)).collect();
+    let bodies = body_nodes(p, arm);
     let mut m = vec![vec![zero; n]; n];
-    let mut tail_mass = C::from_rational(Rational::zero());
+    let mut tail_mass = zero;
     let mut tail: Option<(V2, Id)> = None;
     for j in (0..n).rev() {
         let (link, body) = (&arm.links[j], &bodies[j]);
-        let l = &link.length;
-        let hx = p.coefficient(&(body.first.0.clone() + tail_mass.clone() * l.clone()));
-        let hy = p.coefficient(&body.first.1);
-        let rot =
-            p.coefficient(&(body.inertia.clone() + tail_mass.clone() * l.clone() * l.clone()));
+        let l = p.coefficient(&link.length);
+        // The tail beyond this link acts at the link's end: first moment `tail_mass l` and
+        // moment of inertia `tail_mass l^2` about this joint.
+        let tl = p.mul(tail_mass, l);
+        let hx = p.add(body.first.0, tl);
+        let hy = body.first.1;
+        let tll = p.mul(tl, l);
+        let rot = p.add(body.inertia, tll);
         let (h, rot) = match tail {
             None => ((hx, hy), rot),
             Some((child, child_rot)) => {
                 let r = rotate(p, trig[j + 1], child);
-                let two_l = p.coefficient(&l.scale(&Rational::from_integer(2.into())));
+                let two = p.constant(Rational::from_integer(2.into()));
+                let two_l = p.mul(two, l);
                 let shift = p.mul(two_l, r.0);
                 let rot = p.add(rot, child_rot);
                 ((p.add(hx, r.0), p.add(hy, r.1)), p.add(rot, shift))
@@ -204,7 +257,7 @@ pub(crate) fn composite_mass_matrix<C: Emit>(p: &mut Program, arm: &ArmSpec<C>) 
         };
         p.set_name(h.0, format!("hx{}", j + 1));
         p.set_name(h.1, format!("hy{}", j + 1));
-        tail_mass = tail_mass + body.mass.clone();
+        tail_mass = p.add(tail_mass, body.mass);
         let armature = p.coefficient(&link.armature);
         m[j][j] = p.add(rot, armature);
         let (mut v, mut mij) = (h, rot);
@@ -228,22 +281,23 @@ pub(crate) fn composite_mass_matrix<C: Emit>(p: &mut Program, arm: &ArmSpec<C>) 
 /// the computed pivot. `M` is positive definite, so its exact pivots are positive; a computed
 /// one at or below the floor only means `M` is too ill-conditioned for `f64` there, and the
 /// floor keeps the accelerations finite instead of infinite or NaN.
-pub(crate) fn pivot_floor<C: Emit>(p: &mut Program, m_ii: &Expr<C>) -> Id {
-    let magnitudes: Vec<Id> = m_ii
-        .terms()
-        .map(|(_, _, c)| {
-            let c = p.coefficient(c);
-            p.abs(c)
-        })
-        .collect();
-    let bound = p
-        .balanced_sum(&magnitudes)
-        .unwrap_or_else(|| p.constant(Rational::zero()));
+pub(crate) fn pivot_floor<C: Emit>(p: &mut Program, m_ii: &Expr<C>, m_ii_node: Id) -> Id {
     let ulp = p.constant(Rational::new(
         1.into(),
         num_bigint::BigInt::from(1u64 << 52),
     ));
-    p.mul(ulp, bound)
+    let constants: Option<Vec<Rational>> = m_ii.terms().map(|(_, _, c)| c.rational()).collect();
+    match constants {
+        Some(cs) => {
+            let bound = cs.iter().fold(Rational::zero(), |acc, c| acc + c.abs());
+            let bound = p.constant(bound);
+            p.mul(ulp, bound)
+        }
+        // With run-time parameters the bound would cost a polynomial per term at every call;
+        // `M_ii(q)` itself (positive, at least the exact pivot, already computed) sets the
+        // same level of rounding noise for one multiplication.
+        None => p.mul(ulp, m_ii_node),
+    }
 }
 
 pub(crate) fn ldlt_solve(p: &mut Program, m: &[Vec<Id>], b: &[Id], floors: &[Id]) -> Vec<Id> {
