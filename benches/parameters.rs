@@ -6,15 +6,17 @@
 //!
 //! ```text
 //! CARGO_TARGET_DIR=/tmp/target_bench cargo bench --bench parameters
-//! python3 bench/parameters_table.py /tmp/target_bench/criterion
 //! ```
+//!
+//! which prints the table. Each ratio is the median over 101 rounds of the two arms timed back
+//! to back (20,000 calls each): on a shared machine the load drifts over seconds, and
+//! criterion's one-benchmark-after-another medians swung by 30 % between runs.
 //!
 //! Before timing, each parameterised arm is checked to give its literal twin's numbers.
 
 use std::hint::black_box;
-use std::time::Duration;
+use std::time::Instant;
 
-use criterion::{criterion_group, criterion_main, Criterion};
 use planar_arm::nalgebra::SVector;
 use planar_arm::prelude::*;
 
@@ -279,45 +281,78 @@ fn check<L: PlanarArm<N>, P: PlanarArm<N>, const N: usize>(literal: &L, params: 
     }
 }
 
-fn bench_pair<L: PlanarArm<N>, P: PlanarArm<N>, const N: usize>(
-    c: &mut Criterion,
-    literal: &L,
-    params: &P,
-) {
+/// Median over rounds of the time ratio `params / literal`, the two timed back to back in each
+/// round (alternating which goes first), so that the machine's load, which drifts over
+/// seconds on a shared machine, cancels in each ratio.
+fn interleaved(mut literal: impl FnMut(), mut params: impl FnMut()) -> (f64, f64) {
+    const CALLS: u32 = 20_000;
+    const ROUNDS: usize = 101;
+    let mut time = |f: &mut dyn FnMut()| {
+        let start = Instant::now();
+        for _ in 0..CALLS {
+            f();
+        }
+        start.elapsed().as_secs_f64() / f64::from(CALLS)
+    };
+    for _ in 0..5 {
+        time(&mut literal);
+        time(&mut params);
+    }
+    let mut ratios = Vec::with_capacity(ROUNDS);
+    let mut literal_times = Vec::with_capacity(ROUNDS);
+    for round in 0..ROUNDS {
+        let (l, p) = if round % 2 == 0 {
+            let l = time(&mut literal);
+            (l, time(&mut params))
+        } else {
+            let p = time(&mut params);
+            (time(&mut literal), p)
+        };
+        ratios.push(p / l);
+        literal_times.push(l);
+    }
+    ratios.sort_by(f64::total_cmp);
+    literal_times.sort_by(f64::total_cmp);
+    (ratios[ROUNDS / 2], literal_times[ROUNDS / 2] * 1e9)
+}
+
+fn row<L: PlanarArm<N>, P: PlanarArm<N>, const N: usize>(literal: &L, params: &P) {
     check(literal, params);
     let (q, qd, qdd) = state::<N>(0);
-    let mut g = c.benchmark_group(format!("parameters/{N}"));
-    g.bench_function("id/literal", |b| {
-        b.iter(|| literal.inverse_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)));
-    });
-    g.bench_function("id/params", |b| {
-        b.iter(|| params.inverse_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)));
-    });
-    g.bench_function("m/literal", |b| {
-        b.iter(|| literal.mass_matrix(black_box(&q)))
-    });
-    g.bench_function("m/params", |b| b.iter(|| params.mass_matrix(black_box(&q))));
-    g.bench_function("fd/literal", |b| {
-        b.iter(|| literal.forward_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)));
-    });
-    g.bench_function("fd/params", |b| {
-        b.iter(|| params.forward_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)));
-    });
-    g.finish();
+    let (id, id_ns) = interleaved(
+        || {
+            black_box(literal.inverse_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)));
+        },
+        || {
+            black_box(params.inverse_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)));
+        },
+    );
+    let (m, _) = interleaved(
+        || {
+            black_box(literal.mass_matrix(black_box(&q)));
+        },
+        || {
+            black_box(params.mass_matrix(black_box(&q)));
+        },
+    );
+    let (fd, _) = interleaved(
+        || {
+            black_box(literal.forward_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)));
+        },
+        || {
+            black_box(params.forward_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)));
+        },
+    );
+    println!("| {N} | {id:.2} | {m:.2} | {fd:.2} | {id_ns:.1} |");
 }
 
-fn parameters(c: &mut Criterion) {
-    bench_pair(c, &Literal2::default(), &black_box(Params2::default()));
-    bench_pair(c, &Literal3::default(), &black_box(Params3::default()));
-    bench_pair(c, &Literal4::default(), &black_box(Params4::default()));
-    bench_pair(c, &Literal6::default(), &black_box(Params6::default()));
+fn main() {
+    println!(
+        "| N | ID params / literal | M params / literal | FD params / literal | ID literal ns |"
+    );
+    println!("|---|---|---|---|---|");
+    row(&Literal2::default(), &black_box(Params2::default()));
+    row(&Literal3::default(), &black_box(Params3::default()));
+    row(&Literal4::default(), &black_box(Params4::default()));
+    row(&Literal6::default(), &black_box(Params6::default()));
 }
-
-criterion_group! {
-    name = benches;
-    config = Criterion::default()
-        .warm_up_time(Duration::from_millis(500))
-        .measurement_time(Duration::from_secs(2));
-    targets = parameters
-}
-criterion_main!(benches);

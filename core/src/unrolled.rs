@@ -242,7 +242,9 @@ pub(crate) fn composite_mass_matrix<C: Emit>(p: &mut Program, arm: &ArmSpec<C>) 
         let tl = p.mul(tail_mass, l);
         let hx = p.add(body.first.0, tl);
         let hy = body.first.1;
-        let tll = p.mul(tl, l);
+        // `l^2` first: a constant when the length is one.
+        let ll = p.mul(l, l);
+        let tll = p.mul(tail_mass, ll);
         let rot = p.add(body.inertia, tll);
         let (h, rot) = match tail {
             None => ((hx, hy), rot),
