@@ -287,7 +287,7 @@ fn check<L: PlanarArm<N>, P: PlanarArm<N>, const N: usize>(literal: &L, params: 
 fn interleaved(mut literal: impl FnMut(), mut params: impl FnMut()) -> (f64, f64) {
     const CALLS: u32 = 20_000;
     const ROUNDS: usize = 101;
-    let mut time = |f: &mut dyn FnMut()| {
+    let time = |f: &mut dyn FnMut()| {
         let start = Instant::now();
         for _ in 0..CALLS {
             f();

@@ -7,7 +7,7 @@ use planar_arm::reference;
 use planar_arm::symbolic::methods::{Derived, Method};
 use planar_arm::symbolic::ring::{ratio, to_f64, Rational};
 use planar_arm::symbolic::slp::{Emit, Input};
-use planar_arm::symbolic::{ArmSpec, LinkSpec, Param, PayloadSpec, Poly};
+use planar_arm::symbolic::{ArmSpec, LinkSpec, PayloadSpec, Poly};
 use planar_arm::{Link, Model, Payload};
 use proptest::prelude::*;
 
@@ -86,38 +86,13 @@ fn numeric<const N: usize>(spec: &ArmSpec) -> Model<N> {
 /// The same arm with every value a run-time parameter `v0, v1, ...`, and their values: the
 /// programs then read parameters instead of folding constants.
 fn parameterised(arm: &ArmSpec) -> (ArmSpec<Poly>, Vec<f64>) {
-    let mut values = Vec::new();
-    let mut param = |r: &Rational| {
-        let name = format!("v{}", values.len());
-        values.push(to_f64(r).expect("finite"));
-        Poly::param(Param::new(&name))
-    };
-    let links = arm
-        .links
-        .iter()
-        .map(|l| LinkSpec {
-            length: param(&l.length),
-            mass: param(&l.mass),
-            inertia: param(&l.inertia),
-            com: (param(&l.com.0), param(&l.com.1)),
-            armature: param(&l.armature),
-            damping: param(&l.damping),
-            frictionloss: param(&l.frictionloss),
-        })
-        .collect();
-    let gravity = param(&arm.gravity);
-    let payload = arm.payload.as_ref().map(|p| PayloadSpec {
-        mass: param(&p.mass),
-        inertia: param(&p.inertia),
-        com: (param(&p.com.0), param(&p.com.1)),
-    });
+    let (spec, values) = arm.parameterised();
     (
-        ArmSpec {
-            links,
-            gravity,
-            payload,
-        },
-        values,
+        spec,
+        values
+            .iter()
+            .map(|(_, r)| to_f64(r).expect("finite"))
+            .collect(),
     )
 }
 

@@ -6,6 +6,7 @@
 use std::fmt;
 
 use crate::expr::{Expr, Monomial, Var};
+use crate::poly::{Param, Poly};
 use crate::ring::{int, ratio, Coefficient, Rational};
 use crate::trig::Angle;
 
@@ -80,6 +81,50 @@ impl ArmSpec<Rational> {
             gravity: int(0),
             payload: None,
         }
+    }
+}
+
+impl ArmSpec<Rational> {
+    /// The same arm with every value a run-time parameter, named `v0, v1, ...` in the order
+    /// link by link (length, mass, inertia, com x, com y, armature, damping, frictionloss),
+    /// then gravity, then the payload's; and each parameter's value. The derivation over it,
+    /// evaluated at those values, must give the literal arm's numbers: a check of the
+    /// polynomial path against the rational one.
+    #[must_use]
+    pub fn parameterised(&self) -> (ArmSpec<Poly>, Vec<(Param, Rational)>) {
+        let mut values = Vec::new();
+        let mut param = |r: &Rational| {
+            let p = Param::new(&format!("v{}", values.len()));
+            values.push((p.clone(), r.clone()));
+            Poly::param(p)
+        };
+        let links = self
+            .links
+            .iter()
+            .map(|l| LinkSpec {
+                length: param(&l.length),
+                mass: param(&l.mass),
+                inertia: param(&l.inertia),
+                com: (param(&l.com.0), param(&l.com.1)),
+                armature: param(&l.armature),
+                damping: param(&l.damping),
+                frictionloss: param(&l.frictionloss),
+            })
+            .collect();
+        let gravity = param(&self.gravity);
+        let payload = self.payload.as_ref().map(|p| PayloadSpec {
+            mass: param(&p.mass),
+            inertia: param(&p.inertia),
+            com: (param(&p.com.0), param(&p.com.1)),
+        });
+        (
+            ArmSpec {
+                links,
+                gravity,
+                payload,
+            },
+            values,
+        )
     }
 }
 

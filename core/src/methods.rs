@@ -657,7 +657,7 @@ fn matrix_outputs(m: &[Vec<Id>]) -> Vec<(String, Id)> {
 mod tests {
     use super::*;
     use crate::mechanics::LinkSpec;
-    use crate::poly::{Param, Poly};
+    use crate::poly::Poly;
     use crate::ring::ratio;
 
     /// An arm with uneven parameters (an offset centre of mass off the link's axis, a
@@ -685,42 +685,19 @@ mod tests {
         }
     }
 
-    /// The same arm with every value a run-time parameter named `v0, v1, ...`, and their
-    /// values.
+    /// The same arm with every value a run-time parameter, and the parameters' values.
     fn parameterised(arm: &ArmSpec) -> (ArmSpec<Poly>, Vec<(String, f64)>) {
-        let mut values = Vec::new();
-        let mut param = |r: &Rational| {
-            let name = format!("v{}", values.len());
-            values.push((name.clone(), crate::ring::to_f64(r).unwrap_or(f64::NAN)));
-            Poly::param(Param::new(&name))
-        };
-        let links = arm
-            .links
-            .iter()
-            .map(|l| LinkSpec {
-                length: param(&l.length),
-                mass: param(&l.mass),
-                inertia: param(&l.inertia),
-                com: (param(&l.com.0), param(&l.com.1)),
-                armature: param(&l.armature),
-                damping: param(&l.damping),
-                frictionloss: param(&l.frictionloss),
+        let (spec, values) = arm.parameterised();
+        let values = values
+            .into_iter()
+            .map(|(p, r)| {
+                (
+                    p.name().to_string(),
+                    crate::ring::to_f64(&r).unwrap_or(f64::NAN),
+                )
             })
             .collect();
-        let gravity = param(&arm.gravity);
-        let payload = arm.payload.as_ref().map(|p| crate::mechanics::PayloadSpec {
-            mass: param(&p.mass),
-            inertia: param(&p.inertia),
-            com: (param(&p.com.0), param(&p.com.1)),
-        });
-        (
-            ArmSpec {
-                links,
-                gravity,
-                payload,
-            },
-            values,
-        )
+        (spec, values)
     }
 
     fn eval_with(m: &Method, n: usize, params: &[(String, f64)]) -> Vec<f64> {
