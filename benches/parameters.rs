@@ -15,10 +15,13 @@
 //! Before timing, each parameterised arm is checked to give its literal twin's numbers.
 
 use std::hint::black_box;
-use std::time::Instant;
 
 use planar_arm::nalgebra::SVector;
 use planar_arm::prelude::*;
+
+#[path = "support/interleaved.rs"]
+mod interleaved;
+use interleaved::interleaved;
 
 #[derive(PlanarArm, Default, Debug)]
 #[arm(gravity = 9.80665)]
@@ -279,41 +282,6 @@ fn check<L: PlanarArm<N>, P: PlanarArm<N>, const N: usize>(literal: &L, params: 
         );
         assert!((a - b).amax() <= 1e-10 * (1.0 + a.amax()), "{a} vs {b}");
     }
-}
-
-/// Median over rounds of the time ratio `params / literal`, the two timed back to back in each
-/// round (alternating which goes first), so that the machine's load, which drifts over
-/// seconds on a shared machine, cancels in each ratio.
-fn interleaved(mut literal: impl FnMut(), mut params: impl FnMut()) -> (f64, f64) {
-    const CALLS: u32 = 20_000;
-    const ROUNDS: usize = 101;
-    let time = |f: &mut dyn FnMut()| {
-        let start = Instant::now();
-        for _ in 0..CALLS {
-            f();
-        }
-        start.elapsed().as_secs_f64() / f64::from(CALLS)
-    };
-    for _ in 0..5 {
-        time(&mut literal);
-        time(&mut params);
-    }
-    let mut ratios = Vec::with_capacity(ROUNDS);
-    let mut literal_times = Vec::with_capacity(ROUNDS);
-    for round in 0..ROUNDS {
-        let (l, p) = if round % 2 == 0 {
-            let l = time(&mut literal);
-            (l, time(&mut params))
-        } else {
-            let p = time(&mut params);
-            (time(&mut literal), p)
-        };
-        ratios.push(p / l);
-        literal_times.push(l);
-    }
-    ratios.sort_by(f64::total_cmp);
-    literal_times.sort_by(f64::total_cmp);
-    (ratios[ROUNDS / 2], literal_times[ROUNDS / 2] * 1e9)
 }
 
 fn row<L: PlanarArm<N>, P: PlanarArm<N>, const N: usize>(literal: &L, params: &P) {
