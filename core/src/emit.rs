@@ -106,7 +106,12 @@ pub fn local(name: &str) -> Ident {
 #[must_use]
 pub fn input_name(i: Input, params: &[Param]) -> String {
     match i {
-        Input::Param(k) => format!("self_{}", params.get(k).map_or("", |p| p.name())),
+        Input::Param(k) => format!(
+            "self_{}",
+            params
+                .get(k)
+                .map_or("", |p| p.name().trim_start_matches("r#"))
+        ),
         Input::Q(j) => format!("q{}", j + 1),
         Input::Qd(j) => format!("qd{}", j + 1),
         Input::Qdd(j) => format!("qdd{}", j + 1),
@@ -174,7 +179,12 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
     for &i in &inputs_used {
         if let Input::Param(k) = i {
             let name = local(&input_name(i, p.params()));
-            let field = Ident::new(p.params()[k].name(), Span::call_site());
+            let name_of_field = p.params()[k].name();
+            // A raw identifier (`self.r#type`) keeps its `r#`.
+            let field = match name_of_field.strip_prefix("r#") {
+                Some(raw) => Ident::new_raw(raw, Span::call_site()),
+                None => Ident::new(name_of_field, Span::call_site()),
+            };
             statements.push(quote!(let #name: f64 = self.#field;));
         }
     }
