@@ -10,8 +10,11 @@
 //!   normalised, so equal expressions are structurally equal. `diff_q`, `diff_var` and `dt`
 //!   (the chain rule) act on it directly.
 //! - [`mechanics`]: the paper's route. Centre-of-mass velocities by `dt` of their positions,
-//!   kinetic energy (translation plus rotation about the centre of mass), potential energy,
-//!   Lagrange's equation; M, c and g read off the torques; C from Christoffel symbols.
+//!   kinetic energy (translation plus rotation about the centre of mass), potential energy;
+//!   M as the Hessian of T, g = dV/dq, C from Christoffel symbols and c = C qd, equal to what
+//!   Lagrange's equation gives (also derived, and compared, in the tests).
+//! - [`poly`]: run-time parameters, polynomials in named parameters with exact rational
+//!   coefficients, the coefficient ring of arms whose values are read at run time.
 //! - [`slp`]: hash-consed straight-line programs; trig atoms of angle sums by angle addition
 //!   from one sine-cosine pair per joint; operation counts.
 //! - [`methods`]: which program computes each generated method (the expanded formulas, or a

@@ -1,7 +1,9 @@
 //! Lagrangian mechanics of a planar serial arm, following the paper's route: velocities of
 //! each centre of mass and link angular velocities, kinetic energy (translation of the centre
-//! of mass plus rotation about it), potential energy of the centres of mass, Lagrange's
-//! equation, then M, c and g read off the result and C from Christoffel symbols.
+//! of mass plus rotation about it), potential energy of the centres of mass. Then M is the
+//! Hessian of T in the rates, g = dV/dq, C comes from Christoffel symbols of M and c = C qd:
+//! the same exact functions Lagrange's equation gives (`Dynamics::lagrange_torques` expands
+//! that equation itself, and the tests assert the two equal), without its costliest step.
 
 use std::fmt;
 
@@ -149,7 +151,8 @@ pub struct Dynamics<C = Rational> {
     pub potential_energy: Expr<C>,
     /// The Lagrangian L = T - V.
     pub lagrangian: Expr<C>,
-    /// Lagrange's equation, `d/dt dL/dqd_i - dL/dq_i`, per joint.
+    /// The torques `tau_i = d/dt dL/dqd_i - dL/dq_i` of Lagrange's equation, per joint, expanded
+    /// (assembled as `M qdd + c + g`; equal to [`lagrange_torques`](Self::lagrange_torques)).
     pub torques: Vec<Expr<C>>,
     /// The mass matrix, row-major.
     pub mass_matrix: Vec<Vec<Expr<C>>>,
@@ -279,33 +282,36 @@ impl<C: Coefficient> Dynamics<C> {
             kinetic.add_assign(&qd.mul(&qd).scale_by(&link.armature).scale(&half));
         }
         let lagrangian = kinetic.sub(&potential);
+        // M as the Hessian of T in the rates, g = dV/dq, C from Christoffel symbols of M and
+        // c = C qd: the same exact functions Lagrange's equation gives (checked against it by
+        // `lagrange_torques`), without expanding d/dt dL/dqd, the costliest step.
+        let mass_matrix: Vec<Vec<Expr<C>>> = {
+            let dt_dqd: Vec<Expr<C>> = (0..n).map(|i| kinetic.diff_var(rate(i))).collect();
+            (0..n)
+                .map(|i| (0..n).map(|j| dt_dqd[i].diff_var(rate(j))).collect())
+                .collect()
+        };
+        let gravity: Vec<Expr<C>> = (0..n).map(|i| potential.diff_q(i)).collect();
+        let coriolis_matrix = christoffel(&mass_matrix);
+        let coriolis: Vec<Expr<C>> = coriolis_matrix
+            .iter()
+            .map(|row| {
+                let mut c = Expr::zero();
+                for (j, cij) in row.iter().enumerate() {
+                    c.add_assign(&cij.mul(&Expr::var(rate(j))));
+                }
+                c
+            })
+            .collect();
         let torques: Vec<Expr<C>> = (0..n)
             .map(|i| {
-                lagrangian
-                    .diff_var(rate(i))
-                    .dt(n)
-                    .sub(&lagrangian.diff_q(i))
+                let mut t = coriolis[i].add(&gravity[i]);
+                for (j, mij) in mass_matrix[i].iter().enumerate() {
+                    t.add_assign(&mij.mul(&Expr::var(Var::Qdd(j))));
+                }
+                t
             })
             .collect();
-        let mass_matrix: Vec<Vec<Expr<C>>> = torques
-            .iter()
-            .map(|t| {
-                (0..n)
-                    .map(|j| t.coefficient_of(&Monomial::var(Var::Qdd(j))))
-                    .collect()
-            })
-            .collect();
-        let gravity: Vec<Expr<C>> = torques
-            .iter()
-            .map(|t| t.coefficient_of(&Monomial::one()))
-            .collect();
-        let coriolis: Vec<Expr<C>> = torques
-            .iter()
-            .map(|t| {
-                t.filter(|m| m.degree() == 2 && m.powers().all(|(v, _)| matches!(v, Var::Qd(_))))
-            })
-            .collect();
-        let coriolis_matrix = christoffel(&mass_matrix);
         Self {
             n,
             kinetic_energy: kinetic,
@@ -319,14 +325,31 @@ impl<C: Coefficient> Dynamics<C> {
         }
     }
 
-    /// The mass matrix as the Hessian of the kinetic energy in the rates: an independent
-    /// reading of M that must agree with the one read off Lagrange's equation.
+    /// Lagrange's equation, `d/dt dL/dqd_i - dL/dq_i`, expanded: the route of the paper,
+    /// independent of how [`derive`](Self::derive) assembles [`torques`](Self::torques) (from
+    /// the Hessian of T, Christoffel symbols and dV/dq), and equal to it.
     #[must_use]
-    pub fn mass_matrix_from_energy(&self) -> Vec<Vec<Expr<C>>> {
+    pub fn lagrange_torques(&self) -> Vec<Expr<C>> {
         (0..self.n)
             .map(|i| {
+                self.lagrangian
+                    .diff_var(rate(i))
+                    .dt(self.n)
+                    .sub(&self.lagrangian.diff_q(i))
+            })
+            .collect()
+    }
+
+    /// The mass matrix read off Lagrange's equation (the coefficients of the accelerations in
+    /// [`lagrange_torques`](Self::lagrange_torques)): an independent reading of M that must
+    /// agree with the Hessian of the kinetic energy that [`derive`](Self::derive) takes.
+    #[must_use]
+    pub fn mass_matrix_from_lagrange(&self) -> Vec<Vec<Expr<C>>> {
+        self.lagrange_torques()
+            .iter()
+            .map(|t| {
                 (0..self.n)
-                    .map(|j| self.kinetic_energy.diff_var(rate(i)).diff_var(rate(j)))
+                    .map(|j| t.coefficient_of(&Monomial::var(Var::Qdd(j))))
                     .collect()
             })
             .collect()
@@ -337,17 +360,30 @@ impl<C: Coefficient> Dynamics<C> {
 fn christoffel<C: Coefficient>(m: &[Vec<Expr<C>>]) -> Vec<Vec<Expr<C>>> {
     let n = m.len();
     let half = ratio(1, 2);
+    // Every dM_ab/dq_k once (M is symmetric): the sum below reads each of them three times.
+    let dm: Vec<Vec<Vec<Expr<C>>>> = (0..n)
+        .map(|a| {
+            (0..n)
+                .map(|b| {
+                    if b < a {
+                        Vec::new()
+                    } else {
+                        (0..n).map(|k| m[a][b].diff_q(k)).collect()
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    let d = |a: usize, b: usize, k: usize| &dm[a.min(b)][a.max(b)][k];
     (0..n)
         .map(|i| {
             (0..n)
                 .map(|j| {
                     let mut c = Expr::zero();
                     for k in 0..n {
-                        let gamma = m[i][j]
-                            .diff_q(k)
-                            .add(&m[i][k].diff_q(j))
-                            .sub(&m[j][k].diff_q(i))
-                            .scale(&half);
+                        let mut gamma = d(i, j, k).clone();
+                        gamma.add_assign(d(i, k, j));
+                        let gamma = gamma.sub(d(j, k, i)).scale(&half);
                         c.add_assign(&gamma.mul(&Expr::var(rate(k))));
                     }
                     c
@@ -418,7 +454,8 @@ mod tests {
                 };
             }
             let d = Dynamics::derive(&arm);
-            assert_eq!(d.mass_matrix, d.mass_matrix_from_energy(), "n = {n}");
+            assert_eq!(d.mass_matrix, d.mass_matrix_from_lagrange(), "n = {n}");
+            assert_eq!(d.torques, d.lagrange_torques(), "n = {n}");
             for i in 0..n {
                 let mut cqd = Expr::zero();
                 for j in 0..n {
