@@ -274,10 +274,6 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
                 let a = paren(get(*a, &exprs), Prec::Atom);
                 (Prec::Sum, quote!(-#a))
             }
-            Node::Abs(a) => {
-                let a = paren(get(*a, &exprs), Prec::Atom);
-                (Prec::Atom, quote!(#a.abs()))
-            }
             Node::Sign(a) => {
                 let (_, a) = get(*a, &exprs);
                 (Prec::Atom, quote!(::planar_arm::__private::sign(#a)))

@@ -130,17 +130,9 @@ impl ArmSpec<Rational> {
     }
 }
 
-impl<C: Coefficient> ArmSpec<C> {
-    /// Whether any joint has friction (a non-zero damping or frictionloss).
-    #[must_use]
-    pub fn has_friction(&self) -> bool {
-        self.links
-            .iter()
-            .any(|l| !l.damping.is_zero() || !l.frictionloss.is_zero())
-    }
-}
-
-/// The equations of motion `tau = M(q) qdd + c(q, qd) + g(q)`, exact.
+/// The equations of motion `tau = M(q) qdd + c(q, qd) + g(q)`, exact (joint friction, which no
+/// Lagrangian holds, is added by the generated methods from the arm's `damping` and
+/// `frictionloss`).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Dynamics<C = Rational> {
     /// Number of joints.

@@ -64,8 +64,6 @@ pub enum Node {
     Neg(Id),
     /// The larger of two values, `a.max(b)`: keeps a pivot above its rounding noise.
     Max(Id, Id),
-    /// `|a|`.
-    Abs(Id),
     /// The sign of `a`: -1, 0 or 1 (0 at zero, unlike `f64::signum`; NaN stays NaN).
     Sign(Id),
 }
@@ -288,14 +286,6 @@ impl Program {
         self.intern(Node::Max(a, b))
     }
 
-    /// `|a|`, folded.
-    pub fn abs(&mut self, a: Id) -> Id {
-        if let Some(x) = self.constant_value(a).cloned() {
-            return self.constant(x.abs());
-        }
-        self.intern(Node::Abs(a))
-    }
-
     /// The sign of `a` (0 at zero).
     pub fn sign(&mut self, a: Id) -> Id {
         if let Some(x) = self.constant_value(a).cloned() {
@@ -458,7 +448,6 @@ impl Program {
                 Node::Div(a, b) => v[a.0 as usize] / v[b.0 as usize],
                 Node::Neg(a) => -v[a.0 as usize],
                 Node::Max(a, b) => v[a.0 as usize].max(v[b.0 as usize]),
-                Node::Abs(a) => v[a.0 as usize].abs(),
                 Node::Sign(a) => sign(v[a.0 as usize]),
             };
             v.push(x);
@@ -509,7 +498,6 @@ impl Program {
                 | Node::Mul(..)
                 | Node::Neg(..)
                 | Node::Max(..)
-                | Node::Abs(..)
                 | Node::Sign(..) => below + 1,
                 Node::Input(_) | Node::Const(_) | Node::Sin(_) | Node::Cos(_) => 0,
             };
@@ -533,12 +521,9 @@ impl Program {
             }
             match node {
                 Node::Mul(..) => count.mul += 1,
-                Node::Add(..)
-                | Node::Sub(..)
-                | Node::Neg(..)
-                | Node::Max(..)
-                | Node::Abs(..)
-                | Node::Sign(..) => count.add += 1,
+                Node::Add(..) | Node::Sub(..) | Node::Neg(..) | Node::Max(..) | Node::Sign(..) => {
+                    count.add += 1
+                }
                 Node::Div(..) => count.div += 1,
                 Node::Sin(j) | Node::Cos(j) => {
                     joints.insert(*j);
@@ -558,7 +543,7 @@ pub fn children(node: &Node) -> Vec<Id> {
         Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) | Node::Max(a, b) => {
             vec![a, b]
         }
-        Node::Neg(a) | Node::Abs(a) | Node::Sign(a) => vec![a],
+        Node::Neg(a) | Node::Sign(a) => vec![a],
         Node::Input(_) | Node::Const(_) | Node::Sin(_) | Node::Cos(_) => vec![],
     }
 }
