@@ -12,6 +12,9 @@ use planar_arm::kinematics::REACH_TOLERANCE;
 use planar_arm::nalgebra::Vector3;
 use planar_arm::prelude::*;
 
+mod common;
+use common::Rng;
+
 /// The paper's two equal links.
 #[derive(PlanarArm, Default, Debug, Clone, Copy)]
 #[arm(gravity = 9.81)]
@@ -129,25 +132,8 @@ macro_rules! every_arm {
 // ---------------------------------------------------------------------------------------------
 // Independent helpers.
 
-/// Deterministic splitmix64 generator.
-struct Rng(u64);
-
+// The shared generator, with what these tests draw.
 impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^= z >> 31;
-        #[allow(clippy::cast_precision_loss)]
-        let u = (z >> 11) as f64 / (1u64 << 53) as f64;
-        u
-    }
-
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
-
     fn angle(&mut self) -> f64 {
         self.range(-PI, PI)
     }

@@ -6,6 +6,8 @@
 
 mod common;
 
+use common::Rng;
+
 use planar_arm::nalgebra::{SVector, Vector2};
 use planar_arm::prelude::*;
 use planar_arm::{reference, Model, Payload};
@@ -91,26 +93,6 @@ struct Three {
     i3: f64,
     cx3: f64,
     f3: f64,
-}
-
-/// A small deterministic generator (xorshift), so failures reproduce.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        #[allow(clippy::cast_precision_loss)]
-        let unit = (self.0 >> 11) as f64 / (1u64 << 53) as f64;
-        unit
-    }
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
-    fn vector<const N: usize>(&mut self, r: f64) -> SVector<f64, N> {
-        SVector::from_fn(|_, _| self.range(-r, r))
-    }
 }
 
 fn random_three(rng: &mut Rng) -> Three {

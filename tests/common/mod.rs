@@ -5,6 +5,33 @@ use planar_arm::nalgebra::{SMatrix, SVector};
 use planar_arm::prelude::*;
 use planar_arm::reference;
 
+/// Deterministic splitmix64 generator, so that failures reproduce.
+pub struct Rng(pub u64);
+
+impl Rng {
+    /// Uniform in [0, 1).
+    pub fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^= z >> 31;
+        #[allow(clippy::cast_precision_loss)]
+        let u = (z >> 11) as f64 / (1u64 << 53) as f64;
+        u
+    }
+
+    /// Uniform in [lo, hi).
+    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.next()
+    }
+
+    /// Each entry uniform in [-r, r).
+    pub fn vector<const N: usize>(&mut self, r: f64) -> SVector<f64, N> {
+        SVector::from_fn(|_, _| self.range(-r, r))
+    }
+}
+
 /// Relative closeness: `|a - b| <= tol * max(1, scale)`.
 pub fn close(a: f64, b: f64, tol: f64, scale: f64) -> bool {
     (a - b).abs() <= tol * scale.max(1.0)
