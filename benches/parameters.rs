@@ -12,6 +12,9 @@
 //! to back (20,000 calls each): on a shared machine the load drifts over seconds, and
 //! criterion's one-benchmark-after-another medians swung by 30 % between runs.
 //!
+//! Each parameterised arm is timed twice: called directly, and through its frozen view
+//! (`arm.freeze()`, which evaluates the parameter-only values once).
+//!
 //! Before timing, each parameterised arm is checked to give its literal twin's numbers.
 
 use std::hint::black_box;
@@ -284,41 +287,70 @@ fn check<L: PlanarArm<N>, P: PlanarArm<N>, const N: usize>(literal: &L, params: 
     }
 }
 
+/// `time(b) / time(a)` for one method of the literal arm (a) and of the parameterised arm
+/// called directly and through its frozen view (b).
+macro_rules! ratios {
+    ($literal:expr, $params:expr, $frozen:expr, |$arm:ident| $call:expr) => {{
+        let direct = interleaved(
+            || {
+                let $arm = $literal;
+                black_box($call);
+            },
+            || {
+                let $arm = $params;
+                black_box($call);
+            },
+        );
+        let frozen = interleaved(
+            || {
+                let $arm = $literal;
+                black_box($call);
+            },
+            || {
+                let $arm = $frozen;
+                black_box($call);
+            },
+        );
+        (direct, frozen.0)
+    }};
+}
+
 fn row<L: PlanarArm<N>, P: PlanarArm<N>, const N: usize>(literal: &L, params: &P) {
     check(literal, params);
+    let frozen = black_box(params.freeze());
     let (q, qd, qdd) = state::<N>(0);
-    let (id, id_ns) = interleaved(
+    let ((id, id_ns), id_f) = ratios!(literal, params, &frozen, |a| a.inverse_dynamics(
+        black_box(&q),
+        black_box(&qd),
+        black_box(&qdd)
+    ));
+    let ((m, _), m_f) = ratios!(literal, params, &frozen, |a| a.mass_matrix(black_box(&q)));
+    let ((fd, _), fd_f) = ratios!(literal, params, &frozen, |a| a.forward_dynamics(
+        black_box(&q),
+        black_box(&qd),
+        black_box(&qdd)
+    ));
+    // What freezing costs, in calls of the literal arm's inverse dynamics.
+    let (freeze, _) = interleaved(
         || {
             black_box(literal.inverse_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)));
         },
         || {
-            black_box(params.inverse_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)));
+            black_box(black_box(params).freeze());
         },
     );
-    let (m, _) = interleaved(
-        || {
-            black_box(literal.mass_matrix(black_box(&q)));
-        },
-        || {
-            black_box(params.mass_matrix(black_box(&q)));
-        },
+    println!(
+        "| {N} | {id:.2} | {m:.2} | {fd:.2} | {id_f:.2} | {m_f:.2} | {fd_f:.2} | {freeze:.2} | {id_ns:.1} |"
     );
-    let (fd, _) = interleaved(
-        || {
-            black_box(literal.forward_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)));
-        },
-        || {
-            black_box(params.forward_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)));
-        },
-    );
-    println!("| {N} | {id:.2} | {m:.2} | {fd:.2} | {id_ns:.1} |");
 }
 
 fn main() {
     println!(
-        "| N | ID params / literal | M params / literal | FD params / literal | ID literal ns |"
+        "| N | ID params / literal | M params / literal | FD params / literal \
+         | ID frozen / literal | M frozen / literal | FD frozen / literal \
+         | freeze() / ID literal | ID literal ns |"
     );
-    println!("|---|---|---|---|---|");
+    println!("|---|---|---|---|---|---|---|---|---|");
     row(&Literal2::default(), &black_box(Params2::default()));
     row(&Literal3::default(), &black_box(Params3::default()));
     row(&Literal4::default(), &black_box(Params4::default()));

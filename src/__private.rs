@@ -82,3 +82,15 @@ pub fn sign(x: f64) -> f64 {
         x * 0.0
     }
 }
+
+/// The parameter-only values of an arm's hot methods, computed by its `__freeze` and held by
+/// [`crate::Frozen`]. A wrapper because `[f64; K]` implements `Default` only up to 32.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Block<const K: usize>(pub [f64; K]);
+
+impl<const K: usize> Default for Block<K> {
+    #[inline]
+    fn default() -> Self {
+        Self([0.0; K])
+    }
+}

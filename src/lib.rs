@@ -109,6 +109,9 @@
 //!   loaded from a file. Values stay polynomial in the parameters (division by a parameter is a
 //!   compile error), so the derivation stays exact over polynomials in them; each method's
 //!   rustdoc shows its formulas with the parameters by name. Other fields are left alone.
+//!   Between parameter changes, [`PlanarArm::freeze`] evaluates the parameter-only values once
+//!   and gives a [`Frozen`] view with the hot dynamics methods at the literal arm's speed; it
+//!   borrows the arm, so a parameter cannot change under it.
 //!
 //! ```
 //! use planar_arm::prelude::*;
@@ -166,6 +169,7 @@
 
 mod error;
 pub mod exact;
+mod frozen;
 pub mod kinematics;
 mod link;
 mod model;
@@ -181,6 +185,7 @@ pub mod __private;
 pub struct ReadmeDoctests;
 
 pub use error::ArmError;
+pub use frozen::Frozen;
 pub use link::{Link, Revolute};
 pub use model::{Model, Payload};
 pub use nalgebra;
@@ -195,7 +200,7 @@ pub mod prelude {
     pub use crate::kinematics::{
         ClosedFormIk, DexterousWorkspace, DlsOptions, IkTarget, TipForce, TipWrench, Workspace,
     };
-    pub use crate::{ArmError, Link, Model, Payload, PlanarArm, Revolute};
+    pub use crate::{ArmError, Frozen, Link, Model, Payload, PlanarArm, Revolute};
     pub use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2};
 }
 
@@ -299,6 +304,64 @@ pub trait PlanarArm<const N: usize> {
         force: &Vector2<f64>,
         torque: f64,
     ) -> SVector<f64, N>;
+
+    /// A view that evaluates the parameter-only part of the dynamics once and reuses it on every
+    /// call, for an arm with run-time parameters whose values hold still for many calls (a
+    /// control loop between payload changes). The arm stays borrowed while the view lives, so
+    /// its values cannot go stale. See [`Frozen`].
+    fn freeze(&self) -> Frozen<'_, Self, N> {
+        Frozen::new(self)
+    }
+
+    /// The parameter-only values [`Frozen`] holds (empty for all-literal arms).
+    #[doc(hidden)]
+    type __Frozen: Copy + Default + core::fmt::Debug;
+    #[doc(hidden)]
+    fn __freeze(&self) -> Self::__Frozen {
+        Self::__Frozen::default()
+    }
+    #[doc(hidden)]
+    fn __mass_matrix_frozen(&self, _: &Self::__Frozen, q: &SVector<f64, N>) -> SMatrix<f64, N, N> {
+        self.mass_matrix(q)
+    }
+    #[doc(hidden)]
+    fn __bias_frozen(
+        &self,
+        _: &Self::__Frozen,
+        q: &SVector<f64, N>,
+        qd: &SVector<f64, N>,
+    ) -> SVector<f64, N> {
+        self.bias(q, qd)
+    }
+    #[doc(hidden)]
+    fn __mass_matrix_and_bias_frozen(
+        &self,
+        _: &Self::__Frozen,
+        q: &SVector<f64, N>,
+        qd: &SVector<f64, N>,
+    ) -> (SMatrix<f64, N, N>, SVector<f64, N>) {
+        self.mass_matrix_and_bias(q, qd)
+    }
+    #[doc(hidden)]
+    fn __inverse_dynamics_frozen(
+        &self,
+        _: &Self::__Frozen,
+        q: &SVector<f64, N>,
+        qd: &SVector<f64, N>,
+        qdd: &SVector<f64, N>,
+    ) -> SVector<f64, N> {
+        self.inverse_dynamics(q, qd, qdd)
+    }
+    #[doc(hidden)]
+    fn __forward_dynamics_frozen(
+        &self,
+        _: &Self::__Frozen,
+        q: &SVector<f64, N>,
+        qd: &SVector<f64, N>,
+        tau: &SVector<f64, N>,
+    ) -> SVector<f64, N> {
+        self.forward_dynamics(q, qd, tau)
+    }
 
     /// The reachable region: an annulus with inner radius `max(0, 2 max l - sum l)` and outer
     /// radius `sum l`.

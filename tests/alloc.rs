@@ -158,6 +158,48 @@ fn every_generated_method<A: PlanarArm<N>, const N: usize>(arm: &A) {
     black_box(arm.workspace());
     black_box(arm.manipulability(black_box(&q)));
     black_box(arm.is_singular(black_box(&q), 1e-9));
+    let frozen = black_box(arm.freeze());
+    black_box(frozen.mass_matrix(black_box(&q)));
+    black_box(frozen.bias(black_box(&q), black_box(&qd)));
+    black_box(frozen.mass_matrix_and_bias(black_box(&q), black_box(&qd)));
+    black_box(frozen.inverse_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)));
+    black_box(frozen.forward_dynamics(black_box(&q), black_box(&qd), black_box(&tau)));
+}
+
+/// Run-time parameters, a payload, armature and friction: the parameterised code paths.
+#[derive(PlanarArm)]
+#[arm(gravity = 9.81, payload = self.payload)]
+struct Parameterised {
+    #[arm(length = 0.35, mass = self.m1, inertia = self.i1, com = self.c1, armature = 0.02, damping = 0.1)]
+    a: Revolute,
+    #[arm(length = self.l2, mass = 1.2, com = (0.11, 0.005), frictionloss = self.f2)]
+    b: Revolute,
+    #[arm(length = 0.2, mass = self.m3)]
+    c: Revolute,
+    m1: f64,
+    i1: f64,
+    c1: f64,
+    l2: f64,
+    f2: f64,
+    m3: f64,
+    payload: f64,
+}
+
+impl Default for Parameterised {
+    fn default() -> Self {
+        Self {
+            a: Revolute,
+            b: Revolute,
+            c: Revolute,
+            m1: 2.5,
+            i1: 0.03,
+            c1: 0.16,
+            l2: 0.25,
+            f2: 0.3,
+            m3: 0.4,
+            payload: 0.4,
+        }
+    }
 }
 
 #[track_caller]
@@ -182,6 +224,7 @@ fn generated_dynamics_kinematics_and_statics_do_not_allocate() {
         every_generated_method(&Three::default());
         every_generated_method(&Five::default());
         every_generated_method(&Eight::default());
+        every_generated_method(&Parameterised::default());
     };
     warm();
     assert_no_allocation("one link", || every_generated_method(&One::default()));
@@ -192,6 +235,9 @@ fn generated_dynamics_kinematics_and_statics_do_not_allocate() {
     assert_no_allocation("three links", || every_generated_method(&Three::default()));
     assert_no_allocation("five links", || every_generated_method(&Five::default()));
     assert_no_allocation("eight links", || every_generated_method(&Eight::default()));
+    assert_no_allocation("run-time parameters", || {
+        every_generated_method(&Parameterised::default());
+    });
 }
 
 #[test]

@@ -119,6 +119,7 @@ pub fn input_name(i: Input, params: &[Param]) -> String {
         Input::Force(0) => "u".into(),
         Input::Force(_) => "v".into(),
         Input::TipTorque => "torque".into(),
+        Input::Frozen(k) => format!("frozen{k}"),
     }
 }
 
@@ -186,6 +187,14 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
                 None => Ident::new(name_of_field, Span::call_site()),
             };
             statements.push(quote!(let #name: f64 = self.#field;));
+        }
+    }
+    // Parameter-only values computed beforehand are read from the block.
+    for &i in &inputs_used {
+        if let Input::Frozen(k) = i {
+            let (name, block) = (local(&input_name(i, p.params())), local("block"));
+            let k = proc_macro2::Literal::usize_unsuffixed(k);
+            statements.push(quote!(let #name: f64 = #block.0[#k];));
         }
     }
     if !joints.is_empty() {

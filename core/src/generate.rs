@@ -45,7 +45,7 @@ type Finish<'a> = Box<dyn std::ops::Fn(&[proc_macro2::Ident]) -> TokenStream + '
 
 struct Fn<'a> {
     name: &'static str,
-    params: &'a [Param],
+    params: Vec<Param>,
     ret: TokenStream,
     doc: String,
     method: Method,
@@ -55,12 +55,34 @@ struct Fn<'a> {
     finish: Finish<'a>,
 }
 
-fn emit_fn(n: usize, f: Fn<'_>) -> Result<TokenStream, EmitError> {
-    let rendered = render(&f.method)?;
+/// The methods that get a variant reading a frozen block (see [`crate::frozen`]): what
+/// simulators and controllers call every cycle.
+const HOT: [&str; 5] = [
+    "mass_matrix",
+    "bias",
+    "mass_matrix_and_bias",
+    "inverse_dynamics",
+    "forward_dynamics",
+];
+
+/// Emits `f`, or with `frozen = Some((method, slots))` its hidden variant
+/// `__NAME_frozen(&self, __block, ...)` that evaluates `method`, whose parameter-only values
+/// are read from a block of `slots` values.
+fn emit_fn(
+    n: usize,
+    f: &Fn<'_>,
+    frozen: Option<(&Method, usize)>,
+) -> Result<TokenStream, EmitError> {
+    let method = frozen.map_or(&f.method, |(m, _)| m);
+    let rendered = render(method)?;
     let nn = Literal::usize_unsuffixed(n);
     let mut params = Vec::new();
     let mut unpack = Vec::new();
-    for p in f.params {
+    if let Some((_, slots)) = frozen {
+        let (block, slots) = (local("block"), Literal::usize_unsuffixed(slots));
+        params.push(quote!(#block: &::planar_arm::__private::Block<#slots>));
+    }
+    for p in &f.params {
         match *p {
             Param::Joints(name, kind) => {
                 let used: Vec<bool> = (0..n)
@@ -105,19 +127,33 @@ fn emit_fn(n: usize, f: Fn<'_>) -> Result<TokenStream, EmitError> {
             }
         }
     }
-    let name = quote::format_ident!("{}", f.name);
     let touch = &f.touch;
     let statements = &rendered.statements;
     let result = (f.finish)(&rendered.outputs);
     let ret = &f.ret;
-    let evaluation = if f.method.evaluation.is_empty() {
-        String::new()
+    let (name, doc, hidden) = if frozen.is_some() {
+        let doc = format!(
+            "`{}` with the parameter-only values read from a block computed by `__freeze`. Cost: {}.",
+            f.name,
+            method.op_count()
+        );
+        (
+            quote::format_ident!("__{}_frozen", f.name),
+            doc,
+            quote!(#[doc(hidden)]),
+        )
     } else {
-        format!("{}\n\n", f.method.evaluation)
+        let evaluation = if method.evaluation.is_empty() {
+            String::new()
+        } else {
+            format!("{}\n\n", method.evaluation)
+        };
+        let doc = format!("{}\n\n{evaluation}Cost: {}.", f.doc, method.op_count());
+        (quote::format_ident!("{}", f.name), doc, TokenStream::new())
     };
-    let doc = format!("{}\n\n{evaluation}Cost: {}.", f.doc, f.method.op_count());
     Ok(quote! {
         #[doc = #doc]
+        #hidden
         #[inline]
         fn #name(&self, #(#params),*) -> #ret {
             #touch
@@ -253,55 +289,49 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     }
     let conventions = "Joint angles `q`, rates `qd`, accelerations `qdd` (1-based in the formulas); \
                        `cK` and `sK...` are the cosine and sine of the sum of the joint angles named by the digits.";
-    let mut fns = Vec::new();
-    fns.push(emit_fn(n, Fn {
+    let mut specs = Vec::new();
+    specs.push(Fn {
         name: "mass_matrix",
-        params: &[q],
+        params: vec![q],
         ret: smat.clone(),
         doc: formula_doc(&format!("The mass matrix M(q), derived exactly (symmetric; upper triangle shown). {conventions}"), &m_rows),
         method: d.mass_matrix_method(),
         touch: touch.clone(),
         finish: Box::new(|ids| matrix(n, n, ids)),
-    })?);
-    fns.push(emit_fn(
-        n,
-        Fn {
-            name: "coriolis",
-            params: &[q, qd],
-            ret: svec.clone(),
-            doc: formula_doc(
-                "The velocity-product torques c(q, qd).",
-                &rows_doc("c", &dy.coriolis),
-            ),
-            method: d.coriolis_method(),
-            touch: TokenStream::new(),
-            finish: Box::new(vector),
-        },
-    )?);
-    fns.push(emit_fn(n, Fn {
+    });
+    specs.push(Fn {
+        name: "coriolis",
+        params: vec![q, qd],
+        ret: svec.clone(),
+        doc: formula_doc(
+            "The velocity-product torques c(q, qd).",
+            &rows_doc("c", &dy.coriolis),
+        ),
+        method: d.coriolis_method(),
+        touch: TokenStream::new(),
+        finish: Box::new(vector),
+    });
+    specs.push(Fn {
         name: "coriolis_matrix",
-        params: &[q, qd],
+        params: vec![q, qd],
         ret: smat.clone(),
         doc: formula_doc("The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.", &cm_rows),
         method: d.coriolis_matrix_method(),
         touch: TokenStream::new(),
         finish: Box::new(|ids| matrix(n, n, ids)),
-    })?);
-    fns.push(emit_fn(
-        n,
-        Fn {
-            name: "gravity",
-            params: &[q],
-            ret: svec.clone(),
-            doc: formula_doc(
-                "The gravity torques g(q) = dV/dq.",
-                &rows_doc("g", &dy.gravity),
-            ),
-            method: d.gravity_method(),
-            touch: TokenStream::new(),
-            finish: Box::new(vector),
-        },
-    )?);
+    });
+    specs.push(Fn {
+        name: "gravity",
+        params: vec![q],
+        ret: svec.clone(),
+        doc: formula_doc(
+            "The gravity torques g(q) = dV/dq.",
+            &rows_doc("g", &dy.gravity),
+        ),
+        method: d.gravity_method(),
+        touch: TokenStream::new(),
+        finish: Box::new(vector),
+    });
     let friction_rows: Vec<(String, String)> = d
         .arm
         .links
@@ -329,198 +359,212 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
         let _ = writeln!(friction_doc, "{name} = {f}");
     }
     friction_doc.push_str("```\n");
-    fns.push(emit_fn(
-        n,
-        Fn {
-            name: "friction",
-            params: &[qd],
-            ret: svec.clone(),
-            doc: friction_doc,
-            method: d.friction_method(),
-            touch: TokenStream::new(),
-            finish: Box::new(vector),
-        },
-    )?);
-    fns.push(emit_fn(
-        n,
-        Fn {
-            name: "bias",
-            params: &[q, qd],
-            ret: svec.clone(),
-            doc: "The bias h(q, qd) = c + g + f: every torque but the inertial one, so that \
+    specs.push(Fn {
+        name: "friction",
+        params: vec![qd],
+        ret: svec.clone(),
+        doc: friction_doc,
+        method: d.friction_method(),
+        touch: TokenStream::new(),
+        finish: Box::new(vector),
+    });
+    specs.push(Fn {
+        name: "bias",
+        params: vec![q, qd],
+        ret: svec.clone(),
+        doc: "The bias h(q, qd) = c + g + f: every torque but the inertial one, so that \
                   `inverse_dynamics(q, qd, qdd) = mass_matrix(q) qdd + bias(q, qd)` (Pinocchio's \
                   `nonLinearEffects`, MuJoCo's `qfrc_bias` plus its passive joint friction)."
-                .to_string(),
-            method: d.bias_method(),
-            touch: TokenStream::new(),
-            finish: Box::new(vector),
-        },
-    )?);
-    fns.push(emit_fn(
-        n,
-        Fn {
-            name: "mass_matrix_and_bias",
-            params: &[q, qd],
-            ret: quote!((#smat, #svec)),
-            doc: "M(q) and h(q, qd) = c + g + f in one pass, sharing the trigonometry and every \
+            .to_string(),
+        method: d.bias_method(),
+        touch: TokenStream::new(),
+        finish: Box::new(vector),
+    });
+    specs.push(Fn {
+        name: "mass_matrix_and_bias",
+        params: vec![q, qd],
+        ret: quote!((#smat, #svec)),
+        doc: "M(q) and h(q, qd) = c + g + f in one pass, sharing the trigonometry and every \
                   common subexpression: what computed-torque and operational-space controllers \
                   need every cycle."
-                .to_string(),
-            method: d.mass_matrix_and_bias_method(),
-            touch: TokenStream::new(),
-            finish: Box::new(move |ids| {
-                let m = matrix(n, n, &ids[..n * n]);
-                let h = vector(&ids[n * n..]);
-                quote!((#m, #h))
-            }),
-        },
-    )?);
-    fns.push(emit_fn(
-        n,
-        Fn {
-            name: "inverse_dynamics",
-            params: &[q, qd, qdd],
-            ret: svec.clone(),
-            doc: formula_doc(
-                "Lagrange's equation, tau_i = d/dt dL/dqd_i - dL/dq_i, expanded, plus the joint \
+            .to_string(),
+        method: d.mass_matrix_and_bias_method(),
+        touch: TokenStream::new(),
+        finish: Box::new(move |ids| {
+            let m = matrix(n, n, &ids[..n * n]);
+            let h = vector(&ids[n * n..]);
+            quote!((#m, #h))
+        }),
+    });
+    specs.push(Fn {
+        name: "inverse_dynamics",
+        params: vec![q, qd, qdd],
+        ret: svec.clone(),
+        doc: formula_doc(
+            "Lagrange's equation, tau_i = d/dt dL/dqd_i - dL/dq_i, expanded, plus the joint \
                  friction f(qd) (see `friction`).",
-                &rows_doc("tau", &dy.torques),
-            ),
-            method: d.inverse_dynamics_method(),
-            touch: TokenStream::new(),
-            finish: Box::new(vector),
-        },
-    )?);
+            &rows_doc("tau", &dy.torques),
+        ),
+        method: d.inverse_dynamics_method(),
+        touch: TokenStream::new(),
+        finish: Box::new(vector),
+    });
     let fd_doc = match n {
         1 => "qdd = (tau - c - g - f) / M11.".to_string(),
         2 => "qdd = M^-1 (tau - c - g - f) in closed form (Cramer's rule, det = M11 M22 - M12^2 > 0).".to_string(),
         _ => "qdd = M^-1 (tau - c - g - f) by an unrolled L D L^T factorisation of M (no square roots, no allocation).".to_string(),
     };
-    fns.push(emit_fn(
-        n,
-        Fn {
-            name: "forward_dynamics",
-            params: &[q, qd, tau],
-            ret: svec.clone(),
-            doc: fd_doc,
-            method: d.forward_dynamics_method(),
-            touch: TokenStream::new(),
-            finish: Box::new(vector),
-        },
-    )?);
-    fns.push(emit_fn(
-        n,
-        Fn {
-            name: "kinetic_energy",
-            params: &[q, qd],
-            ret: quote!(f64),
-            doc: formula_doc("The kinetic energy.", &[("T".into(), &dy.kinetic_energy)]),
-            method: d.kinetic_energy_method(),
-            touch: TokenStream::new(),
-            finish: Box::new(|ids| {
-                let i = &ids[0];
-                quote!(#i)
-            }),
-        },
-    )?);
-    fns.push(emit_fn(
-        n,
-        Fn {
-            name: "potential_energy",
-            params: &[q],
-            ret: quote!(f64),
-            doc: formula_doc(
-                "The potential energy (zero at y = 0).",
-                &[("V".into(), &dy.potential_energy)],
-            ),
-            method: d.potential_energy_method(),
-            touch: TokenStream::new(),
-            finish: Box::new(|ids| {
-                let i = &ids[0];
-                quote!(#i)
-            }),
-        },
-    )?);
+    specs.push(Fn {
+        name: "forward_dynamics",
+        params: vec![q, qd, tau],
+        ret: svec.clone(),
+        doc: fd_doc,
+        method: d.forward_dynamics_method(),
+        touch: TokenStream::new(),
+        finish: Box::new(vector),
+    });
+    specs.push(Fn {
+        name: "kinetic_energy",
+        params: vec![q, qd],
+        ret: quote!(f64),
+        doc: formula_doc("The kinetic energy.", &[("T".into(), &dy.kinetic_energy)]),
+        method: d.kinetic_energy_method(),
+        touch: TokenStream::new(),
+        finish: Box::new(|ids| {
+            let i = &ids[0];
+            quote!(#i)
+        }),
+    });
+    specs.push(Fn {
+        name: "potential_energy",
+        params: vec![q],
+        ret: quote!(f64),
+        doc: formula_doc(
+            "The potential energy (zero at y = 0).",
+            &[("V".into(), &dy.potential_energy)],
+        ),
+        method: d.potential_energy_method(),
+        touch: TokenStream::new(),
+        finish: Box::new(|ids| {
+            let i = &ids[0];
+            quote!(#i)
+        }),
+    });
     let ki = &d.kinematics;
     let (tx, ty) = &ki.points[n];
-    fns.push(emit_fn(
-        n,
-        Fn {
-            name: "tip_pose",
-            params: &[q],
-            ret: quote!(::planar_arm::nalgebra::Isometry2<f64>),
-            doc: formula_doc(
-                &format!(
-                    "The tip pose; the orientation is the last link's angle {}.",
-                    ki.tip_angle
-                ),
-                &[("x".into(), tx), ("y".into(), ty)],
+    specs.push(Fn {
+        name: "tip_pose",
+        params: vec![q],
+        ret: quote!(::planar_arm::nalgebra::Isometry2<f64>),
+        doc: formula_doc(
+            &format!(
+                "The tip pose; the orientation is the last link's angle {}.",
+                ki.tip_angle
             ),
-            method: d.tip_pose_method(),
-            touch: TokenStream::new(),
-            finish: Box::new(|ids| {
-                let (x, y, c, s) = (&ids[0], &ids[1], &ids[2], &ids[3]);
-                quote!(::planar_arm::__private::pose(#x, #y, #c, #s))
-            }),
-        },
-    )?);
+            &[("x".into(), tx), ("y".into(), ty)],
+        ),
+        method: d.tip_pose_method(),
+        touch: TokenStream::new(),
+        finish: Box::new(|ids| {
+            let (x, y, c, s) = (&ids[0], &ids[1], &ids[2], &ids[3]);
+            quote!(::planar_arm::__private::pose(#x, #y, #c, #s))
+        }),
+    });
     let mut j_rows = Vec::new();
     for (r, row) in ki.jacobian.iter().enumerate() {
         for (j, e) in row.iter().enumerate() {
             j_rows.push((format!("J{}{}", r + 1, j + 1), e));
         }
     }
-    fns.push(emit_fn(
-        n,
-        Fn {
-            name: "jacobian",
-            params: &[q],
-            ret: quote!(::planar_arm::nalgebra::SMatrix<f64, 3, #nn>),
-            doc: formula_doc("The Jacobian d(x, y, phi)/dq.", &j_rows),
-            method: d.jacobian_method(),
-            touch: TokenStream::new(),
-            finish: Box::new(|ids| matrix(3, n, ids)),
-        },
-    )?);
-    fns.push(emit_fn(
-        n,
-        Fn {
-            name: "joint_positions",
-            params: &[q],
-            ret: quote!([::planar_arm::nalgebra::Point2<f64>; #nn]),
-            doc: "The position of each joint, joint 1 at the origin.".to_string(),
-            method: d.joint_positions_method(),
-            touch: TokenStream::new(),
-            finish: Box::new(|ids| {
-                let pts = ids.chunks(2).map(|p| {
-                    let (x, y) = (&p[0], &p[1]);
-                    quote!(::planar_arm::nalgebra::Point2::new(#x, #y))
-                });
-                quote!([#(#pts),*])
-            }),
-        },
-    )?);
-    fns.push(emit_fn(n, Fn {
+    specs.push(Fn {
+        name: "jacobian",
+        params: vec![q],
+        ret: quote!(::planar_arm::nalgebra::SMatrix<f64, 3, #nn>),
+        doc: formula_doc("The Jacobian d(x, y, phi)/dq.", &j_rows),
+        method: d.jacobian_method(),
+        touch: TokenStream::new(),
+        finish: Box::new(|ids| matrix(3, n, ids)),
+    });
+    specs.push(Fn {
+        name: "joint_positions",
+        params: vec![q],
+        ret: quote!([::planar_arm::nalgebra::Point2<f64>; #nn]),
+        doc: "The position of each joint, joint 1 at the origin.".to_string(),
+        method: d.joint_positions_method(),
+        touch: TokenStream::new(),
+        finish: Box::new(|ids| {
+            let pts = ids.chunks(2).map(|p| {
+                let (x, y) = (&p[0], &p[1]);
+                quote!(::planar_arm::nalgebra::Point2::new(#x, #y))
+            });
+            quote!([#(#pts),*])
+        }),
+    });
+    specs.push(Fn {
         name: "tip_polar",
-        params: &[q],
+        params: vec![q],
         ret: quote!((f64, f64)),
-        doc: formula_doc("The tip in polar form: r from r^2 (which does not depend on q1), theta = atan2(y, x).", &[("r^2".into(), &ki.radius_squared)]),
+        doc: formula_doc(
+            "The tip in polar form: r from r^2 (which does not depend on q1), theta = atan2(y, x).",
+            &[("r^2".into(), &ki.radius_squared)],
+        ),
         method: d.tip_polar_method(),
         touch: TokenStream::new(),
         finish: Box::new(|ids| {
             let (r2, x, y) = (&ids[0], &ids[1], &ids[2]);
             quote!(::planar_arm::__private::polar(#r2, #x, #y))
         }),
-    })?);
-    fns.push(emit_fn(n, Fn {
+    });
+    specs.push(Fn {
         name: "joint_torques",
-        params: &[q, Param::Force, Param::Torque],
+        params: vec![q, Param::Force, Param::Torque],
         ret: svec.clone(),
         doc: "Statics: tau = J^T (u, v, torque), the motor torques that make the tip exert force (u, v) and torque `torque`.".to_string(),
         method: d.joint_torques_method(),
         touch: TokenStream::new(),
         finish: Box::new(vector),
-    })?);
+    });
+
+    let hot: Vec<&Fn<'_>> = specs.iter().filter(|f| HOT.contains(&f.name)).collect();
+    // An all-literal arm's constants are folded already: nothing to freeze.
+    let frozen = if hot.iter().any(|f| !f.method.program.params().is_empty()) {
+        let methods: Vec<Method> = hot.iter().map(|f| f.method.clone()).collect();
+        crate::frozen::freeze(&methods)
+    } else {
+        None
+    };
+    let mut fns = Vec::new();
+    for f in &specs {
+        fns.push(emit_fn(n, f, None)?);
+    }
+    let slots = frozen.as_ref().map_or(0, |fz| fz.block.outputs.len());
+    let slots_lit = Literal::usize_unsuffixed(slots);
+    fns.push(quote!(
+        #[doc(hidden)]
+        type __Frozen = ::planar_arm::__private::Block<#slots_lit>;
+    ));
+    if let Some(fz) = &frozen {
+        for (f, m) in hot.iter().zip(&fz.methods) {
+            fns.push(emit_fn(n, f, Some((m, slots)))?);
+        }
+        let rendered = render(&fz.block)?;
+        let statements = &rendered.statements;
+        let outputs = &rendered.outputs;
+        let doc = format!(
+            "The parameter-only values of `{}`, from the arm's fields. Cost: {}.",
+            HOT.join("`, `"),
+            fz.block.op_count()
+        );
+        fns.push(quote!(
+            #[doc = #doc]
+            #[doc(hidden)]
+            #[inline]
+            fn __freeze(&self) -> ::planar_arm::__private::Block<#slots_lit> {
+                #(#statements)*
+                ::planar_arm::__private::Block([#(#outputs),*])
+            }
+        ));
+    }
 
     let model = model_tokens(d)?;
     let m_exact = dy
@@ -700,6 +744,7 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
             fn friction(&self, _: #v) -> #sv #body
             fn bias(&self, _: #v, _: #v) -> #sv #body
             fn mass_matrix_and_bias(&self, _: #v, _: #v) -> (#m, #sv) #body
+            type __Frozen = ::planar_arm::__private::Block<0>;
             fn model(&self) -> ::planar_arm::Model<#nn> #body
             fn inverse_dynamics(&self, _: #v, _: #v, _: #v) -> #sv #body
             fn forward_dynamics(&self, _: #v, _: #v, _: #v) -> #sv #body

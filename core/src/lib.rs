@@ -19,6 +19,8 @@
 //!   from one sine-cosine pair per joint; operation counts.
 //! - [`methods`]: which program computes each generated method (the expanded formulas, or a
 //!   Newton-Euler or composite-rigid-body recursion unrolled for the arm, whichever is cheaper).
+//! - [`frozen`]: methods of arms with run-time parameters split into a block of
+//!   parameter-only values, evaluated once per parameter change, and the state-dependent rest.
 //! - [`emit`] and [`generate`]: programs rendered as Rust, and the `impl PlanarArm<N>` the
 //!   derive emits.
 //!
@@ -51,6 +53,7 @@ pub use poly::{Param, Poly};
 pub use ring::{Coefficient, Rational};
 pub use trig::{Angle, Trig};
 pub mod emit;
+pub mod frozen;
 pub mod generate;
 pub mod methods;
 pub mod slp;

@@ -39,6 +39,9 @@ pub enum Input {
     TipTorque,
     /// A run-time parameter, by its index in [`Program::params`], read from the arm's field.
     Param(usize),
+    /// Slot `k` of a block of parameter-only values evaluated beforehand (see
+    /// [`frozen`](crate::frozen)).
+    Frozen(usize),
 }
 
 /// A node of a straight-line program.
@@ -132,7 +135,7 @@ impl Program {
         self.names.entry(id).or_insert(name);
     }
 
-    fn intern(&mut self, node: Node) -> Id {
+    pub(crate) fn intern(&mut self, node: Node) -> Id {
         if let Some(&id) = self.memo.get(&node) {
             return id;
         }

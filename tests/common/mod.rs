@@ -134,6 +134,30 @@ pub fn check_state<A: PlanarArm<N>, const N: usize>(
         );
     }
 
+    // The frozen view evaluates the same formulas with the parameter-only values computed
+    // once. Sums are grouped differently (`a + (b + c)` where the direct method writes
+    // `a + b + c`), so the numbers agree to rounding, not to the bit.
+    let frozen = arm.freeze();
+    let (fm, fh) = frozen.mass_matrix_and_bias(q, qd);
+    let pairs = [
+        ((frozen.mass_matrix(q) - m).amax(), "mass_matrix"),
+        ((fm - m2).amax(), "(M, h).M"),
+        ((fh - h2).amax(), "(M, h).h"),
+        ((frozen.bias(q, qd) - h).amax(), "bias"),
+        (
+            (frozen.inverse_dynamics(q, qd, qdd) - tau).amax(),
+            "inverse_dynamics",
+        ),
+    ];
+    for (diff, what) in pairs {
+        assert!(diff <= 1e-13 * scale, "frozen {what} differs by {diff}");
+    }
+    let fback = frozen.forward_dynamics(q, qd, &tau);
+    assert!(
+        (fback - back).amax() <= 1e-12 * cond.max(1.0) * (1.0 + qdd.amax()),
+        "frozen forward_dynamics: {fback} vs {back}"
+    );
+
     // Mdot - 2C is skew-symmetric; Mdot by central differences along qd.
     let h = 1e-6;
     let mdot = (arm.mass_matrix(&(q + qd * h)) - arm.mass_matrix(&(q - qd * h))) / (2.0 * h);

@@ -31,4 +31,9 @@ fn main() {
     let tau = arm.gravity(&q)[0];
     let by_hand = 9.81 * (2.0 * (0.5 * 0.3f64.cos() - 0.01 * 0.3f64.sin()) + 0.5 * 0.5 * 0.3f64.cos());
     assert!((tau - by_hand).abs() < 1e-12, "{tau} vs {by_hand}");
+    // The frozen view of a generic struct with raw-named parameters.
+    let frozen = arm.freeze();
+    let qd = SVector::<f64, 1>::new(-0.4);
+    let h = frozen.bias(&q, &qd)[0];
+    assert!((h - arm.bias(&q, &qd)[0]).abs() < 1e-12);
 }
