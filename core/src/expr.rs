@@ -32,8 +32,15 @@ impl fmt::Display for Var {
 ///
 /// Ordered by degree, then with higher powers of earlier variables first, as the paper writes
 /// `qd1^2, qd1 qd2, qd2^2`.
+///
+/// Stored as `(variable, exponent)` pairs sorted by variable, with the degree alongside: the
+/// expressions' term maps compare monomials on every insertion, and the engine runs
+/// unoptimised inside the user's compiler, so comparison must not allocate.
 #[derive(Clone, PartialEq, Eq, Hash, Debug, Default)]
-pub struct Monomial(BTreeMap<Var, u32>);
+pub struct Monomial {
+    degree: u32,
+    powers: Vec<(Var, u32)>,
+}
 
 impl PartialOrd for Monomial {
     fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
@@ -43,15 +50,32 @@ impl PartialOrd for Monomial {
 
 impl Ord for Monomial {
     fn cmp(&self, other: &Self) -> std::cmp::Ordering {
-        self.degree().cmp(&other.degree()).then_with(|| {
-            let mut vars: Vec<Var> = self.0.keys().chain(other.0.keys()).copied().collect();
-            vars.sort_unstable();
-            vars.dedup();
-            vars.iter()
-                .map(|&v| other.exponent(v).cmp(&self.exponent(v)))
-                .find(|o| o.is_ne())
-                .unwrap_or(std::cmp::Ordering::Equal)
-        })
+        use std::cmp::Ordering;
+        if self.degree != other.degree {
+            return self.degree.cmp(&other.degree);
+        }
+        // Walk both sorted lists: at the first variable whose exponents differ, the higher
+        // exponent comes first.
+        let (a, b) = (&self.powers, &other.powers);
+        let (mut i, mut j) = (0, 0);
+        loop {
+            let (ea, eb) = match (a.get(i), b.get(j)) {
+                (None, None) => return Ordering::Equal,
+                (Some(&(_, ea)), None) => (ea, 0),
+                (None, Some(&(_, eb))) => (0, eb),
+                (Some(&(va, ea)), Some(&(vb, eb))) => match va.cmp(&vb) {
+                    Ordering::Less => (ea, 0),
+                    Ordering::Greater => (0, eb),
+                    Ordering::Equal => (ea, eb),
+                },
+            };
+            if ea != eb {
+                return eb.cmp(&ea);
+            }
+            // Equal exponents mean the same variable in both (exponents are positive).
+            i += 1;
+            j += 1;
+        }
     }
 }
 
@@ -65,46 +89,82 @@ impl Monomial {
     /// A single variable.
     #[must_use]
     pub fn var(v: Var) -> Self {
-        Self(BTreeMap::from([(v, 1)]))
+        Self {
+            degree: 1,
+            powers: vec![(v, 1)],
+        }
     }
 
     /// Total degree.
     #[must_use]
     pub fn degree(&self) -> u32 {
-        self.0.values().sum()
+        self.degree
     }
 
     /// The variables and their exponents, in order.
     pub fn powers(&self) -> impl Iterator<Item = (Var, u32)> + '_ {
-        self.0.iter().map(|(&v, &e)| (v, e))
+        self.powers.iter().copied()
     }
 
     /// The exponent of `v`.
     #[must_use]
     pub fn exponent(&self, v: Var) -> u32 {
-        self.0.get(&v).copied().unwrap_or(0)
+        self.powers
+            .binary_search_by(|p| p.0.cmp(&v))
+            .map_or(0, |k| self.powers[k].1)
     }
 
     /// The product of two monomials.
     #[must_use]
     pub fn mul(&self, other: &Self) -> Self {
-        let mut out = self.0.clone();
-        for (&v, &e) in &other.0 {
-            *out.entry(v).or_insert(0) += e;
+        let (a, b) = (&self.powers, &other.powers);
+        let mut out = Vec::with_capacity(a.len() + b.len());
+        let (mut i, mut j) = (0, 0);
+        while i < a.len() || j < b.len() {
+            match (a.get(i), b.get(j)) {
+                (Some(&(va, ea)), Some(&(vb, eb))) if va == vb => {
+                    out.push((va, ea + eb));
+                    i += 1;
+                    j += 1;
+                }
+                (Some(&x), Some(&(vb, _))) if x.0 < vb => {
+                    out.push(x);
+                    i += 1;
+                }
+                (Some(&x), None) => {
+                    out.push(x);
+                    i += 1;
+                }
+                (_, Some(&y)) => {
+                    out.push(y);
+                    j += 1;
+                }
+                (None, None) => break,
+            }
         }
-        Self(out)
+        Self {
+            degree: self.degree + other.degree,
+            powers: out,
+        }
     }
 
     /// `d/dv`: `(exponent, monomial / v)`, or `None` when `v` does not occur.
     fn diff(&self, v: Var) -> Option<(u32, Self)> {
-        let e = *self.0.get(&v)?;
-        let mut out = self.0.clone();
+        let k = self.powers.binary_search_by(|p| p.0.cmp(&v)).ok()?;
+        let e = self.powers[k].1;
+        let mut out = self.powers.clone();
         if e == 1 {
-            out.remove(&v);
+            out.remove(k);
         } else {
-            out.insert(v, e - 1);
+            out[k].1 = e - 1;
         }
-        Some((e, Self(out)))
+        Some((
+            e,
+            Self {
+                degree: self.degree - 1,
+                powers: out,
+            },
+        ))
     }
 
     /// Numeric value given the rates and accelerations.
@@ -200,16 +260,18 @@ impl<C: Coefficient> Expr<C> {
         if c.is_zero() {
             return;
         }
-        let key = (monomial, trig);
-        match self.terms.remove(&key) {
-            Some(old) => {
-                let sum = old + c;
-                if !sum.is_zero() {
-                    self.terms.insert(key, sum);
+        // One search of the map, not a removal and an insertion.
+        match self.terms.entry((monomial, trig)) {
+            std::collections::btree_map::Entry::Occupied(mut e) => {
+                let sum = e.get().clone() + c;
+                if sum.is_zero() {
+                    e.remove();
+                } else {
+                    *e.get_mut() = sum;
                 }
             }
-            None => {
-                self.terms.insert(key, c);
+            std::collections::btree_map::Entry::Vacant(e) => {
+                e.insert(c);
             }
         }
     }

@@ -200,6 +200,90 @@ fn point_on_link<C: Coefficient>(arm: &ArmSpec<C>, i: usize, at: &(C, C)) -> (Ex
     (x, y)
 }
 
+/// Each body: (link, centre of mass in the link's frame, mass, inertia about the centre); the
+/// payload is a body of the last link.
+fn bodies<C: Coefficient>(arm: &ArmSpec<C>) -> Vec<(usize, (C, C), &C, &C)> {
+    let n = arm.links.len();
+    let mut bodies: Vec<(usize, (C, C), &C, &C)> = arm
+        .links
+        .iter()
+        .enumerate()
+        .map(|(i, l)| (i, l.com.clone(), &l.mass, &l.inertia))
+        .collect();
+    if let (Some(p), Some(last)) = (&arm.payload, arm.links.last()) {
+        let at = (last.length.clone() + p.com.0.clone(), p.com.1.clone());
+        bodies.push((n - 1, at, &p.mass, &p.inertia));
+    }
+    bodies
+}
+
+/// The kinetic energy, built in its pairwise form.
+///
+/// A body of link `i` has velocity `sum_a omega_a i z_a` (complex plane), `z_a = r_a e^(i theta_a)`
+/// with `r_a = l_a` for the links before it and `r_i = cx + i cy` its centre of mass, `theta_a`
+/// the absolute angle of link `a` and `omega_a` its rate. So
+/// `|v|^2 = sum_(a,b) omega_a omega_b Re(r_a conj(r_b) e^(i (theta_a - theta_b)))`, and T is a
+/// sum over pairs of links `a >= b` of `omega_a omega_b` times `A cos(theta_a - theta_b) -
+/// B sin(theta_a - theta_b)`, `A` and `B` summed over the bodies. Squaring the velocity's x
+/// and y expressions gives the same canonical expression (checked in the tests) but creates
+/// every `cos(theta_a + theta_b)` term only to cancel it, and dominated the derive's time.
+fn kinetic_energy<C: Coefficient>(arm: &ArmSpec<C>) -> Expr<C> {
+    let n = arm.links.len();
+    let zero = || C::from_rational(int(0));
+    // diag[a]: twice the coefficient of omega_a^2; cross[a][b] (a > b): (A, B).
+    let mut diag: Vec<C> = (0..n).map(|_| zero()).collect();
+    let mut cross: Vec<Vec<(C, C)>> = (0..n)
+        .map(|a| (0..a).map(|_| (zero(), zero())).collect())
+        .collect();
+    for (i, (cx, cy), mass, inertia) in bodies(arm) {
+        let m = mass.clone();
+        for a in 0..i {
+            let la = &arm.links[a].length;
+            diag[a] = diag[a].clone() + m.clone() * la.clone() * la.clone();
+            for (pair, link_b) in cross[a].iter_mut().zip(&arm.links) {
+                pair.0 = pair.0.clone() + m.clone() * la.clone() * link_b.length.clone();
+            }
+            // The body's own term: r_i conj(l_a) = (cx + i cy) l_a.
+            cross[i][a].0 = cross[i][a].0.clone() + m.clone() * cx.clone() * la.clone();
+            cross[i][a].1 = cross[i][a].1.clone() + m.clone() * cy.clone() * la.clone();
+        }
+        diag[i] = diag[i].clone()
+            + m.clone() * (cx.clone() * cx.clone() + cy.clone() * cy.clone())
+            + inertia.clone();
+    }
+    let mut omega = Expr::zero();
+    let omegas: Vec<Expr<C>> = (0..n)
+        .map(|i| {
+            omega = omega.add(&Expr::var(rate(i)));
+            omega.clone()
+        })
+        .collect();
+    let half = ratio(1, 2);
+    let mut kinetic = Expr::zero();
+    for a in 0..n {
+        if !diag[a].is_zero() {
+            let w = omegas[a].mul(&omegas[a]);
+            kinetic.add_assign(&w.scale_by(&diag[a]).scale(&half));
+        }
+        for (b, (ca, cb)) in cross[a].iter().enumerate() {
+            if ca.is_zero() && cb.is_zero() {
+                continue;
+            }
+            let angle = Angle::range(b + 1, a + 1);
+            let trig = Expr::cos(ca.clone(), angle.clone()).sub(&Expr::sin(cb.clone(), angle));
+            kinetic.add_assign(&omegas[a].mul(&omegas[b]).mul(&trig));
+        }
+    }
+    // The rotors: armature times the joint's own rate squared.
+    for (i, link) in arm.links.iter().enumerate() {
+        if !link.armature.is_zero() {
+            let qd = Expr::var(rate(i));
+            kinetic.add_assign(&qd.mul(&qd).scale_by(&link.armature).scale(&half));
+        }
+    }
+    kinetic
+}
+
 /// The end of link `i` in its own frame.
 fn link_end<C: Coefficient>(link: &LinkSpec<C>) -> (C, C) {
     (link.length.clone(), C::from_rational(int(0)))
@@ -238,40 +322,11 @@ impl<C: Coefficient> Dynamics<C> {
     #[must_use]
     pub fn derive(arm: &ArmSpec<C>) -> Self {
         let n = arm.links.len();
-        let half = ratio(1, 2);
-        let mut kinetic = Expr::zero();
+        let kinetic = kinetic_energy(arm);
         let mut potential = Expr::zero();
-        let mut omega = Expr::zero();
-        // Each body: (link, centre of mass in the link's frame, mass, inertia about the centre).
-        let mut bodies: Vec<(usize, (C, C), &C, &C)> = arm
-            .links
-            .iter()
-            .enumerate()
-            .map(|(i, l)| (i, l.com.clone(), &l.mass, &l.inertia))
-            .collect();
-        if let (Some(p), Some(last)) = (&arm.payload, arm.links.last()) {
-            let at = (last.length.clone() + p.com.0.clone(), p.com.1.clone());
-            bodies.push((n - 1, at, &p.mass, &p.inertia));
-        }
-        let omegas: Vec<Expr<C>> = (0..n)
-            .map(|i| {
-                omega = omega.add(&Expr::var(rate(i)));
-                omega.clone()
-            })
-            .collect();
-        for (i, at, mass, inertia) in bodies {
-            let (x, y) = point_on_link(arm, i, &at);
-            // Velocity of the centre of mass by the chain rule on its position.
-            let (vx, vy) = (x.dt(n), y.dt(n));
-            let v2 = vx.mul(&vx).add(&vy.mul(&vy));
-            kinetic.add_assign(&v2.scale_by(mass).scale(&half));
-            kinetic.add_assign(&omegas[i].mul(&omegas[i]).scale_by(inertia).scale(&half));
+        for (i, at, mass, _) in bodies(arm) {
+            let (_, y) = point_on_link(arm, i, &at);
             potential.add_assign(&y.scale_by(&(arm.gravity.clone() * mass.clone())));
-        }
-        // The rotors' kinetic energy: armature times the joint's own rate squared.
-        for (i, link) in arm.links.iter().enumerate() {
-            let qd = Expr::var(rate(i));
-            kinetic.add_assign(&qd.mul(&qd).scale_by(&link.armature).scale(&half));
         }
         let lagrangian = kinetic.sub(&potential);
         // M as the Hessian of T in the rates, g = dV/dq, C from Christoffel symbols of M and
@@ -457,6 +512,65 @@ mod tests {
                 // g = dV/dq
                 assert_eq!(d.gravity[i], d.potential_energy.diff_q(i));
             }
+        }
+    }
+
+    /// The kinetic energy the long way: the centres' velocities by the chain rule on their
+    /// positions, squared and summed, plus the rotations and rotors.
+    fn kinetic_energy_by_velocities<C: Coefficient>(arm: &ArmSpec<C>) -> Expr<C> {
+        let n = arm.links.len();
+        let half = ratio(1, 2);
+        let mut kinetic = Expr::zero();
+        for (i, at, mass, inertia) in bodies(arm) {
+            let (x, y) = point_on_link(arm, i, &at);
+            let (vx, vy) = (x.dt(n), y.dt(n));
+            let v2 = vx.mul(&vx).add(&vy.mul(&vy));
+            kinetic.add_assign(&v2.scale_by(mass).scale(&half));
+            let mut w = Expr::zero();
+            for j in 0..=i {
+                w = w.add(&Expr::var(rate(j)));
+            }
+            kinetic.add_assign(&w.mul(&w).scale_by(inertia).scale(&half));
+        }
+        for (i, link) in arm.links.iter().enumerate() {
+            let qd = Expr::var(rate(i));
+            kinetic.add_assign(&qd.mul(&qd).scale_by(&link.armature).scale(&half));
+        }
+        kinetic
+    }
+
+    #[test]
+    fn pairwise_kinetic_energy_is_the_squared_velocities() {
+        for n in 1..=5 {
+            let mut arm = ArmSpec::paper(n);
+            for (i, l) in arm.links.iter_mut().enumerate() {
+                let i = i as i64;
+                *l = LinkSpec {
+                    length: ratio(i + 2, 3),
+                    mass: ratio(2 * i + 1, 2),
+                    inertia: ratio(1, i + 5),
+                    com: (ratio(1 - i, i + 2), ratio(1 - i, 7)),
+                    armature: ratio(i, 10),
+                    ..LinkSpec::rod(int(1), int(1))
+                };
+            }
+            arm.payload = Some(PayloadSpec {
+                mass: ratio(3, 4),
+                inertia: ratio(1, 9),
+                com: (ratio(1, 5), ratio(-2, 7)),
+            });
+            assert_eq!(
+                kinetic_energy(&arm),
+                kinetic_energy_by_velocities(&arm),
+                "n = {n}"
+            );
+            // And over the polynomials, every value a parameter.
+            let (symbolic, _) = arm.parameterised();
+            assert_eq!(
+                kinetic_energy(&symbolic),
+                kinetic_energy_by_velocities(&symbolic),
+                "n = {n}, parameters"
+            );
         }
     }
 }
