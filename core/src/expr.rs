@@ -323,21 +323,47 @@ impl<C: Coefficient> Expr<C> {
     /// `r self` for a rational `r`.
     #[must_use]
     pub fn scale(&self, r: &Rational) -> Self {
-        let mut out = Self::zero();
-        for ((m, t), c) in &self.terms {
-            out.add_term(c.scale(r), t.clone(), m.clone());
+        if r.is_zero() {
+            return Self::zero();
         }
-        out
+        // A non-zero factor keeps every term non-zero and the order of the terms.
+        Self {
+            terms: self
+                .terms
+                .iter()
+                .map(|(k, c)| (k.clone(), c.scale(r)))
+                .collect(),
+        }
     }
 
     /// `c self` for a coefficient `c`.
     #[must_use]
     pub fn scale_by(&self, k: &C) -> Self {
-        let mut out = Self::zero();
-        for ((m, t), c) in &self.terms {
-            out.add_term(c.clone() * k.clone(), t.clone(), m.clone());
+        if k.is_zero() {
+            return Self::zero();
         }
-        out
+        // Rationals and polynomials have no zero divisors: the terms stay non-zero.
+        Self {
+            terms: self
+                .terms
+                .iter()
+                .map(|(key, c)| (key.clone(), c.clone() * k.clone()))
+                .collect(),
+        }
+    }
+
+    /// `self v` for a rate or acceleration `v`: every monomial gains the same factor, which
+    /// keeps their order, and no coefficient is multiplied.
+    #[must_use]
+    pub fn mul_var(&self, v: Var) -> Self {
+        let factor = Monomial::var(v);
+        Self {
+            terms: self
+                .terms
+                .iter()
+                .map(|((m, t), c)| ((m.mul(&factor), t.clone()), c.clone()))
+                .collect(),
+        }
     }
 
     /// `self x other`, trig products linearised.
@@ -368,6 +394,16 @@ impl<C: Coefficient> Expr<C> {
         out
     }
 
+    /// `sum_j (d/dq_j) qd_j` for `n` joints: the time derivative through the angles alone.
+    #[must_use]
+    pub fn dt_q(&self, n: usize) -> Self {
+        let mut out = Self::zero();
+        for j in 0..n {
+            out.add_assign(&self.diff_q(j).mul_var(Var::Qd(j)));
+        }
+        out
+    }
+
     /// `d/dv` for a rate or acceleration `v`.
     #[must_use]
     pub fn diff_var(&self, v: Var) -> Self {
@@ -392,8 +428,8 @@ impl<C: Coefficient> Expr<C> {
             .all(|(m, _)| m.powers().all(|(v, _)| matches!(v, Var::Qd(_)))));
         let mut out = Self::zero();
         for j in 0..n {
-            out.add_assign(&self.diff_q(j).mul(&Self::var(Var::Qd(j))));
-            out.add_assign(&self.diff_var(Var::Qd(j)).mul(&Self::var(Var::Qdd(j))));
+            out.add_assign(&self.diff_q(j).mul_var(Var::Qd(j)));
+            out.add_assign(&self.diff_var(Var::Qd(j)).mul_var(Var::Qdd(j)));
         }
         out
     }

@@ -329,32 +329,25 @@ impl<C: Coefficient> Dynamics<C> {
             potential.add_assign(&y.scale_by(&(arm.gravity.clone() * mass.clone())));
         }
         let lagrangian = kinetic.sub(&potential);
-        // M as the Hessian of T in the rates, g = dV/dq, C from Christoffel symbols of M and
-        // c = C qd: the same exact functions Lagrange's equation gives (checked against it by
-        // `lagrange_torques`), without expanding d/dt dL/dqd, the costliest step.
-        let mass_matrix: Vec<Vec<Expr<C>>> = {
-            let dt_dqd: Vec<Expr<C>> = (0..n).map(|i| kinetic.diff_var(rate(i))).collect();
-            (0..n)
-                .map(|i| (0..n).map(|j| dt_dqd[i].diff_var(rate(j))).collect())
-                .collect()
-        };
+        // M as the Hessian of T in the rates, g = dV/dq, and the velocity terms from the
+        // momenta p = dT/dqd: the same exact functions Lagrange's equation gives (checked
+        // against it by `lagrange_torques`), without expanding d/dt dL/dqd, the costliest step.
+        let momenta: Vec<Expr<C>> = (0..n).map(|i| kinetic.diff_var(rate(i))).collect();
+        let mass_matrix: Vec<Vec<Expr<C>>> = (0..n)
+            .map(|i| (0..n).map(|j| momenta[i].diff_var(rate(j))).collect())
+            .collect();
         let gravity: Vec<Expr<C>> = (0..n).map(|i| potential.diff_q(i)).collect();
-        let coriolis_matrix = christoffel(&mass_matrix);
-        let coriolis: Vec<Expr<C>> = coriolis_matrix
-            .iter()
-            .map(|row| {
-                let mut c = Expr::zero();
-                for (j, cij) in row.iter().enumerate() {
-                    c.add_assign(&cij.mul(&Expr::var(rate(j))));
-                }
-                c
-            })
+        let coriolis_matrix = coriolis_matrix(&mass_matrix, &momenta);
+        // c_i = sum_j Mdot_ij qd_j - dT/dq_i, with sum_j Mdot_ij qd_j the derivative of p_i
+        // along the angles; equal to C qd (checked in the tests).
+        let coriolis: Vec<Expr<C>> = (0..n)
+            .map(|i| momenta[i].dt_q(n).sub(&kinetic.diff_q(i)))
             .collect();
         let torques: Vec<Expr<C>> = (0..n)
             .map(|i| {
                 let mut t = coriolis[i].add(&gravity[i]);
                 for (j, mij) in mass_matrix[i].iter().enumerate() {
-                    t.add_assign(&mij.mul(&Expr::var(Var::Qdd(j))));
+                    t.add_assign(&mij.mul_var(Var::Qdd(j)));
                 }
                 t
             })
@@ -403,38 +396,22 @@ impl<C: Coefficient> Dynamics<C> {
     }
 }
 
-/// `C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k`.
-fn christoffel<C: Coefficient>(m: &[Vec<Expr<C>>]) -> Vec<Vec<Expr<C>>> {
+/// The Coriolis matrix from the Christoffel symbols of M,
+/// `C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k`, summed in closed form:
+/// `sum_k dM_ij/dq_k qd_k` is `Mdot_ij` and `sum_k dM_ik/dq_j qd_k = dp_i/dq_j` for the
+/// momentum `p_i = sum_k M_ik qd_k`, so `2 C_ij = Mdot_ij + dp_i/dq_j - dp_j/dq_i`: `n^2`
+/// derivatives instead of the `n^3` symbols (the symbol-by-symbol sum is the test's check).
+fn coriolis_matrix<C: Coefficient>(m: &[Vec<Expr<C>>], momenta: &[Expr<C>]) -> Vec<Vec<Expr<C>>> {
     let n = m.len();
     let half = ratio(1, 2);
-    // Every dM_ab/dq_k once (M is symmetric): the sum below reads each of them three times.
-    let dm: Vec<Vec<Vec<Expr<C>>>> = (0..n)
-        .map(|a| {
-            (0..n)
-                .map(|b| {
-                    if b < a {
-                        Vec::new()
-                    } else {
-                        (0..n).map(|k| m[a][b].diff_q(k)).collect()
-                    }
-                })
-                .collect()
-        })
+    let dp: Vec<Vec<Expr<C>>> = momenta
+        .iter()
+        .map(|p| (0..n).map(|j| p.diff_q(j)).collect())
         .collect();
-    let d = |a: usize, b: usize, k: usize| &dm[a.min(b)][a.max(b)][k];
     (0..n)
         .map(|i| {
             (0..n)
-                .map(|j| {
-                    let mut c = Expr::zero();
-                    for k in 0..n {
-                        let mut gamma = d(i, j, k).clone();
-                        gamma.add_assign(d(i, k, j));
-                        let gamma = gamma.sub(d(j, k, i)).scale(&half);
-                        c.add_assign(&gamma.mul(&Expr::var(rate(k))));
-                    }
-                    c
-                })
+                .map(|j| m[i][j].dt_q(n).add(&dp[i][j]).sub(&dp[j][i]).scale(&half))
                 .collect()
         })
         .collect()
@@ -502,6 +479,7 @@ mod tests {
             }
             let d = Dynamics::derive(&arm);
             assert_eq!(d.mass_matrix, d.mass_matrix_from_lagrange(), "n = {n}");
+            assert_eq!(d.coriolis_matrix, christoffel(&d.mass_matrix), "n = {n}");
             assert_eq!(d.torques, d.lagrange_torques(), "n = {n}");
             for i in 0..n {
                 let mut cqd = Expr::zero();
@@ -513,6 +491,44 @@ mod tests {
                 assert_eq!(d.gravity[i], d.potential_energy.diff_q(i));
             }
         }
+    }
+
+    /// `C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k`.
+    fn christoffel<C: Coefficient>(m: &[Vec<Expr<C>>]) -> Vec<Vec<Expr<C>>> {
+        let n = m.len();
+        let half = ratio(1, 2);
+        // Every dM_ab/dq_k once (M is symmetric): the sum below reads each of them three times.
+        let dm: Vec<Vec<Vec<Expr<C>>>> = (0..n)
+            .map(|a| {
+                (0..n)
+                    .map(|b| {
+                        if b < a {
+                            Vec::new()
+                        } else {
+                            (0..n).map(|k| m[a][b].diff_q(k)).collect()
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
+        let d = |a: usize, b: usize, k: usize| &dm[a.min(b)][a.max(b)][k];
+        (0..n)
+            .map(|i| {
+                (0..n)
+                    .map(|j| {
+                        // Twice C_ij, halved once at the end.
+                        let mut c = Expr::zero();
+                        for k in 0..n {
+                            let mut gamma = d(i, j, k).clone();
+                            gamma.add_assign(d(i, k, j));
+                            let gamma = gamma.sub(d(j, k, i));
+                            c.add_assign(&gamma.mul_var(rate(k)));
+                        }
+                        c.scale(&half)
+                    })
+                    .collect()
+            })
+            .collect()
     }
 
     /// The kinetic energy the long way: the centres' velocities by the chain rule on their

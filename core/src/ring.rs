@@ -45,7 +45,14 @@ impl Coefficient for Rational {
         Zero::is_zero(self)
     }
     fn scale(&self, r: &Rational) -> Self {
-        self * r
+        // The engine scales by 1 and -1 often (derivatives of trig atoms); skip the gcd.
+        if r.is_one() {
+            self.clone()
+        } else if (-r).is_one() {
+            -self.clone()
+        } else {
+            self * r
+        }
     }
 }
 

@@ -13,14 +13,13 @@ use crate::ring::{ratio, Rational};
 ///
 /// Ordered as the paper lists its terms: by first joint, then by last joint, so
 /// `c2 < c23 < c3`.
+///
+/// The first joint is kept alongside the coefficients: expressions are maps keyed by atoms,
+/// compared on every insertion, and the engine runs unoptimised inside the user's compiler.
 #[derive(Clone, PartialEq, Eq, Hash, Debug, Default)]
-pub struct Angle(Vec<i32>);
-
-impl Angle {
-    fn order_key(&self) -> (usize, usize, &[i32]) {
-        let first = self.0.iter().position(|&c| c != 0).unwrap_or(0);
-        (first, self.0.len(), &self.0)
-    }
+pub struct Angle {
+    first: usize,
+    coefficients: Vec<i32>,
 }
 
 impl PartialOrd for Angle {
@@ -31,7 +30,9 @@ impl PartialOrd for Angle {
 
 impl Ord for Angle {
     fn cmp(&self, other: &Self) -> core::cmp::Ordering {
-        self.order_key().cmp(&other.order_key())
+        (self.first, self.coefficients.len())
+            .cmp(&(other.first, other.coefficients.len()))
+            .then_with(|| self.coefficients.cmp(&other.coefficients))
     }
 }
 
@@ -42,7 +43,11 @@ impl Angle {
         while coefficients.last() == Some(&0) {
             coefficients.pop();
         }
-        Self(coefficients)
+        let first = coefficients.iter().position(|&c| c != 0).unwrap_or(0);
+        Self {
+            first,
+            coefficients,
+        }
     }
 
     /// `q_{from+1} + ... + q_{to}` (0-based joint indices `from..to`).
@@ -58,23 +63,23 @@ impl Angle {
     /// The coefficient of joint `j` (0-based).
     #[must_use]
     pub fn coefficient(&self, j: usize) -> i32 {
-        self.0.get(j).copied().unwrap_or(0)
+        self.coefficients.get(j).copied().unwrap_or(0)
     }
 
     /// The coefficients, index 0 is q1, trailing zeros trimmed.
     #[must_use]
     pub fn coefficients(&self) -> &[i32] {
-        &self.0
+        &self.coefficients
     }
 
     /// Whether this is the zero angle.
     #[must_use]
     pub fn is_zero(&self) -> bool {
-        self.0.is_empty()
+        self.coefficients.is_empty()
     }
 
     fn combine(&self, other: &Self, sign: i32) -> Self {
-        let n = self.0.len().max(other.0.len());
+        let n = self.coefficients.len().max(other.coefficients.len());
         Self::new(
             (0..n)
                 .map(|j| self.coefficient(j) + sign * other.coefficient(j))
@@ -84,19 +89,26 @@ impl Angle {
 
     /// `(s, a)` with `self = s a`, `s = +-1` and `a` canonical (first non-zero coefficient positive).
     fn canonical(self) -> (i32, Self) {
-        match self.0.iter().find(|&&c| c != 0) {
-            Some(&c) if c < 0 => (-1, Self(self.0.iter().map(|c| -c).collect())),
+        match self.coefficients.iter().find(|&&c| c != 0) {
+            Some(&c) if c < 0 => (
+                -1,
+                Self {
+                    first: self.first,
+                    coefficients: self.coefficients.iter().map(|c| -c).collect(),
+                },
+            ),
             _ => (1, self),
         }
     }
 
     /// The paper's subscript for a contiguous run of unit coefficients (`q2 + q3` is `23`).
     fn paper_subscript(&self) -> Option<String> {
-        let first = self.0.iter().position(|&c| c != 0)?;
-        self.0[first..]
-            .iter()
-            .all(|&c| c == 1)
-            .then(|| (first + 1..=self.0.len()).map(|j| j.to_string()).collect())
+        let first = self.coefficients.iter().position(|&c| c != 0)?;
+        self.coefficients[first..].iter().all(|&c| c == 1).then(|| {
+            (first + 1..=self.coefficients.len())
+                .map(|j| j.to_string())
+                .collect()
+        })
     }
 
     /// A short identifier fragment: `23` for `q2 + q3`, `1m2` for `q1 - q2`, `2x2` for `2 q2`.
@@ -106,7 +118,7 @@ impl Angle {
             return s;
         }
         let mut out = String::new();
-        for (j, &c) in self.0.iter().enumerate() {
+        for (j, &c) in self.coefficients.iter().enumerate() {
             if c == 0 {
                 continue;
             }
@@ -128,7 +140,12 @@ impl fmt::Display for Angle {
             return write!(f, "0");
         }
         let mut first = true;
-        for (j, &c) in self.0.iter().enumerate().filter(|(_, c)| **c != 0) {
+        for (j, &c) in self
+            .coefficients
+            .iter()
+            .enumerate()
+            .filter(|(_, c)| **c != 0)
+        {
             match (first, c < 0) {
                 (true, true) => write!(f, "-")?,
                 (true, false) => {}
@@ -231,7 +248,13 @@ impl Trig {
     /// Numeric value at joint angles `q`.
     #[must_use]
     pub fn eval(&self, q: &[f64]) -> f64 {
-        let angle = |a: &Angle| -> f64 { a.0.iter().zip(q).map(|(&k, &x)| f64::from(k) * x).sum() };
+        let angle = |a: &Angle| -> f64 {
+            a.coefficients
+                .iter()
+                .zip(q)
+                .map(|(&k, &x)| f64::from(k) * x)
+                .sum()
+        };
         match self {
             Trig::One => 1.0,
             Trig::Cos(a) => angle(a).cos(),
