@@ -5,7 +5,6 @@ pub use crate::trig::sin_cos;
 pub use ::core;
 pub use ::nalgebra;
 
-use crate::exact::{Rational, Term, Trig, Var};
 use nalgebra::{Isometry2, SMatrix, SVector, Translation2, UnitComplex};
 
 #[inline(always)]
@@ -45,29 +44,10 @@ pub fn polar(r2: f64, x: f64, y: f64) -> (f64, f64) {
     (r2.max(0.0).sqrt(), y.atan2(x))
 }
 
-pub use crate::exact::Var::{Qd, Qdd};
-
-/// One exact term; `kind` 0, 1, 2 is `1`, `cos`, `sin`.
+/// A stored sum of exact terms (see `exact`).
 #[must_use]
-pub const fn term(
-    numer: i128,
-    denom: i128,
-    kind: u8,
-    angle: &'static [i32],
-    powers: &'static [(Var, u32)],
-    params: &'static [(&'static str, u32)],
-) -> Term {
-    let trig = match kind {
-        0 => Trig::One,
-        1 => Trig::Cos(angle),
-        _ => Trig::Sin(angle),
-    };
-    Term {
-        coeff: Rational::new(numer, denom),
-        trig,
-        powers,
-        params,
-    }
+pub const fn terms(code: &'static [u8], names: &'static [&'static str]) -> crate::exact::Terms {
+    crate::exact::Terms::from_code(code, names)
 }
 
 /// The sign for Coulomb friction: 0 at zero (unlike `f64::signum`), NaN for NaN.

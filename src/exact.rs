@@ -19,10 +19,19 @@
 //! }
 //!
 //! // M11 = 5/3 + cos q2 for the paper's two equal rods (m = l = 1).
-//! const M11: &[planar_arm::exact::Term] = <Paper2 as PlanarArm<2>>::EXACT.mass_matrix[0][0];
+//! const M11: planar_arm::exact::Terms = <Paper2 as PlanarArm<2>>::EXACT.mass_matrix[0][0];
 //! const _: () = assert!(constant_term(M11).eq(Rational::new(5, 3)));
 //! const _: () = assert!(cos_coefficient(M11, &[0, 1]).eq(Rational::new(1, 1)));
+//! assert_eq!(M11.to_string(), "5/3 + cos(q2)");
 //! ```
+//!
+//! # Storage
+//!
+//! Each sum is one byte-string literal ([`Terms`]), decoded on reading: a ten-link arm's
+//! derivation has about 8,000 terms, and as a `const` slice of structs (one constructor call
+//! per term) it cost the user's compiler more time and memory than everything else the derive
+//! emits together (docs/performance.md). The encoding is private; [`Terms`] reads it, in
+//! `const` contexts too ([`constant_term`], [`cos_coefficient`], [`sin_coefficient`]).
 
 /// An exact fraction with `i128` parts, reduced, denominator positive.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -102,17 +111,6 @@ impl core::fmt::Display for Rational {
     }
 }
 
-/// A trigonometric atom: `1`, `cos(k . q)` or `sin(k . q)`; `k[0]` multiplies q1.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Trig {
-    /// The constant 1.
-    One,
-    /// `cos(k . q)`.
-    Cos(&'static [i32]),
-    /// `sin(k . q)`.
-    Sin(&'static [i32]),
-}
-
 /// A joint rate or acceleration (0-based joint).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Var {
@@ -120,6 +118,478 @@ pub enum Var {
     Qd(usize),
     /// `qdd[j]`.
     Qdd(usize),
+}
+
+/// The digits of the encoding: printable, so the literal needs no escapes.
+const fn digit(c: u8) -> u128 {
+    (match c {
+        b'A'..=b'Z' => c - b'A',
+        b'a'..=b'z' => c - b'a' + 26,
+        b'0'..=b'9' => c - b'0' + 52,
+        b'+' => 62,
+        _ => 63,
+    }) as u128
+}
+
+/// A number at `pos`: five bits per digit, low bits first, bit 5 set when more follow.
+const fn read(code: &[u8], mut pos: usize) -> (u128, usize) {
+    let mut value = 0u128;
+    let mut shift = 0;
+    loop {
+        let d = digit(code[pos]);
+        pos += 1;
+        if shift < 128 {
+            value |= (d & 31) << shift;
+        }
+        shift += 5;
+        if d & 32 == 0 {
+            return (value, pos);
+        }
+    }
+}
+
+/// A signed number (zigzag: 0, -1, 1, -2, ... as 0, 1, 2, 3, ...).
+#[allow(clippy::cast_possible_wrap)]
+const fn read_signed(code: &[u8], pos: usize) -> (i128, usize) {
+    let (v, pos) = read(code, pos);
+    (((v >> 1) as i128) ^ -((v & 1) as i128), pos)
+}
+
+/// A count or a small number.
+#[allow(clippy::cast_possible_truncation)]
+const fn read_small(code: &[u8], pos: usize) -> (usize, usize) {
+    let (v, pos) = read(code, pos);
+    (v as usize, pos)
+}
+
+/// Skips `count` pairs of numbers.
+const fn skip_pairs(code: &[u8], mut pos: usize, count: usize) -> usize {
+    let mut k = 0;
+    while k < 2 * count {
+        pos = read(code, pos).1;
+        k += 1;
+    }
+    pos
+}
+
+/// Where each part of the term at `pos` starts.
+#[derive(Clone, Copy)]
+struct Layout {
+    kind: usize,
+    coeff: Rational,
+    angle: usize,
+    angle_len: usize,
+    powers: usize,
+    powers_len: usize,
+    params: usize,
+    params_len: usize,
+    end: usize,
+}
+
+const fn layout(code: &[u8], pos: usize) -> Layout {
+    let (kind, pos) = read_small(code, pos);
+    let (numer, pos) = read_signed(code, pos);
+    let (denom, pos) = read_signed(code, pos);
+    let (angle_len, mut angle) = if kind == 0 {
+        (0, pos)
+    } else {
+        read_small(code, pos)
+    };
+    let mut pos = angle;
+    let mut k = 0;
+    while k < angle_len {
+        pos = read(code, pos).1;
+        k += 1;
+    }
+    let (powers_len, powers) = read_small(code, pos);
+    let pos = skip_pairs(code, powers, powers_len);
+    let (params_len, params) = read_small(code, pos);
+    let end = skip_pairs(code, params, params_len);
+    if angle_len == 0 {
+        angle = pos;
+    }
+    Layout {
+        kind,
+        coeff: Rational { numer, denom },
+        angle,
+        angle_len,
+        powers,
+        powers_len,
+        params,
+        params_len,
+        end,
+    }
+}
+
+/// A sum of exact terms, as stored in [`Derivation`]: iterate it for its [`Term`]s, or read
+/// coefficients in `const` contexts with [`constant_term`] and [`cos_coefficient`].
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Terms {
+    code: &'static [u8],
+    names: &'static [&'static str],
+}
+
+impl Terms {
+    /// The sum stored in `code` (the derive's encoding), its run-time parameters named by
+    /// index into `names`.
+    #[doc(hidden)]
+    #[must_use]
+    pub const fn from_code(code: &'static [u8], names: &'static [&'static str]) -> Self {
+        Self { code, names }
+    }
+
+    /// Whether the sum has no term (it is zero).
+    #[must_use]
+    pub const fn is_empty(&self) -> bool {
+        self.code.is_empty()
+    }
+
+    /// The number of terms.
+    #[must_use]
+    pub const fn len(&self) -> usize {
+        let (mut pos, mut count) = (0, 0);
+        while pos < self.code.len() {
+            pos = layout(self.code, pos).end;
+            count += 1;
+        }
+        count
+    }
+
+    /// The terms, in the engine's canonical order.
+    #[must_use]
+    pub fn iter(&self) -> TermIter {
+        TermIter {
+            terms: *self,
+            pos: 0,
+        }
+    }
+}
+
+impl IntoIterator for Terms {
+    type Item = Term;
+    type IntoIter = TermIter;
+    fn into_iter(self) -> TermIter {
+        self.iter()
+    }
+}
+
+/// The terms of a [`Terms`].
+#[derive(Clone, Debug)]
+pub struct TermIter {
+    terms: Terms,
+    pos: usize,
+}
+
+impl Iterator for TermIter {
+    type Item = Term;
+    fn next(&mut self) -> Option<Term> {
+        let code = self.terms.code;
+        if self.pos >= code.len() {
+            return None;
+        }
+        let l = layout(code, self.pos);
+        self.pos = l.end;
+        let angle = Angle {
+            code,
+            pos: l.angle,
+            len: l.angle_len,
+        };
+        let trig = match l.kind {
+            0 => Trig::One,
+            1 => Trig::Cos(angle),
+            _ => Trig::Sin(angle),
+        };
+        Some(Term {
+            coeff: l.coeff,
+            trig,
+            powers: Powers {
+                code,
+                pos: l.powers,
+                len: l.powers_len,
+            },
+            params: Params {
+                code,
+                pos: l.params,
+                len: l.params_len,
+                names: self.terms.names,
+            },
+        })
+    }
+}
+
+impl core::fmt::Debug for Terms {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_list().entries(self.iter()).finish()
+    }
+}
+
+impl core::fmt::Display for Terms {
+    /// `5/3 + cos(q2) - 1/2 m2 sin(q2 + q3) qd1 qd2`.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let mut first = true;
+        for t in self.iter() {
+            let negative = t.coeff.numer < 0;
+            match (first, negative) {
+                (true, true) => write!(f, "-")?,
+                (true, false) => {}
+                (false, true) => write!(f, " - ")?,
+                (false, false) => write!(f, " + ")?,
+            }
+            first = false;
+            let magnitude = Rational {
+                numer: t.coeff.numer.abs(),
+                denom: t.coeff.denom,
+            };
+            let mut factors = 0;
+            if magnitude.numer != magnitude.denom {
+                write!(f, "{magnitude}")?;
+                factors += 1;
+            }
+            let mut sep = |f: &mut core::fmt::Formatter<'_>| {
+                factors += 1;
+                if factors > 1 {
+                    write!(f, " ")
+                } else {
+                    Ok(())
+                }
+            };
+            for (name, e) in t.params {
+                sep(f)?;
+                write!(f, "{name}")?;
+                if e > 1 {
+                    write!(f, "^{e}")?;
+                }
+            }
+            if let Trig::Cos(a) | Trig::Sin(a) = t.trig {
+                sep(f)?;
+                let fun = if matches!(t.trig, Trig::Cos(_)) {
+                    "cos"
+                } else {
+                    "sin"
+                };
+                write!(f, "{fun}({a})")?;
+            }
+            for (v, e) in t.powers {
+                sep(f)?;
+                match v {
+                    Var::Qd(j) => write!(f, "qd{}", j + 1)?,
+                    Var::Qdd(j) => write!(f, "qdd{}", j + 1)?,
+                }
+                if e > 1 {
+                    write!(f, "^{e}")?;
+                }
+            }
+            if factors == 0 {
+                write!(f, "1")?;
+            }
+        }
+        if first {
+            write!(f, "0")?;
+        }
+        Ok(())
+    }
+}
+
+/// An integer combination of joint angles, `k . q`, with `k[0]` multiplying q1.
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Angle {
+    code: &'static [u8],
+    pos: usize,
+    len: usize,
+}
+
+impl Angle {
+    /// The coefficients `k`, q1's first, trailing zeros trimmed.
+    pub fn coefficients(&self) -> impl Iterator<Item = i32> + '_ {
+        let mut pos = self.pos;
+        (0..self.len).map(move |_| {
+            let (k, next) = read_signed(self.code, pos);
+            pos = next;
+            i32::try_from(k).unwrap_or(0)
+        })
+    }
+
+    /// Whether the coefficients are `k`.
+    #[must_use]
+    pub const fn is(&self, k: &[i32]) -> bool {
+        if k.len() != self.len {
+            return false;
+        }
+        let mut pos = self.pos;
+        let mut j = 0;
+        while j < self.len {
+            let (c, next) = read_signed(self.code, pos);
+            if c != k[j] as i128 {
+                return false;
+            }
+            pos = next;
+            j += 1;
+        }
+        true
+    }
+
+    /// The angle's value at `q`.
+    #[must_use]
+    pub fn eval(&self, q: &[f64]) -> f64 {
+        self.coefficients()
+            .zip(q)
+            .map(|(k, &x)| f64::from(k) * x)
+            .sum()
+    }
+}
+
+impl core::fmt::Debug for Angle {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_list().entries(self.coefficients()).finish()
+    }
+}
+
+impl core::fmt::Display for Angle {
+    /// `q2 + q3`, `q1 - 2 q2`.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let mut first = true;
+        for (j, k) in self.coefficients().enumerate().filter(|&(_, k)| k != 0) {
+            match (first, k < 0) {
+                (true, true) => write!(f, "-")?,
+                (true, false) => {}
+                (false, true) => write!(f, " - ")?,
+                (false, false) => write!(f, " + ")?,
+            }
+            first = false;
+            if k.abs() != 1 {
+                write!(f, "{} ", k.abs())?;
+            }
+            write!(f, "q{}", j + 1)?;
+        }
+        Ok(())
+    }
+}
+
+/// A trigonometric atom: `1`, `cos(k . q)` or `sin(k . q)`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Trig {
+    /// The constant 1.
+    One,
+    /// `cos(k . q)`.
+    Cos(Angle),
+    /// `sin(k . q)`.
+    Sin(Angle),
+}
+
+/// Rates and accelerations with their exponents.
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Powers {
+    code: &'static [u8],
+    pos: usize,
+    len: usize,
+}
+
+impl Powers {
+    /// Whether there is none (the term is a function of `q` alone).
+    #[must_use]
+    pub const fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+}
+
+impl IntoIterator for Powers {
+    type Item = (Var, u32);
+    type IntoIter = PairIter<(Var, u32)>;
+    fn into_iter(self) -> Self::IntoIter {
+        PairIter {
+            code: self.code,
+            pos: self.pos,
+            left: self.len,
+            make: |v, e, _| {
+                let j = usize::try_from(v / 2).unwrap_or(usize::MAX);
+                let var = if v % 2 == 0 { Var::Qd(j) } else { Var::Qdd(j) };
+                (var, u32::try_from(e).unwrap_or(u32::MAX))
+            },
+            names: &[],
+        }
+    }
+}
+
+impl core::fmt::Debug for Powers {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_list().entries(*self).finish()
+    }
+}
+
+/// Run-time parameters (the arm's `f64` fields named by `self.NAME`) with their exponents.
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Params {
+    code: &'static [u8],
+    pos: usize,
+    len: usize,
+    names: &'static [&'static str],
+}
+
+impl Params {
+    /// Whether there is none (the coefficient is a number).
+    #[must_use]
+    pub const fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+}
+
+impl IntoIterator for Params {
+    type Item = (&'static str, u32);
+    type IntoIter = PairIter<(&'static str, u32)>;
+    fn into_iter(self) -> Self::IntoIter {
+        PairIter {
+            code: self.code,
+            pos: self.pos,
+            left: self.len,
+            make: |k, e, names| {
+                let name = usize::try_from(k)
+                    .ok()
+                    .and_then(|k| names.get(k))
+                    .copied()
+                    .unwrap_or("?");
+                (name, u32::try_from(e).unwrap_or(u32::MAX))
+            },
+            names: self.names,
+        }
+    }
+}
+
+impl core::fmt::Debug for Params {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_list().entries(*self).finish()
+    }
+}
+
+/// The pairs of [`Powers`] or [`Params`].
+#[derive(Clone)]
+pub struct PairIter<T> {
+    code: &'static [u8],
+    pos: usize,
+    left: usize,
+    make: fn(u128, u128, &'static [&'static str]) -> T,
+    names: &'static [&'static str],
+}
+
+impl<T> core::fmt::Debug for PairIter<T> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("PairIter")
+            .field("left", &self.left)
+            .finish()
+    }
+}
+
+impl<T> Iterator for PairIter<T> {
+    type Item = T;
+    fn next(&mut self) -> Option<T> {
+        if self.left == 0 {
+            return None;
+        }
+        self.left -= 1;
+        let (a, pos) = read(self.code, self.pos);
+        let (b, pos) = read(self.code, pos);
+        self.pos = pos;
+        Some((self.make)(a, b, self.names))
+    }
 }
 
 /// One term `coeff x params x trig x product of powers`.
@@ -130,10 +600,10 @@ pub struct Term {
     /// The trigonometric atom.
     pub trig: Trig,
     /// Rates and accelerations with their exponents (empty for a function of `q` alone).
-    pub powers: &'static [(Var, u32)],
-    /// Run-time parameters (the arm's `f64` fields named by `self.NAME`) with their
-    /// exponents; empty for a term whose coefficient is a number.
-    pub params: &'static [(&'static str, u32)],
+    pub powers: Powers,
+    /// Run-time parameters with their exponents; empty for a term whose coefficient is a
+    /// number.
+    pub params: Params,
 }
 
 impl Term {
@@ -147,24 +617,23 @@ impl Term {
     /// The term's value, each run-time parameter's value given by `param(name)`.
     #[must_use]
     pub fn eval_with(&self, q: &[f64], qd: &[f64], param: &dyn Fn(&str) -> f64) -> f64 {
-        let angle = |k: &[i32]| -> f64 { k.iter().zip(q).map(|(&k, &x)| f64::from(k) * x).sum() };
         let t = match self.trig {
             Trig::One => 1.0,
-            Trig::Cos(k) => angle(k).cos(),
-            Trig::Sin(k) => angle(k).sin(),
+            Trig::Cos(a) => a.eval(q).cos(),
+            Trig::Sin(a) => a.eval(q).sin(),
         };
         let m: f64 = self
             .powers
-            .iter()
-            .map(|&(v, e)| match v {
+            .into_iter()
+            .map(|(v, e)| match v {
                 Var::Qd(j) => qd[j].powi(i32::try_from(e).unwrap_or(i32::MAX)),
                 Var::Qdd(_) => f64::NAN,
             })
             .product();
         let k: f64 = self
             .params
-            .iter()
-            .map(|&(name, e)| param(name).powi(i32::try_from(e).unwrap_or(i32::MAX)))
+            .into_iter()
+            .map(|(name, e)| param(name).powi(i32::try_from(e).unwrap_or(i32::MAX)))
             .product();
         self.coeff.to_f64() * k * t * m
     }
@@ -174,91 +643,68 @@ impl Term {
 #[derive(Clone, Copy, Debug)]
 pub struct Derivation<const N: usize> {
     /// Kinetic energy T(q, qd).
-    pub kinetic_energy: &'static [Term],
+    pub kinetic_energy: Terms,
     /// Potential energy V(q).
-    pub potential_energy: &'static [Term],
+    pub potential_energy: Terms,
     /// The mass matrix, row-major (both triangles).
-    pub mass_matrix: [[&'static [Term]; N]; N],
+    pub mass_matrix: [[Terms; N]; N],
     /// The velocity-product torques c(q, qd).
-    pub coriolis: [&'static [Term]; N],
+    pub coriolis: [Terms; N],
     /// The gravity torques g(q).
-    pub gravity: [&'static [Term]; N],
+    pub gravity: [Terms; N],
 }
 
-const fn same_angle(a: &[i32], b: &[i32]) -> bool {
-    if a.len() != b.len() {
-        return false;
-    }
-    let mut i = 0;
-    while i < a.len() {
-        if a[i] != b[i] {
-            return false;
+/// The coefficient of the first term (no rates, no run-time parameter) whose atom is `1`
+/// (`kind` 0), `cos(angle . q)` (1) or `sin(angle . q)` (2); zero if absent.
+const fn coefficient(terms: Terms, kind: usize, angle: &[i32]) -> Rational {
+    let code = terms.code;
+    let mut pos = 0;
+    while pos < code.len() {
+        let l = layout(code, pos);
+        if l.kind == kind && l.powers_len == 0 && l.params_len == 0 {
+            let a = Angle {
+                code,
+                pos: l.angle,
+                len: l.angle_len,
+            };
+            if kind == 0 || a.is(angle) {
+                return l.coeff;
+            }
         }
-        i += 1;
+        pos = l.end;
     }
-    true
+    Rational::ZERO
 }
 
 /// The constant term (atom `1`, no rates, no run-time parameter) of a sum; zero if absent.
 #[must_use]
-pub const fn constant_term(terms: &[Term]) -> Rational {
-    let mut i = 0;
-    while i < terms.len() {
-        if matches!(terms[i].trig, Trig::One)
-            && terms[i].powers.is_empty()
-            && terms[i].params.is_empty()
-        {
-            return terms[i].coeff;
-        }
-        i += 1;
-    }
-    Rational::ZERO
-}
-
-/// The coefficient of the atom `trig` (no rates, no run-time parameter) in a sum; zero if
-/// absent.
-const fn coefficient(terms: &[Term], cos: bool, angle: &[i32]) -> Rational {
-    let mut i = 0;
-    while i < terms.len() {
-        let k = match (terms[i].trig, cos) {
-            (Trig::Cos(k), true) | (Trig::Sin(k), false) => k,
-            _ => &[],
-        };
-        if !k.is_empty()
-            && same_angle(k, angle)
-            && terms[i].powers.is_empty()
-            && terms[i].params.is_empty()
-        {
-            return terms[i].coeff;
-        }
-        i += 1;
-    }
-    Rational::ZERO
+pub const fn constant_term(terms: Terms) -> Rational {
+    coefficient(terms, 0, &[])
 }
 
 /// The coefficient of `cos(angle . q)` (no rates) in a sum; zero if absent. `angle` has its
 /// trailing zeros trimmed and its first non-zero entry positive, as the engine stores it.
 #[must_use]
-pub const fn cos_coefficient(terms: &[Term], angle: &[i32]) -> Rational {
-    coefficient(terms, true, angle)
+pub const fn cos_coefficient(terms: Terms, angle: &[i32]) -> Rational {
+    coefficient(terms, 1, angle)
 }
 
 /// The coefficient of `sin(angle . q)` (no rates) in a sum; zero if absent.
 #[must_use]
-pub const fn sin_coefficient(terms: &[Term], angle: &[i32]) -> Rational {
-    coefficient(terms, false, angle)
+pub const fn sin_coefficient(terms: Terms, angle: &[i32]) -> Rational {
+    coefficient(terms, 2, angle)
 }
 
 /// The value of a sum of terms at `(q, qd)` (NaN if a term has run-time parameters: use
 /// [`eval_with`]).
 #[must_use]
-pub fn eval(terms: &[Term], q: &[f64], qd: &[f64]) -> f64 {
+pub fn eval(terms: Terms, q: &[f64], qd: &[f64]) -> f64 {
     terms.iter().map(|t| t.eval(q, qd)).sum()
 }
 
 /// The value of a sum of terms at `(q, qd)`, each run-time parameter's value given by
 /// `param(name)`.
 #[must_use]
-pub fn eval_with(terms: &[Term], q: &[f64], qd: &[f64], param: &dyn Fn(&str) -> f64) -> f64 {
+pub fn eval_with(terms: Terms, q: &[f64], qd: &[f64], param: &dyn Fn(&str) -> f64) -> f64 {
     terms.iter().map(|t| t.eval_with(q, qd, param)).sum()
 }

@@ -15,7 +15,7 @@
 
 use std::ops::{Add, Mul, Neg, Sub};
 
-use planar_arm::exact::{constant_term, cos_coefficient, Rational as ConstRational, Term};
+use planar_arm::exact::{constant_term, cos_coefficient, Rational as ConstRational, Terms};
 use planar_arm::kinematics::{ik3, DexterousWorkspace};
 use planar_arm::prelude::*;
 use planar_arm::symbolic::ring::{int, ratio};
@@ -335,9 +335,9 @@ struct ShortHand {
 // ---------------------------------------------------------------------------------------------
 // Compile-time checks on the derived arms' exact data (`PlanarArm::EXACT`).
 
-const PAPER3_M12: &[Term] = <Paper3 as PlanarArm<3>>::EXACT.mass_matrix[0][1];
-const PAPER3_M33: &[Term] = <Paper3 as PlanarArm<3>>::EXACT.mass_matrix[2][2];
-const PAPER2_M22: &[Term] = <Paper2 as PlanarArm<2>>::EXACT.mass_matrix[1][1];
+const PAPER3_M12: Terms = <Paper3 as PlanarArm<3>>::EXACT.mass_matrix[0][1];
+const PAPER3_M33: Terms = <Paper3 as PlanarArm<3>>::EXACT.mass_matrix[2][2];
+const PAPER2_M22: Terms = <Paper2 as PlanarArm<2>>::EXACT.mass_matrix[1][1];
 
 /// `2 x` (the paper's primed units), in a const context.
 const fn twice(x: ConstRational) -> ConstRational {

@@ -11,10 +11,8 @@ use crate::emit::{
 };
 use crate::expr::Expr;
 use crate::methods::{Derived, Method};
-use crate::ring::to_i128_pair;
 use crate::slp::Emit;
 use crate::slp::Input;
-use crate::trig::Trig;
 
 /// The pieces of the user's type that the impl header needs.
 pub struct Header {
@@ -176,38 +174,12 @@ fn vector(ids: &[proc_macro2::Ident]) -> TokenStream {
     quote!(::planar_arm::__private::vector([#(#ids),*]))
 }
 
-fn exact_terms<C: Emit>(e: &Expr<C>) -> Result<TokenStream, EmitError> {
-    let mut terms = Vec::new();
-    for (m, t, coeff) in e.terms() {
-        for (pm, c) in coeff.parts() {
-            let c = &c;
-            let (num, den) = to_i128_pair(c).ok_or_else(|| EmitError {
-                message: format!("exact coefficient {c} does not fit in i128"),
-            })?;
-            let (num, den) = (Literal::i128_unsuffixed(num), Literal::i128_unsuffixed(den));
-            let (kind, angle) = match t {
-                Trig::One => (0u8, &[][..]),
-                Trig::Cos(a) => (1, a.coefficients()),
-                Trig::Sin(a) => (2, a.coefficients()),
-            };
-            let kind = Literal::u8_unsuffixed(kind);
-            let angle = angle.iter().map(|&k| Literal::i32_unsuffixed(k));
-            let powers = m.powers().map(|(v, e)| {
-                let (k, j) = match v {
-                    crate::expr::Var::Qd(j) => (quote!(Qd), j),
-                    crate::expr::Var::Qdd(j) => (quote!(Qdd), j),
-                };
-                let (j, e) = (Literal::usize_unsuffixed(j), Literal::u32_unsuffixed(e));
-                quote!((::planar_arm::__private::#k(#j), #e))
-            });
-            let params = pm.powers().iter().map(|(p, e)| {
-                let (name, e) = (p.name(), Literal::u32_unsuffixed(*e));
-                quote!((#name, #e))
-            });
-            terms.push(quote!(::planar_arm::__private::term(#num, #den, #kind, &[#(#angle),*], &[#(#powers),*], &[#(#params),*])));
-        }
-    }
-    Ok(quote!(&[#(#terms),*]))
+/// `::planar_arm::__private::terms(b"...", __NAMES)`: the sum in the compact encoding of
+/// [`crate::compact`], its parameters named by index into the `EXACT` block's name table.
+fn exact_terms<C: Emit>(e: &Expr<C>, names: &mut Vec<String>) -> Result<TokenStream, EmitError> {
+    let code = Literal::byte_string(&crate::compact::encode(e, names)?);
+    let table = local("NAMES");
+    Ok(quote!(::planar_arm::__private::terms(#code, #table)))
 }
 
 /// `::planar_arm::Model { ... }` with the arm's values, read from `self` where they are
@@ -567,26 +539,27 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     }
 
     let model = model_tokens(d)?;
-    let m_exact = dy
-        .mass_matrix
-        .iter()
-        .map(|row| {
-            let row = row.iter().map(exact_terms).collect::<Result<Vec<_>, _>>()?;
-            Ok(quote!([#(#row),*]))
-        })
-        .collect::<Result<Vec<_>, EmitError>>()?;
+    let mut names = Vec::new();
+    let mut exact = |e: &Expr<C>| exact_terms(e, &mut names);
+    let t_exact = exact(&dy.kinetic_energy)?;
+    let v_exact = exact(&dy.potential_energy)?;
+    let mut m_exact = Vec::new();
+    for row in &dy.mass_matrix {
+        let row = row.iter().map(&mut exact).collect::<Result<Vec<_>, _>>()?;
+        m_exact.push(quote!([#(#row),*]));
+    }
     let c_exact = dy
         .coriolis
         .iter()
-        .map(exact_terms)
+        .map(&mut exact)
         .collect::<Result<Vec<_>, _>>()?;
     let g_exact = dy
         .gravity
         .iter()
-        .map(exact_terms)
+        .map(&mut exact)
         .collect::<Result<Vec<_>, _>>()?;
-    let t_exact = exact_terms(&dy.kinetic_energy)?;
-    let v_exact = exact_terms(&dy.potential_energy)?;
+    let table = local("NAMES");
+    let names = names.iter().map(|n| n.trim_start_matches("r#"));
     let Header {
         impl_generics,
         ty,
@@ -596,12 +569,15 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     Ok(quote! {
         #[automatically_derived]
         impl #impl_generics ::planar_arm::PlanarArm<#nn> for #ty #where_clause {
-            const EXACT: ::planar_arm::exact::Derivation<#nn> = ::planar_arm::exact::Derivation {
-                kinetic_energy: #t_exact,
-                potential_energy: #v_exact,
-                mass_matrix: [#(#m_exact),*],
-                coriolis: [#(#c_exact),*],
-                gravity: [#(#g_exact),*],
+            const EXACT: ::planar_arm::exact::Derivation<#nn> = {
+                const #table: &[&str] = &[#(#names),*];
+                ::planar_arm::exact::Derivation {
+                    kinetic_energy: #t_exact,
+                    potential_energy: #v_exact,
+                    mass_matrix: [#(#m_exact),*],
+                    coriolis: [#(#c_exact),*],
+                    gravity: [#(#g_exact),*],
+                }
             };
             #[inline]
             fn model(&self) -> ::planar_arm::Model<#nn> {
@@ -731,11 +707,11 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
         #[automatically_derived]
         impl #impl_generics ::planar_arm::PlanarArm<#nn> for #ty #where_clause {
             const EXACT: ::planar_arm::exact::Derivation<#nn> = ::planar_arm::exact::Derivation {
-                kinetic_energy: &[],
-                potential_energy: &[],
-                mass_matrix: [[&[]; #nn]; #nn],
-                coriolis: [&[]; #nn],
-                gravity: [&[]; #nn],
+                kinetic_energy: ::planar_arm::__private::terms(b"", &[]),
+                potential_energy: ::planar_arm::__private::terms(b"", &[]),
+                mass_matrix: [[::planar_arm::__private::terms(b"", &[]); #nn]; #nn],
+                coriolis: [::planar_arm::__private::terms(b"", &[]); #nn],
+                gravity: [::planar_arm::__private::terms(b"", &[]); #nn],
             };
             fn mass_matrix(&self, _: #v) -> #m #body
             fn coriolis(&self, _: #v, _: #v) -> #sv #body

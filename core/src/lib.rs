@@ -52,6 +52,7 @@ pub use mechanics::{ArmSpec, Dynamics, Kinematics, LinkSpec, PayloadSpec};
 pub use poly::{Param, Poly};
 pub use ring::{Coefficient, Rational};
 pub use trig::{Angle, Trig};
+pub mod compact;
 pub mod emit;
 pub mod frozen;
 pub mod generate;

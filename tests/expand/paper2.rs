@@ -1,117 +1,35 @@
 #[automatically_derived]
 impl ::planar_arm::PlanarArm<2> for Paper2 {
-    const EXACT: ::planar_arm::exact::Derivation<2> = ::planar_arm::exact::Derivation {
-        kinetic_energy: &[
-            ::planar_arm::__private::term(
-                5,
-                6,
-                0,
-                &[],
-                &[(::planar_arm::__private::Qd(0), 2)],
-                &[],
+    const EXACT: ::planar_arm::exact::Derivation<2> = {
+        const __NAMES: &[&str] = &[];
+        ::planar_arm::exact::Derivation {
+            kinetic_energy: ::planar_arm::__private::terms(
+                b"AKMBACABCECACBACAACGCABCBABCECACCABCBAACMBCCA",
+                __NAMES,
             ),
-            ::planar_arm::__private::term(
-                1,
-                2,
-                1,
-                &[0, 1],
-                &[(::planar_arm::__private::Qd(0), 2)],
-                &[],
+            potential_energy: ::planar_arm::__private::terms(
+                b"C+3FwMBCAACq9BwMCCCAA",
+                __NAMES,
             ),
-            ::planar_arm::__private::term(
-                1,
-                3,
-                0,
-                &[],
-                &[
-                    (::planar_arm::__private::Qd(0), 1),
-                    (::planar_arm::__private::Qd(1), 1),
+            mass_matrix: [
+                [
+                    ::planar_arm::__private::terms(b"AKGAABCCCACAA", __NAMES),
+                    ::planar_arm::__private::terms(b"ACGAABCECACAA", __NAMES),
                 ],
-                &[],
-            ),
-            ::planar_arm::__private::term(
-                1,
-                2,
-                1,
-                &[0, 1],
-                &[
-                    (::planar_arm::__private::Qd(0), 1),
-                    (::planar_arm::__private::Qd(1), 1),
-                ],
-                &[],
-            ),
-            ::planar_arm::__private::term(
-                1,
-                6,
-                0,
-                &[],
-                &[(::planar_arm::__private::Qd(1), 2)],
-                &[],
-            ),
-        ],
-        potential_energy: &[
-            ::planar_arm::__private::term(2943, 200, 2, &[1], &[], &[]),
-            ::planar_arm::__private::term(981, 200, 2, &[1, 1], &[], &[]),
-        ],
-        mass_matrix: [
-            [
-                &[
-                    ::planar_arm::__private::term(5, 3, 0, &[], &[], &[]),
-                    ::planar_arm::__private::term(1, 1, 1, &[0, 1], &[], &[]),
-                ],
-                &[
-                    ::planar_arm::__private::term(1, 3, 0, &[], &[], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 1], &[], &[]),
+                [
+                    ::planar_arm::__private::terms(b"ACGAABCECACAA", __NAMES),
+                    ::planar_arm::__private::terms(b"ACGAA", __NAMES),
                 ],
             ],
-            [
-                &[
-                    ::planar_arm::__private::term(1, 3, 0, &[], &[], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 1], &[], &[]),
-                ],
-                &[::planar_arm::__private::term(1, 3, 0, &[], &[], &[])],
+            coriolis: [
+                ::planar_arm::__private::terms(b"CBCCACCABCBACBECACBCCA", __NAMES),
+                ::planar_arm::__private::terms(b"CCECACBACA", __NAMES),
             ],
-        ],
-        coriolis: [
-            &[
-                ::planar_arm::__private::term(
-                    -1,
-                    1,
-                    2,
-                    &[0, 1],
-                    &[
-                        (::planar_arm::__private::Qd(0), 1),
-                        (::planar_arm::__private::Qd(1), 1),
-                    ],
-                    &[],
-                ),
-                ::planar_arm::__private::term(
-                    -1,
-                    2,
-                    2,
-                    &[0, 1],
-                    &[(::planar_arm::__private::Qd(1), 2)],
-                    &[],
-                ),
+            gravity: [
+                ::planar_arm::__private::terms(b"B+3FwMBCAABq9BwMCCCAA", __NAMES),
+                ::planar_arm::__private::terms(b"Bq9BwMCCCAA", __NAMES),
             ],
-            &[
-                ::planar_arm::__private::term(
-                    1,
-                    2,
-                    2,
-                    &[0, 1],
-                    &[(::planar_arm::__private::Qd(0), 2)],
-                    &[],
-                ),
-            ],
-        ],
-        gravity: [
-            &[
-                ::planar_arm::__private::term(2943, 200, 1, &[1], &[], &[]),
-                ::planar_arm::__private::term(981, 200, 1, &[1, 1], &[], &[]),
-            ],
-            &[::planar_arm::__private::term(981, 200, 1, &[1, 1], &[], &[])],
-        ],
+        }
     };
     #[inline]
     fn model(&self) -> ::planar_arm::Model<2> {

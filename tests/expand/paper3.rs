@@ -1,416 +1,65 @@
 #[automatically_derived]
 impl ::planar_arm::PlanarArm<3> for Paper3 {
-    const EXACT: ::planar_arm::exact::Derivation<3> = ::planar_arm::exact::Derivation {
-        kinetic_energy: &[
-            ::planar_arm::__private::term(
-                2,
-                1,
-                0,
-                &[],
-                &[(::planar_arm::__private::Qd(0), 2)],
-                &[],
+    const EXACT: ::planar_arm::exact::Derivation<3> = {
+        const __NAMES: &[&str] = &[];
+        ::planar_arm::exact::Derivation {
+            kinetic_energy: ::planar_arm::__private::terms(
+                b"AECBACABGECACBACABCEDACCBACABCEDAACBACAAKGCABCBABGECACCABCBABCEDACCCABCBABCCDAACCABCBAACGCABEBABCEDACCCABEBABCEDAACCABEBAAKMBCCABCEDAACBCCAACGCCBEBABCEDAACCCBEBAACMBECA",
+                __NAMES,
             ),
-            ::planar_arm::__private::term(
-                3,
-                2,
-                1,
-                &[0, 1],
-                &[(::planar_arm::__private::Qd(0), 2)],
-                &[],
+            potential_energy: ::planar_arm::__private::terms(
+                b"Cq9BwCBCAAC+3FwMCCCAACq9BwMDCCCAA",
+                __NAMES,
             ),
-            ::planar_arm::__private::term(
-                1,
-                2,
-                1,
-                &[0, 1, 1],
-                &[(::planar_arm::__private::Qd(0), 2)],
-                &[],
-            ),
-            ::planar_arm::__private::term(
-                1,
-                2,
-                1,
-                &[0, 0, 1],
-                &[(::planar_arm::__private::Qd(0), 2)],
-                &[],
-            ),
-            ::planar_arm::__private::term(
-                5,
-                3,
-                0,
-                &[],
-                &[
-                    (::planar_arm::__private::Qd(0), 1),
-                    (::planar_arm::__private::Qd(1), 1),
+            mass_matrix: [
+                [
+                    ::planar_arm::__private::terms(
+                        b"AICAABGCCACAABCCDACCAABCCDAACAA",
+                        __NAMES,
+                    ),
+                    ::planar_arm::__private::terms(
+                        b"AKGAABGECACAABCEDACCAABCCDAACAA",
+                        __NAMES,
+                    ),
+                    ::planar_arm::__private::terms(b"ACGAABCEDACCAABCEDAACAA", __NAMES),
                 ],
-                &[],
-            ),
-            ::planar_arm::__private::term(
-                3,
-                2,
-                1,
-                &[0, 1],
-                &[
-                    (::planar_arm::__private::Qd(0), 1),
-                    (::planar_arm::__private::Qd(1), 1),
+                [
+                    ::planar_arm::__private::terms(
+                        b"AKGAABGECACAABCEDACCAABCCDAACAA",
+                        __NAMES,
+                    ),
+                    ::planar_arm::__private::terms(b"AKGAABCCDAACAA", __NAMES),
+                    ::planar_arm::__private::terms(b"ACGAABCEDAACAA", __NAMES),
                 ],
-                &[],
-            ),
-            ::planar_arm::__private::term(
-                1,
-                2,
-                1,
-                &[0, 1, 1],
-                &[
-                    (::planar_arm::__private::Qd(0), 1),
-                    (::planar_arm::__private::Qd(1), 1),
-                ],
-                &[],
-            ),
-            ::planar_arm::__private::term(
-                1,
-                1,
-                1,
-                &[0, 0, 1],
-                &[
-                    (::planar_arm::__private::Qd(0), 1),
-                    (::planar_arm::__private::Qd(1), 1),
-                ],
-                &[],
-            ),
-            ::planar_arm::__private::term(
-                1,
-                3,
-                0,
-                &[],
-                &[
-                    (::planar_arm::__private::Qd(0), 1),
-                    (::planar_arm::__private::Qd(2), 1),
-                ],
-                &[],
-            ),
-            ::planar_arm::__private::term(
-                1,
-                2,
-                1,
-                &[0, 1, 1],
-                &[
-                    (::planar_arm::__private::Qd(0), 1),
-                    (::planar_arm::__private::Qd(2), 1),
-                ],
-                &[],
-            ),
-            ::planar_arm::__private::term(
-                1,
-                2,
-                1,
-                &[0, 0, 1],
-                &[
-                    (::planar_arm::__private::Qd(0), 1),
-                    (::planar_arm::__private::Qd(2), 1),
-                ],
-                &[],
-            ),
-            ::planar_arm::__private::term(
-                5,
-                6,
-                0,
-                &[],
-                &[(::planar_arm::__private::Qd(1), 2)],
-                &[],
-            ),
-            ::planar_arm::__private::term(
-                1,
-                2,
-                1,
-                &[0, 0, 1],
-                &[(::planar_arm::__private::Qd(1), 2)],
-                &[],
-            ),
-            ::planar_arm::__private::term(
-                1,
-                3,
-                0,
-                &[],
-                &[
-                    (::planar_arm::__private::Qd(1), 1),
-                    (::planar_arm::__private::Qd(2), 1),
-                ],
-                &[],
-            ),
-            ::planar_arm::__private::term(
-                1,
-                2,
-                1,
-                &[0, 0, 1],
-                &[
-                    (::planar_arm::__private::Qd(1), 1),
-                    (::planar_arm::__private::Qd(2), 1),
-                ],
-                &[],
-            ),
-            ::planar_arm::__private::term(
-                1,
-                6,
-                0,
-                &[],
-                &[(::planar_arm::__private::Qd(2), 2)],
-                &[],
-            ),
-        ],
-        potential_energy: &[
-            ::planar_arm::__private::term(981, 40, 2, &[1], &[], &[]),
-            ::planar_arm::__private::term(2943, 200, 2, &[1, 1], &[], &[]),
-            ::planar_arm::__private::term(981, 200, 2, &[1, 1, 1], &[], &[]),
-        ],
-        mass_matrix: [
-            [
-                &[
-                    ::planar_arm::__private::term(4, 1, 0, &[], &[], &[]),
-                    ::planar_arm::__private::term(3, 1, 1, &[0, 1], &[], &[]),
-                    ::planar_arm::__private::term(1, 1, 1, &[0, 1, 1], &[], &[]),
-                    ::planar_arm::__private::term(1, 1, 1, &[0, 0, 1], &[], &[]),
-                ],
-                &[
-                    ::planar_arm::__private::term(5, 3, 0, &[], &[], &[]),
-                    ::planar_arm::__private::term(3, 2, 1, &[0, 1], &[], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 1, 1], &[], &[]),
-                    ::planar_arm::__private::term(1, 1, 1, &[0, 0, 1], &[], &[]),
-                ],
-                &[
-                    ::planar_arm::__private::term(1, 3, 0, &[], &[], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 1, 1], &[], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 0, 1], &[], &[]),
+                [
+                    ::planar_arm::__private::terms(b"ACGAABCEDACCAABCEDAACAA", __NAMES),
+                    ::planar_arm::__private::terms(b"ACGAABCEDAACAA", __NAMES),
+                    ::planar_arm::__private::terms(b"ACGAA", __NAMES),
                 ],
             ],
-            [
-                &[
-                    ::planar_arm::__private::term(5, 3, 0, &[], &[], &[]),
-                    ::planar_arm::__private::term(3, 2, 1, &[0, 1], &[], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 1, 1], &[], &[]),
-                    ::planar_arm::__private::term(1, 1, 1, &[0, 0, 1], &[], &[]),
-                ],
-                &[
-                    ::planar_arm::__private::term(5, 3, 0, &[], &[], &[]),
-                    ::planar_arm::__private::term(1, 1, 1, &[0, 0, 1], &[], &[]),
-                ],
-                &[
-                    ::planar_arm::__private::term(1, 3, 0, &[], &[], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 0, 1], &[], &[]),
-                ],
-            ],
-            [
-                &[
-                    ::planar_arm::__private::term(1, 3, 0, &[], &[], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 1, 1], &[], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 0, 1], &[], &[]),
-                ],
-                &[
-                    ::planar_arm::__private::term(1, 3, 0, &[], &[], &[]),
-                    ::planar_arm::__private::term(1, 2, 1, &[0, 0, 1], &[], &[]),
-                ],
-                &[::planar_arm::__private::term(1, 3, 0, &[], &[], &[])],
-            ],
-        ],
-        coriolis: [
-            &[
-                ::planar_arm::__private::term(
-                    -3,
-                    1,
-                    2,
-                    &[0, 1],
-                    &[
-                        (::planar_arm::__private::Qd(0), 1),
-                        (::planar_arm::__private::Qd(1), 1),
-                    ],
-                    &[],
+            coriolis: [
+                ::planar_arm::__private::terms(
+                    b"CFCCACCABCBACBCDACCCABCBACBCDACCCABEBACBCDAACCABEBACFECACBCCACBEDACCBCCACBCDACCCCBEBACBCDAACCCBEBACBEDACCBECACBEDAACBECA",
+                    __NAMES,
                 ),
-                ::planar_arm::__private::term(
-                    -1,
-                    1,
-                    2,
-                    &[0, 1, 1],
-                    &[
-                        (::planar_arm::__private::Qd(0), 1),
-                        (::planar_arm::__private::Qd(1), 1),
-                    ],
-                    &[],
+                ::planar_arm::__private::terms(
+                    b"CGECACBACACCEDACCBACACBCDAACCABEBACBCDAACCCBEBACBEDAACBECA",
+                    __NAMES,
                 ),
-                ::planar_arm::__private::term(
-                    -1,
-                    1,
-                    2,
-                    &[0, 1, 1],
-                    &[
-                        (::planar_arm::__private::Qd(0), 1),
-                        (::planar_arm::__private::Qd(2), 1),
-                    ],
-                    &[],
-                ),
-                ::planar_arm::__private::term(
-                    -1,
-                    1,
-                    2,
-                    &[0, 0, 1],
-                    &[
-                        (::planar_arm::__private::Qd(0), 1),
-                        (::planar_arm::__private::Qd(2), 1),
-                    ],
-                    &[],
-                ),
-                ::planar_arm::__private::term(
-                    -3,
-                    2,
-                    2,
-                    &[0, 1],
-                    &[(::planar_arm::__private::Qd(1), 2)],
-                    &[],
-                ),
-                ::planar_arm::__private::term(
-                    -1,
-                    2,
-                    2,
-                    &[0, 1, 1],
-                    &[(::planar_arm::__private::Qd(1), 2)],
-                    &[],
-                ),
-                ::planar_arm::__private::term(
-                    -1,
-                    1,
-                    2,
-                    &[0, 1, 1],
-                    &[
-                        (::planar_arm::__private::Qd(1), 1),
-                        (::planar_arm::__private::Qd(2), 1),
-                    ],
-                    &[],
-                ),
-                ::planar_arm::__private::term(
-                    -1,
-                    1,
-                    2,
-                    &[0, 0, 1],
-                    &[
-                        (::planar_arm::__private::Qd(1), 1),
-                        (::planar_arm::__private::Qd(2), 1),
-                    ],
-                    &[],
-                ),
-                ::planar_arm::__private::term(
-                    -1,
-                    2,
-                    2,
-                    &[0, 1, 1],
-                    &[(::planar_arm::__private::Qd(2), 2)],
-                    &[],
-                ),
-                ::planar_arm::__private::term(
-                    -1,
-                    2,
-                    2,
-                    &[0, 0, 1],
-                    &[(::planar_arm::__private::Qd(2), 2)],
-                    &[],
+                ::planar_arm::__private::terms(
+                    b"CCEDACCBACACCEDAACBACACCCDAACCABCBACCEDAACBCCA",
+                    __NAMES,
                 ),
             ],
-            &[
-                ::planar_arm::__private::term(
-                    3,
-                    2,
-                    2,
-                    &[0, 1],
-                    &[(::planar_arm::__private::Qd(0), 2)],
-                    &[],
+            gravity: [
+                ::planar_arm::__private::terms(
+                    b"Bq9BwCBCAAB+3FwMCCCAABq9BwMDCCCAA",
+                    __NAMES,
                 ),
-                ::planar_arm::__private::term(
-                    1,
-                    2,
-                    2,
-                    &[0, 1, 1],
-                    &[(::planar_arm::__private::Qd(0), 2)],
-                    &[],
-                ),
-                ::planar_arm::__private::term(
-                    -1,
-                    1,
-                    2,
-                    &[0, 0, 1],
-                    &[
-                        (::planar_arm::__private::Qd(0), 1),
-                        (::planar_arm::__private::Qd(2), 1),
-                    ],
-                    &[],
-                ),
-                ::planar_arm::__private::term(
-                    -1,
-                    1,
-                    2,
-                    &[0, 0, 1],
-                    &[
-                        (::planar_arm::__private::Qd(1), 1),
-                        (::planar_arm::__private::Qd(2), 1),
-                    ],
-                    &[],
-                ),
-                ::planar_arm::__private::term(
-                    -1,
-                    2,
-                    2,
-                    &[0, 0, 1],
-                    &[(::planar_arm::__private::Qd(2), 2)],
-                    &[],
-                ),
+                ::planar_arm::__private::terms(b"B+3FwMCCCAABq9BwMDCCCAA", __NAMES),
+                ::planar_arm::__private::terms(b"Bq9BwMDCCCAA", __NAMES),
             ],
-            &[
-                ::planar_arm::__private::term(
-                    1,
-                    2,
-                    2,
-                    &[0, 1, 1],
-                    &[(::planar_arm::__private::Qd(0), 2)],
-                    &[],
-                ),
-                ::planar_arm::__private::term(
-                    1,
-                    2,
-                    2,
-                    &[0, 0, 1],
-                    &[(::planar_arm::__private::Qd(0), 2)],
-                    &[],
-                ),
-                ::planar_arm::__private::term(
-                    1,
-                    1,
-                    2,
-                    &[0, 0, 1],
-                    &[
-                        (::planar_arm::__private::Qd(0), 1),
-                        (::planar_arm::__private::Qd(1), 1),
-                    ],
-                    &[],
-                ),
-                ::planar_arm::__private::term(
-                    1,
-                    2,
-                    2,
-                    &[0, 0, 1],
-                    &[(::planar_arm::__private::Qd(1), 2)],
-                    &[],
-                ),
-            ],
-        ],
-        gravity: [
-            &[
-                ::planar_arm::__private::term(981, 40, 1, &[1], &[], &[]),
-                ::planar_arm::__private::term(2943, 200, 1, &[1, 1], &[], &[]),
-                ::planar_arm::__private::term(981, 200, 1, &[1, 1, 1], &[], &[]),
-            ],
-            &[
-                ::planar_arm::__private::term(2943, 200, 1, &[1, 1], &[], &[]),
-                ::planar_arm::__private::term(981, 200, 1, &[1, 1, 1], &[], &[]),
-            ],
-            &[::planar_arm::__private::term(981, 200, 1, &[1, 1, 1], &[], &[])],
-        ],
+        }
     };
     #[inline]
     fn model(&self) -> ::planar_arm::Model<3> {
