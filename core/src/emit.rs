@@ -369,6 +369,16 @@ pub fn coefficient_tokens<C: Emit>(c: &C) -> Result<TokenStream, EmitError> {
 /// Human-readable formulas for a method's doc comment.
 #[must_use]
 pub fn formula_doc<C: Emit>(title: &str, rows: &[(String, &Expr<C>)]) -> String {
+    let terms: usize = rows.iter().map(|(_, e)| e.len()).sum();
+    if terms > DOC_TERMS {
+        // Tens of thousands of terms are not documentation, and formatting them cost long
+        // arms' users seconds of compile time.
+        return format!(
+            "{title}\n\nThe exact formulas have {terms} terms, more than the {DOC_TERMS} shown \
+             in the documentation; `PlanarArm::EXACT` holds M, c, g, T and V exactly \
+             (each entry prints with `Display`), and `planar_arm::symbolic` derives them."
+        );
+    }
     let mut s = format!("{title}\n\n```text\n");
     for (name, e) in rows {
         let _ = writeln!(s, "{name} = {e}");
@@ -376,6 +386,9 @@ pub fn formula_doc<C: Emit>(title: &str, rows: &[(String, &Expr<C>)]) -> String 
     s.push_str("```\n");
     s
 }
+
+/// The most terms a method's documentation prints.
+pub const DOC_TERMS: usize = 2000;
 
 /// Fails if a derived coefficient cannot be emitted as `const` data (`i128`) or as `f64`.
 ///

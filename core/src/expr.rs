@@ -397,11 +397,24 @@ impl<C: Coefficient> Expr<C> {
     /// `sum_j (d/dq_j) qd_j` for `n` joints: the time derivative through the angles alone.
     #[must_use]
     pub fn dt_q(&self, n: usize) -> Self {
+        // One pass into one map: no intermediate expression per joint.
         let mut out = Self::zero();
-        for j in 0..n {
-            out.add_assign(&self.diff_q(j).mul_var(Var::Qd(j)));
+        let rates: Vec<Monomial> = (0..n).map(|j| Monomial::var(Var::Qd(j))).collect();
+        for ((m, t), c) in &self.terms {
+            for (j, rate) in rates.iter().enumerate() {
+                if let Some((k, dt)) = t.diff(j) {
+                    out.add_term(c.scale(&int(i64::from(k))), dt, m.mul(rate));
+                }
+            }
         }
         out
+    }
+
+    /// `self -= other`.
+    pub fn sub_assign(&mut self, other: &Self) {
+        for ((m, t), c) in &other.terms {
+            self.add_term(-c.clone(), t.clone(), m.clone());
+        }
     }
 
     /// `d/dv` for a rate or acceleration `v`.

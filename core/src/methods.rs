@@ -27,6 +27,8 @@ pub struct Derived<C = Rational> {
     pub dynamics: Dynamics<C>,
     /// Its kinematics.
     pub kinematics: Kinematics<C>,
+    /// The chosen programs of M, c and g, which forward dynamics reuses.
+    chosen: [std::cell::OnceCell<Method>; 3],
 }
 
 impl<C: Emit> Derived<C> {
@@ -37,11 +39,39 @@ impl<C: Emit> Derived<C> {
             dynamics: Dynamics::derive(arm),
             kinematics: Kinematics::derive(arm),
             arm: arm.clone(),
+            chosen: Default::default(),
         }
     }
 
     fn n(&self) -> usize {
         self.arm.links.len()
+    }
+
+    /// Whether expanded formulas of `terms` terms can beat `rival`. Their programs share
+    /// products between rows, so their cost is below the term count, but not far below: at
+    /// least 0.36 of it for arms of up to ten links (M and the torques, op counts in
+    /// docs/performance.md). From four links on, formulas whose term count over the number of
+    /// links exceeds twice the rival's cost cannot win and are not built: building them
+    /// dominated the derive's time for long arms.
+    fn worth_expanding(&self, terms: usize, rival: &Method) -> bool {
+        let n = self.n();
+        n < 4 || terms / n <= 2 * cost(rival)
+    }
+
+    fn terms(exprs: &[&Expr<C>]) -> usize {
+        exprs.iter().map(|e| e.len()).sum()
+    }
+
+    fn mass_matrix_terms(&self) -> usize {
+        let m = &self.dynamics.mass_matrix;
+        (0..self.n())
+            .map(|i| Self::terms(&m[i][i..].iter().collect::<Vec<_>>()))
+            .sum()
+    }
+
+    fn bias_terms(&self) -> usize {
+        let d = &self.dynamics;
+        Self::terms(&d.coriolis.iter().chain(&d.gravity).collect::<Vec<_>>())
     }
 }
 
@@ -129,10 +159,16 @@ impl<C: Emit> Derived<C> {
     /// composite-rigid-body recursion. Upper triangle; the lower one is the same nodes.
     #[must_use]
     pub fn mass_matrix_method(&self) -> Method {
-        cheapest(vec![
-            self.mass_matrix_expanded_method(),
-            self.mass_matrix_composite_method(),
-        ])
+        self.chosen[0]
+            .get_or_init(|| {
+                let composite = self.mass_matrix_composite_method();
+                if self.worth_expanding(self.mass_matrix_terms(), &composite) {
+                    cheapest(vec![self.mass_matrix_expanded_method(), composite])
+                } else {
+                    composite
+                }
+            })
+            .clone()
     }
 
     /// `M(q)` evaluated entry by entry from the expanded formulas.
@@ -155,19 +191,33 @@ impl<C: Emit> Derived<C> {
     /// (no gravity, no accelerations).
     #[must_use]
     pub fn coriolis_method(&self) -> Method {
-        cheapest(vec![
-            self.vector_method("cor", &self.dynamics.coriolis),
-            self.newton_euler_method("cor", Terms::CORIOLIS),
-        ])
+        self.chosen[1]
+            .get_or_init(|| {
+                let recursive = self.newton_euler_method("cor", Terms::CORIOLIS);
+                let terms = Self::terms(&self.dynamics.coriolis.iter().collect::<Vec<_>>());
+                if self.worth_expanding(terms, &recursive) {
+                    cheapest(vec![
+                        self.vector_method("cor", &self.dynamics.coriolis),
+                        recursive,
+                    ])
+                } else {
+                    recursive
+                }
+            })
+            .clone()
     }
 
     /// `g(q)`: the cheaper of the expanded formulas and an unrolled static recursion.
     #[must_use]
     pub fn gravity_method(&self) -> Method {
-        cheapest(vec![
-            self.vector_method("g", &self.dynamics.gravity),
-            self.newton_euler_method("g", Terms::GRAVITY),
-        ])
+        self.chosen[2]
+            .get_or_init(|| {
+                cheapest(vec![
+                    self.vector_method("g", &self.dynamics.gravity),
+                    self.newton_euler_method("g", Terms::GRAVITY),
+                ])
+            })
+            .clone()
     }
 
     /// The bias `h(q, qd) = c + g + f`, everything but the inertial term: the cheaper of the
@@ -175,10 +225,15 @@ impl<C: Emit> Derived<C> {
     /// friction.
     #[must_use]
     pub fn bias_method(&self) -> Method {
-        cheapest(vec![
-            self.with_friction(self.expanded_bias_method()),
-            self.with_friction(self.newton_euler_method("h", Terms::BIAS)),
-        ])
+        let recursive = self.with_friction(self.newton_euler_method("h", Terms::BIAS));
+        if self.worth_expanding(self.bias_terms(), &recursive) {
+            cheapest(vec![
+                self.with_friction(self.expanded_bias_method()),
+                recursive,
+            ])
+        } else {
+            recursive
+        }
     }
 
     fn expanded_bias_method(&self) -> Method {
@@ -208,8 +263,22 @@ impl<C: Emit> Derived<C> {
     #[must_use]
     pub fn mass_matrix_and_bias_method(&self) -> Method {
         let mut candidates = Vec::new();
-        for composite in [false, true] {
-            for recursive in [false, true] {
+        let mut composites = vec![true];
+        if self.worth_expanding(
+            self.mass_matrix_terms(),
+            &self.mass_matrix_composite_method(),
+        ) {
+            composites.insert(0, false);
+        }
+        let mut recursions = vec![true];
+        if self.worth_expanding(
+            self.bias_terms(),
+            &self.newton_euler_method("h", Terms::BIAS),
+        ) {
+            recursions.insert(0, false);
+        }
+        for &composite in &composites {
+            for &recursive in &recursions {
                 let mut p = Program::new();
                 let m = if composite {
                     composite_mass_matrix(&mut p, &self.arm)
@@ -252,10 +321,13 @@ impl<C: Emit> Derived<C> {
     /// Newton-Euler recursion.
     #[must_use]
     pub fn inverse_dynamics_method(&self) -> Method {
-        cheapest(vec![
-            self.inverse_dynamics_lagrange_method(),
-            self.inverse_dynamics_newton_euler_method(),
-        ])
+        let recursive = self.inverse_dynamics_newton_euler_method();
+        let terms = Self::terms(&self.dynamics.torques.iter().collect::<Vec<_>>());
+        if self.worth_expanding(terms, &recursive) {
+            cheapest(vec![self.inverse_dynamics_lagrange_method(), recursive])
+        } else {
+            recursive
+        }
     }
 
     /// `tau` from the expanded Lagrangian torques, term by term, plus friction.

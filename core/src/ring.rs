@@ -9,6 +9,7 @@ use core::fmt::{Debug, Display};
 use core::ops::{Add, Mul, Neg, Sub};
 
 use num_bigint::BigInt;
+use num_integer::Integer as _;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// An exact fraction of big integers, always reduced, denominator positive.
@@ -50,6 +51,15 @@ impl Coefficient for Rational {
             self.clone()
         } else if (-r).is_one() {
             -self.clone()
+        } else if r.numer().is_one() && r.denom() == &BigInt::from(2) {
+            // Halving a reduced fraction needs no gcd: an even numerator halves, an odd one
+            // doubles the denominator, and either stays reduced.
+            let (n, d) = (self.numer(), self.denom());
+            if n.is_even() {
+                Rational::new_raw(n / 2, d.clone())
+            } else {
+                Rational::new_raw(n.clone(), d * 2)
+            }
         } else {
             self * r
         }
