@@ -227,7 +227,13 @@ impl crate::ring::Coefficient for Poly {
         if Zero::is_zero(r) {
             return Self::default();
         }
-        Self(self.0.iter().map(|(m, c)| (m.clone(), c * r)).collect())
+        // The rationals' own scaling: no gcd for the common factors 1, -1 and 1/2.
+        Self(
+            self.0
+                .iter()
+                .map(|(m, c)| (m.clone(), crate::ring::Coefficient::scale(c, r)))
+                .collect(),
+        )
     }
 }
 

@@ -1,0 +1,105 @@
+#!/usr/bin/env python3
+"""What deriving an arm costs a user's build: the table in docs/performance.md.
+
+For each arm size it writes a binary crate (in a temporary directory, depending on this
+repository by path, default `dev` profile, no profile settings) that derives one arm and calls
+its inverse dynamics, forward dynamics, mass matrix and bias once (so those are compiled, not
+only type-checked), builds it once to compile the dependencies, then times
+`cargo clean -p <crate>` followed by `cargo build`: a clean rebuild of that crate alone. Peak
+memory is the largest resident size of any process of the build (GNU time's %M).
+
+Arms: lengths 2/4, 3/4, 4/4, ... and literal masses, inertias and centres of mass; with
+`params`, masses, inertias and centres are run-time parameters (`self.m0`, ...).
+
+    python3 bench/compile_time.py                 # 6 10 14 20 30 links, literal and parameterised
+    python3 bench/compile_time.py 6 10 --runs 3   # chosen sizes, best of three
+"""
+
+import argparse
+import os
+import re
+import subprocess
+import tempfile
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def crate(root, n, params):
+    name = f"arm{n}{'p' if params else ''}"
+    path = os.path.join(root, name)
+    os.makedirs(os.path.join(path, "src"), exist_ok=True)
+    with open(os.path.join(path, "Cargo.toml"), "w") as f:
+        f.write(
+            f'[package]\nname = "{name}"\nversion = "0.0.0"\nedition = "2021"\n'
+            f'[dependencies]\nplanar_arm = {{ path = "{REPO}" }}\n[workspace]\n'
+        )
+    links, fields, values = [], [], []
+    for i in range(n):
+        length = f"{i % 3 + 2}/4"
+        if params:
+            links.append(
+                f"    #[arm(length = {length}, mass = self.m{i}, inertia = self.i{i}, com = self.c{i})]\n"
+                f"    l{i}: Revolute,"
+            )
+            fields.append(f"    m{i}: f64,\n    i{i}: f64,\n    c{i}: f64,")
+            values.append(f"m{i}: {i % 4 + 1}.0 / 2.0, i{i}: 1.0 / {i + 5}.0, c{i}: {i % 3 + 1}.0 / 5.0,")
+        else:
+            links.append(
+                f"    #[arm(length = {length}, mass = {i % 4 + 1}/2, inertia = 1/{i + 5}, com = {i % 3 + 1}/5)]\n"
+                f"    l{i}: Revolute,"
+            )
+        values.append(f"l{i}: Revolute,")
+    body = "\n".join(links + fields)
+    init = " ".join(values)
+    with open(os.path.join(path, "src", "main.rs"), "w") as f:
+        f.write(
+            "use planar_arm::prelude::*;\n\n"
+            "#[derive(PlanarArm)]\n#[arm(gravity = 9.81)]\n"
+            f"struct Arm {{\n{body}\n}}\n\n"
+            "fn main() {\n"
+            f"    let arm = Arm {{ {init} }};\n"
+            f"    let q = SVector::<f64, {n}>::from_fn(|i, _| 0.1 * i as f64);\n"
+            "    let tau = arm.inverse_dynamics(&q, &q, &q);\n"
+            "    let qdd = arm.forward_dynamics(&q, &q, &tau);\n"
+            "    let (m, h) = (arm.mass_matrix(&q), arm.bias(&q, &q));\n"
+            '    println!("{}", (qdd - q).norm() + m.norm() + h.norm());\n'
+            "}\n"
+        )
+    return name, path
+
+
+def timed_build(path, name, target):
+    env = dict(os.environ, CARGO_TARGET_DIR=target)
+    env.pop("RUSTFLAGS", None)
+    subprocess.run(["cargo", "clean", "-q", "-p", name], cwd=path, env=env, check=True)
+    out = subprocess.run(
+        ["/usr/bin/time", "-f", "%e %M", "cargo", "build", "-q"],
+        cwd=path, env=env, capture_output=True, text=True, check=True,
+    )
+    seconds, kb = re.findall(r"([\d.]+) (\d+)\s*$", out.stderr)[-1]
+    return float(seconds), int(kb) / 1024
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("sizes", nargs="*", type=int, default=[6, 10, 14, 20, 30])
+    ap.add_argument("--runs", type=int, default=1)
+    ap.add_argument("--literal-only", action="store_true")
+    args = ap.parse_args()
+    with tempfile.TemporaryDirectory() as root:
+        target = os.path.join(root, "target")
+        print("| links | arm | clean rebuild s | peak MB |")
+        print("|---|---|---|---|")
+        for n in args.sizes:
+            kinds = [False] if args.literal_only or n > 14 else [False, True]
+            for params in kinds:
+                name, path = crate(root, n, params)
+                env = dict(os.environ, CARGO_TARGET_DIR=target)
+                subprocess.run(["cargo", "build", "-q"], cwd=path, env=env, check=True)
+                best = min(timed_build(path, name, target) for _ in range(args.runs))
+                kind = "parameters" if params else "literal"
+                print(f"| {n} | {kind} | {best[0]:.2f} | {best[1]:.0f} |", flush=True)
+
+
+if __name__ == "__main__":
+    main()
