@@ -68,9 +68,7 @@ fn row<A: PlanarArm<N> + Default, const N: usize>() {
 }
 
 fn main() {
-    println!(
-        "| N | mass_matrix_and_bias ns | mass_matrix + coriolis + gravity ns | speed-up |"
-    );
+    println!("| N | mass_matrix_and_bias ns | mass_matrix + coriolis + gravity ns | speed-up |");
     println!("|---|---|---|---|");
     row::<Equal2, 2>();
     row::<Equal3, 3>();
