@@ -21,6 +21,8 @@
 //!   Newton-Euler or composite-rigid-body recursion unrolled for the arm, whichever is cheaper).
 //! - [`frozen`]: methods of arms with run-time parameters split into a block of
 //!   parameter-only values, evaluated once per parameter change, and the state-dependent rest.
+//! - [`regressor`]: identification, the torques' columns per standard parameter and the base
+//!   parameters by exact elimination.
 //! - [`emit`] and [`generate`]: programs rendered as Rust, and the `impl PlanarArm<N>` the
 //!   derive emits.
 //!
@@ -48,7 +50,7 @@ pub mod ring;
 pub mod trig;
 
 pub use expr::{Expr, Monomial, Var};
-pub use mechanics::{ArmSpec, Dynamics, Kinematics, LinkSpec, PayloadSpec};
+pub use mechanics::{ArmSpec, Body, Dynamics, Kinematics, LinkSpec, PayloadSpec};
 pub use poly::{Param, Poly};
 pub use ring::{Coefficient, Rational};
 pub use trig::{Angle, Trig};
@@ -57,5 +59,6 @@ pub mod emit;
 pub mod frozen;
 pub mod generate;
 pub mod methods;
+pub mod regressor;
 pub mod slp;
 mod unrolled;

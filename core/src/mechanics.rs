@@ -217,6 +217,53 @@ fn bodies<C: Coefficient>(arm: &ArmSpec<C>) -> Vec<(usize, (C, C), &C, &C)> {
     bodies
 }
 
+/// A rigid body of a link in the parameters its energies are linear in (the standard
+/// parameters of identification): mass `m`, first moment `m c` in the link's frame, and moment
+/// of inertia about the link's joint `I + m |c|^2`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Body<C = Rational> {
+    /// The link (0-based) the body moves with.
+    pub link: usize,
+    /// Mass.
+    pub mass: C,
+    /// First moment `(m cx, m cy)` in the link's frame.
+    pub first_moment: (C, C),
+    /// Moment of inertia about the link's joint.
+    pub joint_inertia: C,
+}
+
+/// The arm's bodies (links, then the payload on the last link) in standard parameters.
+#[must_use]
+pub fn standard_bodies<C: Coefficient>(arm: &ArmSpec<C>) -> Vec<Body<C>> {
+    bodies(arm)
+        .into_iter()
+        .map(|(link, (cx, cy), mass, inertia)| Body {
+            link,
+            mass: mass.clone(),
+            first_moment: (mass.clone() * cx.clone(), mass.clone() * cy.clone()),
+            joint_inertia: mass.clone() * (cx.clone() * cx.clone() + cy.clone() * cy)
+                + inertia.clone(),
+        })
+        .collect()
+}
+
+/// The potential energy of the bodies: `g (m y_joint + m cx sin theta + m cy cos theta)` each.
+fn potential_energy<C: Coefficient>(arm: &ArmSpec<C>, bodies: &[Body<C>]) -> Expr<C> {
+    let mut potential = Expr::zero();
+    let zero = C::from_rational(int(0));
+    for body in bodies {
+        let i = body.link;
+        let (_, y_joint) = point_on_link(arm, i, &(zero.clone(), zero.clone()));
+        let (mx, my) = &body.first_moment;
+        let y = y_joint
+            .scale_by(&body.mass)
+            .add(&Expr::sin(mx.clone(), link_angle(i)))
+            .add(&Expr::cos(my.clone(), link_angle(i)));
+        potential.add_assign(&y.scale_by(&arm.gravity));
+    }
+    potential
+}
+
 /// The kinetic energy, built in its pairwise form.
 ///
 /// A body of link `i` has velocity `sum_a omega_a i z_a` (complex plane), `z_a = r_a e^(i theta_a)`
@@ -227,7 +274,7 @@ fn bodies<C: Coefficient>(arm: &ArmSpec<C>) -> Vec<(usize, (C, C), &C, &C)> {
 /// B sin(theta_a - theta_b)`, `A` and `B` summed over the bodies. Squaring the velocity's x
 /// and y expressions gives the same canonical expression (checked in the tests) but creates
 /// every `cos(theta_a + theta_b)` term only to cancel it, and dominated the derive's time.
-fn kinetic_energy<C: Coefficient>(arm: &ArmSpec<C>) -> Expr<C> {
+fn kinetic_energy<C: Coefficient>(arm: &ArmSpec<C>, bodies: &[Body<C>]) -> Expr<C> {
     let n = arm.links.len();
     let zero = || C::from_rational(int(0));
     // diag[a]: twice the coefficient of omega_a^2; cross[a][b] (a > b): (A, B).
@@ -235,21 +282,20 @@ fn kinetic_energy<C: Coefficient>(arm: &ArmSpec<C>) -> Expr<C> {
     let mut cross: Vec<Vec<(C, C)>> = (0..n)
         .map(|a| (0..a).map(|_| (zero(), zero())).collect())
         .collect();
-    for (i, (cx, cy), mass, inertia) in bodies(arm) {
-        let m = mass.clone();
+    for body in bodies {
+        let (i, m) = (body.link, &body.mass);
+        let (mx, my) = &body.first_moment;
         for a in 0..i {
             let la = &arm.links[a].length;
             diag[a] = diag[a].clone() + m.clone() * la.clone() * la.clone();
             for (pair, link_b) in cross[a].iter_mut().zip(&arm.links) {
                 pair.0 = pair.0.clone() + m.clone() * la.clone() * link_b.length.clone();
             }
-            // The body's own term: r_i conj(l_a) = (cx + i cy) l_a.
-            cross[i][a].0 = cross[i][a].0.clone() + m.clone() * cx.clone() * la.clone();
-            cross[i][a].1 = cross[i][a].1.clone() + m.clone() * cy.clone() * la.clone();
+            // The body's own term: m r_i conj(l_a) = (m cx + i m cy) l_a.
+            cross[i][a].0 = cross[i][a].0.clone() + mx.clone() * la.clone();
+            cross[i][a].1 = cross[i][a].1.clone() + my.clone() * la.clone();
         }
-        diag[i] = diag[i].clone()
-            + m.clone() * (cx.clone() * cx.clone() + cy.clone() * cy.clone())
-            + inertia.clone();
+        diag[i] = diag[i].clone() + body.joint_inertia.clone();
     }
     let mut omega = Expr::zero();
     let omegas: Vec<Expr<C>> = (0..n)
@@ -321,13 +367,17 @@ impl<C: Coefficient> Dynamics<C> {
     /// Derives the equations of motion by Lagrange's equation.
     #[must_use]
     pub fn derive(arm: &ArmSpec<C>) -> Self {
+        Self::of_bodies(arm, &standard_bodies(arm))
+    }
+
+    /// The equations of motion of the arm's links and joints (lengths, armature) carrying
+    /// `bodies` in standard parameters instead of its own links' masses. The energies are
+    /// linear in the bodies' parameters, which is what the regressor uses.
+    #[must_use]
+    pub fn of_bodies(arm: &ArmSpec<C>, bodies: &[Body<C>]) -> Self {
         let n = arm.links.len();
-        let kinetic = kinetic_energy(arm);
-        let mut potential = Expr::zero();
-        for (i, at, mass, _) in bodies(arm) {
-            let (_, y) = point_on_link(arm, i, &at);
-            potential.add_assign(&y.scale_by(&(arm.gravity.clone() * mass.clone())));
-        }
+        let kinetic = kinetic_energy(arm, bodies);
+        let potential = potential_energy(arm, bodies);
         let lagrangian = kinetic.sub(&potential);
         // M as the Hessian of T in the rates, g = dV/dq, and the velocity terms from the
         // momenta p = dT/dqd: the same exact functions Lagrange's equation gives (checked
@@ -576,14 +626,14 @@ mod tests {
                 com: (ratio(1, 5), ratio(-2, 7)),
             });
             assert_eq!(
-                kinetic_energy(&arm),
+                kinetic_energy(&arm, &standard_bodies(&arm)),
                 kinetic_energy_by_velocities(&arm),
                 "n = {n}"
             );
             // And over the polynomials, every value a parameter.
             let (symbolic, _) = arm.parameterised();
             assert_eq!(
-                kinetic_energy(&symbolic),
+                kinetic_energy(&symbolic, &standard_bodies(&symbolic)),
                 kinetic_energy_by_velocities(&symbolic),
                 "n = {n}, parameters"
             );

@@ -72,6 +72,14 @@ impl ParamMonomial {
         self.0.iter().map(|(_, e)| e).sum()
     }
 
+    /// The product of `powers` (positive exponents, distinct parameters, any order).
+    #[must_use]
+    pub fn from_powers(mut powers: Vec<(Param, u32)>) -> Self {
+        powers.retain(|(_, e)| *e > 0);
+        powers.sort();
+        Self(powers)
+    }
+
     fn mul(&self, other: &Self) -> Self {
         let mut out: BTreeMap<Param, u32> = self.0.iter().cloned().collect();
         for (p, e) in &other.0 {
@@ -109,6 +117,14 @@ impl Poly {
             ParamMonomial(vec![(p, 1)]),
             Rational::one(),
         )]))
+    }
+
+    /// `r m`.
+    #[must_use]
+    pub fn monomial(m: ParamMonomial, r: Rational) -> Self {
+        let mut out = Self::default();
+        out.add_term(m, r);
+        out
     }
 
     /// A rational constant.

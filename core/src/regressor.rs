@@ -1,0 +1,494 @@
+//! Identification: the torques are linear in the standard parameters, `tau = Y(q, qd, qdd)
+//! theta`, and only the base parameters (the identifiable combinations) can be found from
+//! measured torques.
+//!
+//! The regressor is derived, not fitted: the arm's bodies are given symbolic standard
+//! parameters (mass `m`, first moments `mx = m cx` and `my = m cy` in the link's frame, moment of
+//! inertia about the joint `zz = Izz + m (cx^2 + cy^2)`), the joints symbolic armature `ia`
+//! and viscous friction `fv`, and the equations of motion are derived over polynomials in
+//! them ([`Dynamics::of_bodies`]). Each torque is then linear in the symbols, and the
+//! coefficient of a symbol is its regressor column, exactly. The base parameters come from
+//! exact rational elimination on those columns: no rank threshold.
+//!
+//! Coulomb friction `fc sign(qd_i)` is linear in `fc` too; its column, `sign(qd_i)` on row `i`,
+//! is not an expression of the engine and is handled by the caller. Each is its own base
+//! parameter.
+
+use std::collections::BTreeMap;
+
+use num_traits::{One, Zero};
+
+use crate::expr::{Expr, Monomial};
+use crate::mechanics::{ArmSpec, Body, Dynamics, LinkSpec};
+use crate::poly::{Param, ParamMonomial, Poly};
+use crate::ring::{Coefficient, Rational};
+use crate::trig::Trig;
+
+/// What a standard parameter is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Kind {
+    /// Moment of inertia about the joint, `Izz + m (cx^2 + cy^2)`, kg m^2.
+    Zz,
+    /// First moment along the link, `m cx`, kg m.
+    Mx,
+    /// First moment across the link, `m cy`, kg m.
+    My,
+    /// Mass, kg.
+    Mass,
+    /// Armature (reflected rotor inertia), kg m^2.
+    Armature,
+    /// Viscous friction coefficient (`damping`), N m s/rad.
+    Damping,
+}
+
+/// A standard parameter: what it is and whose.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Standard {
+    /// Its name: `zz1`, `mx1`, `my1`, `m1`, ... for link 1, `zzp`, `mxp`, `myp`, `mp` for the
+    /// payload (in the last link's frame, from its joint), `ia1` and `fv1` for joint 1.
+    pub name: String,
+    /// What it is.
+    pub kind: Kind,
+    /// The link (0-based) for body parameters, `None` for the payload; the joint for
+    /// `Armature` and `Damping`.
+    pub link: Option<usize>,
+}
+
+/// The regressor of an arm: one column of exact torques per standard parameter.
+#[derive(Clone, Debug)]
+pub struct Regressor<C = Rational> {
+    /// The standard parameters, in column order: per link `zz, mx, my`, then the payload's
+    /// `zz, mx, my`, then the masses (links', payload's), then per joint the armature and the
+    /// damping of the joints that have them.
+    pub parameters: Vec<Standard>,
+    /// `columns[k][i]`: torque `i` per unit of parameter `k`.
+    pub columns: Vec<Vec<Expr<C>>>,
+}
+
+fn param(name: &str) -> Poly {
+    Poly::param(Param::new(name))
+}
+
+/// The coefficient of `symbol` (which must occur at most linearly) in `c`, with the other
+/// parameters kept: `Some` when `symbol` occurs.
+fn linear_part(c: &Poly, symbol: &Param) -> Option<Poly> {
+    let mut out = Poly::constant(Rational::zero());
+    let mut found = false;
+    for (m, r) in c.terms() {
+        let powers = m.powers();
+        if let Some(k) = powers.iter().position(|(p, _)| p == symbol) {
+            found = true;
+            let rest: Vec<(Param, u32)> = powers
+                .iter()
+                .enumerate()
+                .filter(|&(j, _)| j != k)
+                .map(|(_, pe)| pe.clone())
+                .collect();
+            out = out + Poly::monomial(ParamMonomial::from_powers(rest), r.clone());
+        }
+    }
+    found.then_some(out)
+}
+
+/// Derives the regressor of `arm` (its lengths, gravity, and which joints have armature and
+/// damping; its inertial values are what the regressor multiplies).
+#[must_use]
+pub fn regressor(arm: &ArmSpec<Poly>) -> Regressor<Poly> {
+    let n = arm.links.len();
+    let mut parameters = Vec::new();
+    let mut bodies = Vec::new();
+    let mut push = |name: String, kind: Kind, link: Option<usize>| {
+        let p = param(&name);
+        parameters.push(Standard { name, kind, link });
+        p
+    };
+    let mut masses = Vec::new();
+    for i in 0..n {
+        let zz = push(format!("zz{}", i + 1), Kind::Zz, Some(i));
+        let mx = push(format!("mx{}", i + 1), Kind::Mx, Some(i));
+        let my = push(format!("my{}", i + 1), Kind::My, Some(i));
+        masses.push((format!("m{}", i + 1), Some(i)));
+        bodies.push((i, zz, mx, my));
+    }
+    if arm.payload.is_some() {
+        let zz = push("zzp".into(), Kind::Zz, None);
+        let mx = push("mxp".into(), Kind::Mx, None);
+        let my = push("myp".into(), Kind::My, None);
+        masses.push(("mp".into(), None));
+        bodies.push((n - 1, zz, mx, my));
+    }
+    let masses: Vec<Poly> = masses
+        .into_iter()
+        .map(|(name, link)| push(name, Kind::Mass, link))
+        .collect();
+    let bodies: Vec<Body<Poly>> = bodies
+        .into_iter()
+        .zip(masses)
+        .map(|((link, zz, mx, my), mass)| Body {
+            link,
+            mass,
+            first_moment: (mx, my),
+            joint_inertia: zz,
+        })
+        .collect();
+    let mut geometry = arm.clone();
+    for (j, link) in geometry.links.iter_mut().enumerate() {
+        let armature = if link.armature.is_zero() {
+            Poly::constant(Rational::zero())
+        } else {
+            push(format!("ia{}", j + 1), Kind::Armature, Some(j))
+        };
+        *link = LinkSpec {
+            armature,
+            ..link.clone()
+        };
+    }
+    let damped: Vec<usize> = (0..n)
+        .filter(|&j| !arm.links[j].damping.is_zero())
+        .collect();
+    for &j in &damped {
+        push(format!("fv{}", j + 1), Kind::Damping, Some(j));
+    }
+    let torques = Dynamics::of_bodies(&geometry, &bodies).torques;
+    let columns = parameters
+        .iter()
+        .map(|s| {
+            if s.kind == Kind::Damping {
+                let j = s.link.unwrap_or(0);
+                return (0..n)
+                    .map(|i| {
+                        if i == j {
+                            Expr::var(crate::expr::Var::Qd(j))
+                        } else {
+                            Expr::zero()
+                        }
+                    })
+                    .collect();
+            }
+            let symbol = Param::new(&s.name);
+            torques
+                .iter()
+                .map(|t| {
+                    let mut column = Expr::zero();
+                    for (m, trig, c) in t.terms() {
+                        if let Some(k) = linear_part(c, &symbol) {
+                            column.add_assign(&Expr::term(k, trig.clone(), m.clone()));
+                        }
+                    }
+                    column
+                })
+                .collect()
+        })
+        .collect();
+    Regressor {
+        parameters,
+        columns,
+    }
+}
+
+impl Regressor<Poly> {
+    /// The columns with rational coefficients, `None` if one depends on a run-time parameter
+    /// (a length or gravity).
+    #[must_use]
+    pub fn rational_columns(&self) -> Option<Vec<Vec<Expr<Rational>>>> {
+        self.columns
+            .iter()
+            .map(|column| {
+                column
+                    .iter()
+                    .map(|e| {
+                        let mut out = Expr::zero();
+                        for (m, t, c) in e.terms() {
+                            out.add_assign(&Expr::term(c.as_rational()?, t.clone(), m.clone()));
+                        }
+                        Some(out)
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+}
+
+/// The standard parameters' values for the arm: `zz = I + m |c|^2`, `mx = m cx`, ...
+#[must_use]
+pub fn standard_values<C: Coefficient>(arm: &ArmSpec<C>, parameters: &[Standard]) -> Vec<C> {
+    let bodies = crate::mechanics::standard_bodies(arm);
+    let n = arm.links.len();
+    parameters
+        .iter()
+        .map(|s| {
+            let body = match s.link {
+                Some(i) => bodies.get(i),
+                None => bodies.get(n),
+            };
+            match (s.kind, body) {
+                (Kind::Zz, Some(b)) => b.joint_inertia.clone(),
+                (Kind::Mx, Some(b)) => b.first_moment.0.clone(),
+                (Kind::My, Some(b)) => b.first_moment.1.clone(),
+                (Kind::Mass, Some(b)) => b.mass.clone(),
+                (Kind::Armature, _) => arm.links[s.link.unwrap_or(0)].armature.clone(),
+                (Kind::Damping, _) => arm.links[s.link.unwrap_or(0)].damping.clone(),
+                (_, None) => C::from_rational(Rational::zero()),
+            }
+        })
+        .collect()
+}
+
+/// The base parameters: a minimal set of columns spanning the regressor, and each base
+/// parameter as an exact combination of standard ones.
+#[derive(Clone, Debug)]
+pub struct BaseParameters {
+    /// The standard parameters whose columns are kept (indices into
+    /// [`Regressor::parameters`]), in order.
+    pub columns: Vec<usize>,
+    /// For each base parameter, `(standard parameter, coefficient)` pairs: the base parameter
+    /// is their sum. Its own parameter comes first with coefficient 1.
+    pub grouping: Vec<Vec<(usize, Rational)>>,
+}
+
+impl BaseParameters {
+    /// The base parameter `b` as a formula in the standard parameters' names:
+    /// `zz1 + ia1 + 9/16 m2 + ...`.
+    #[must_use]
+    pub fn formula(&self, b: usize, parameters: &[Standard]) -> String {
+        let mut s = String::new();
+        for (k, (p, c)) in self.grouping[b].iter().enumerate() {
+            let name = &parameters[*p].name;
+            let negative = c < &Rational::zero();
+            let mag = if negative { -c.clone() } else { c.clone() };
+            let sign = match (k, negative) {
+                (0, true) => "-",
+                (0, false) => "",
+                (_, true) => " - ",
+                (_, false) => " + ",
+            };
+            if mag.is_one() {
+                s.push_str(&format!("{sign}{name}"));
+            } else {
+                s.push_str(&format!("{sign}{mag} {name}"));
+            }
+        }
+        s
+    }
+}
+
+type Key = (usize, Monomial, Trig);
+
+/// A sparse vector over [`Key`]s.
+type Sparse = BTreeMap<Key, Rational>;
+
+/// A reduced basis vector: its pivot, the vector (1 at the pivot), and the vector as a
+/// combination of the base columns.
+type Reduced = (Key, Sparse, BTreeMap<usize, Rational>);
+
+/// Exact elimination on the columns, in order: a column is a base column when it is not a
+/// rational combination of the base columns before it. `None` if a column's coefficients are
+/// not rational (run-time lengths or gravity: the combinations would be polynomials in them).
+#[must_use]
+pub fn base_parameters(reg: &Regressor<Poly>) -> Option<BaseParameters> {
+    // Each column as a sparse vector over (row, monomial, atom).
+    let mut vectors: Vec<Sparse> = Vec::new();
+    for column in &reg.columns {
+        let mut v = BTreeMap::new();
+        for (i, e) in column.iter().enumerate() {
+            for (m, t, c) in e.terms() {
+                v.insert((i, m.clone(), t.clone()), c.as_rational()?);
+            }
+        }
+        vectors.push(v);
+    }
+    // Echelon basis: (pivot key, vector with 1 at the pivot, the vector as a combination of
+    // base columns).
+    let mut basis: Vec<Reduced> = Vec::new();
+    let mut base = Vec::new();
+    let mut dependent: Vec<(usize, BTreeMap<usize, Rational>)> = Vec::new();
+    for (k, v) in vectors.into_iter().enumerate() {
+        let mut v = v;
+        let mut combo = BTreeMap::from([(k, Rational::one())]);
+        for (pivot, b, bc) in &basis {
+            let Some(a) = v.get(pivot).cloned() else {
+                continue;
+            };
+            for (key, x) in b {
+                let e = v.entry(key.clone()).or_insert_with(Rational::zero);
+                *e = e.clone() - a.clone() * x.clone();
+                if Zero::is_zero(e) {
+                    v.remove(key);
+                }
+            }
+            for (j, x) in bc {
+                let e = combo.entry(*j).or_insert_with(Rational::zero);
+                *e = e.clone() - a.clone() * x.clone();
+                if Zero::is_zero(e) {
+                    combo.remove(j);
+                }
+            }
+        }
+        match v.iter().next().map(|(key, a)| (key.clone(), a.clone())) {
+            None => {
+                // 0 = Y_k + sum_j combo_j Y_j: Y_k = -sum_j combo_j Y_j.
+                combo.remove(&k);
+                dependent.push((k, combo));
+            }
+            Some((pivot, a)) => {
+                let inv = Rational::one() / a;
+                let v = v
+                    .into_iter()
+                    .map(|(key, x)| (key, x * inv.clone()))
+                    .collect();
+                let combo = combo
+                    .into_iter()
+                    .map(|(j, x)| (j, x * inv.clone()))
+                    .collect();
+                basis.push((pivot, v, combo));
+                base.push(k);
+            }
+        }
+    }
+    // theta_b' = theta_b + sum over dependent j of beta_jb theta_j, Y_j = sum_b beta_jb Y_b.
+    let mut grouping: Vec<Vec<(usize, Rational)>> =
+        base.iter().map(|&b| vec![(b, Rational::one())]).collect();
+    for (j, combo) in dependent {
+        for (b, x) in combo {
+            let beta = -x;
+            if let Some(slot) = base.iter().position(|&c| c == b) {
+                grouping[slot].push((j, beta));
+            }
+        }
+    }
+    Some(BaseParameters {
+        columns: base,
+        grouping,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ring::{int, ratio};
+
+    fn arm(n: usize, gravity: bool, armature: bool, payload: bool) -> ArmSpec {
+        let mut a = ArmSpec::paper(n);
+        a.gravity = if gravity { ratio(981, 100) } else { int(0) };
+        for (i, l) in a.links.iter_mut().enumerate() {
+            let i = i64::try_from(i).unwrap_or(0);
+            l.length = ratio(i + 3, 4);
+            l.mass = ratio(2 * i + 3, 2);
+            l.inertia = ratio(1, i + 7);
+            l.com = (ratio(i + 1, 5), ratio(1 - i, 9));
+            if armature {
+                l.armature = ratio(i + 1, 20);
+                l.damping = ratio(i + 2, 10);
+            }
+        }
+        if payload {
+            a.payload = Some(crate::mechanics::PayloadSpec {
+                mass: ratio(1, 2),
+                inertia: ratio(1, 50),
+                com: (ratio(1, 10), ratio(-1, 20)),
+            });
+        }
+        a
+    }
+
+    fn poly_arm(a: &ArmSpec) -> ArmSpec<Poly> {
+        let c = |r: &Rational| Poly::constant(r.clone());
+        ArmSpec {
+            links: a
+                .links
+                .iter()
+                .map(|l| LinkSpec {
+                    length: c(&l.length),
+                    mass: c(&l.mass),
+                    inertia: c(&l.inertia),
+                    com: (c(&l.com.0), c(&l.com.1)),
+                    armature: c(&l.armature),
+                    damping: c(&l.damping),
+                    frictionloss: c(&l.frictionloss),
+                })
+                .collect(),
+            gravity: c(&a.gravity),
+            payload: a.payload.as_ref().map(|p| crate::mechanics::PayloadSpec {
+                mass: c(&p.mass),
+                inertia: c(&p.inertia),
+                com: (c(&p.com.0), c(&p.com.1)),
+            }),
+        }
+    }
+
+    /// `sum_k columns[k] values[k]`, without the damping columns (the Lagrangian torques have
+    /// no friction).
+    fn combine(reg: &Regressor<Poly>, values: &[(usize, Rational)], n: usize) -> Vec<Expr<Poly>> {
+        (0..n)
+            .map(|i| {
+                let mut t = Expr::zero();
+                for (k, v) in values {
+                    if reg.parameters[*k].kind != Kind::Damping {
+                        t.add_assign(&reg.columns[*k][i].scale(v));
+                    }
+                }
+                t
+            })
+            .collect()
+    }
+
+    #[test]
+    fn regressor_times_standard_parameters_is_the_torque_exactly() {
+        for n in 1..=4 {
+            for (g, a, p) in [
+                (true, false, false),
+                (true, true, true),
+                (false, true, false),
+            ] {
+                let literal = arm(n, g, a, p);
+                let reg = regressor(&poly_arm(&literal));
+                let values = standard_values(&literal, &reg.parameters);
+                let torques = Dynamics::derive(&poly_arm(&literal)).torques;
+                let pairs: Vec<(usize, Rational)> = values.into_iter().enumerate().collect();
+                assert_eq!(combine(&reg, &pairs, n), torques, "n = {n}");
+                // And with the base parameters.
+                let base = base_parameters(&reg).expect("rational");
+                let standard = standard_values(&literal, &reg.parameters);
+                let base_values: Vec<(usize, Rational)> = base
+                    .columns
+                    .iter()
+                    .zip(&base.grouping)
+                    .map(|(&c, group)| {
+                        let v = group.iter().fold(Rational::zero(), |acc, (k, x)| {
+                            acc + x.clone() * standard[*k].clone()
+                        });
+                        (c, v)
+                    })
+                    .collect();
+                assert_eq!(combine(&reg, &base_values, n), torques, "n = {n}, base");
+            }
+        }
+    }
+
+    #[test]
+    fn base_parameters_are_three_per_link_and_group_the_classical_way() {
+        for n in 1..=5 {
+            let reg = regressor(&poly_arm(&arm(n, true, false, false)));
+            let base = base_parameters(&reg).expect("rational");
+            assert_eq!(base.columns.len(), 3 * n, "n = {n}, gravity");
+            let reg = regressor(&poly_arm(&arm(n, false, false, false)));
+            let base = base_parameters(&reg).expect("rational");
+            assert_eq!(base.columns.len(), 3 * n - 2, "n = {n}, no gravity");
+            // Armature: ia1 joins zz1, the others are their own; damping is its own.
+            let reg = regressor(&poly_arm(&arm(n, true, true, false)));
+            let base = base_parameters(&reg).expect("rational");
+            assert_eq!(base.columns.len(), 3 * n + (n - 1) + n, "n = {n}, armature");
+        }
+        // Gautier and Khalil's grouping for three links of lengths 3/4, 1, 5/4 with gravity:
+        // zz1R = zz1 + l1^2 (m2 + m3), mx1R = mx1 + l1 (m2 + m3), zz2R = zz2 + l2^2 m3, ...
+        let reg = regressor(&poly_arm(&arm(3, true, false, false)));
+        let base = base_parameters(&reg).expect("rational");
+        let f = |b: usize| base.formula(b, &reg.parameters);
+        assert_eq!(f(0), "zz1 + 9/16 m2 + 9/16 m3");
+        assert_eq!(f(1), "mx1 + 3/4 m2 + 3/4 m3");
+        assert_eq!(f(2), "my1");
+        assert_eq!(f(3), "zz2 + m3");
+        assert_eq!(f(4), "mx2 + m3");
+        assert_eq!(f(6), "zz3");
+    }
+}
