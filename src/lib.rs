@@ -170,6 +170,7 @@
 mod error;
 pub mod exact;
 mod frozen;
+mod identification;
 pub mod kinematics;
 mod link;
 mod model;
@@ -186,6 +187,7 @@ pub struct ReadmeDoctests;
 
 pub use error::ArmError;
 pub use frozen::Frozen;
+pub use identification::Identification;
 pub use link::{Link, Revolute};
 pub use model::{Model, Payload};
 pub use nalgebra;
@@ -200,7 +202,7 @@ pub mod prelude {
     pub use crate::kinematics::{
         ClosedFormIk, DexterousWorkspace, DlsOptions, IkTarget, TipForce, TipWrench, Workspace,
     };
-    pub use crate::{ArmError, Frozen, Link, Model, Payload, PlanarArm, Revolute};
+    pub use crate::{ArmError, Frozen, Identification, Link, Model, Payload, PlanarArm, Revolute};
     pub use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2};
 }
 

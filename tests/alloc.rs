@@ -235,6 +235,16 @@ fn generated_dynamics_kinematics_and_statics_do_not_allocate() {
     assert_no_allocation("three links", || every_generated_method(&Three::default()));
     assert_no_allocation("five links", || every_generated_method(&Five::default()));
     assert_no_allocation("eight links", || every_generated_method(&Eight::default()));
+    let three = Three::default();
+    let (q, qd, qdd) = (vector::<3>(0.3), vector::<3>(1.1), vector::<3>(2.2));
+    let identify = || {
+        black_box(three.regressor(black_box(&q), black_box(&qd), black_box(&qdd)));
+        black_box(three.standard_parameters());
+        black_box(three.base_regressor(black_box(&q), black_box(&qd), black_box(&qdd)));
+        black_box(three.base_parameters());
+    };
+    identify();
+    assert_no_allocation("identification", identify);
     assert_no_allocation("run-time parameters", || {
         every_generated_method(&Parameterised::default());
     });

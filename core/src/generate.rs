@@ -29,7 +29,7 @@ pub struct Header {
 
 /// A parameter of a generated method.
 #[derive(Clone, Copy)]
-enum Param {
+pub(crate) enum Param {
     /// `&SVector<f64, N>` unpacked into per-joint locals.
     Joints(&'static str, fn(usize) -> Input),
     /// `&Vector2<f64>` unpacked into `u, v`.
@@ -39,18 +39,18 @@ enum Param {
 }
 
 /// Builds a method's return value from its output identifiers.
-type Finish<'a> = Box<dyn std::ops::Fn(&[proc_macro2::Ident]) -> TokenStream + 'a>;
+pub(crate) type Finish<'a> = Box<dyn std::ops::Fn(&[proc_macro2::Ident]) -> TokenStream + 'a>;
 
-struct Fn<'a> {
-    name: &'static str,
-    params: Vec<Param>,
-    ret: TokenStream,
-    doc: String,
-    method: Method,
+pub(crate) struct Fn<'a> {
+    pub(crate) name: &'static str,
+    pub(crate) params: Vec<Param>,
+    pub(crate) ret: TokenStream,
+    pub(crate) doc: String,
+    pub(crate) method: Method,
     /// Statements before the body.
-    touch: TokenStream,
+    pub(crate) touch: TokenStream,
     /// Builds the return value from the output identifiers.
-    finish: Finish<'a>,
+    pub(crate) finish: Finish<'a>,
 }
 
 /// The methods that get a variant reading a frozen block (see [`crate::frozen`]): what
@@ -66,7 +66,7 @@ const HOT: [&str; 5] = [
 /// Emits `f`, or with `frozen = Some((method, slots))` its hidden variant
 /// `__NAME_frozen(&self, __block, ...)` that evaluates `method`, whose parameter-only values
 /// are read from a block of `slots` values.
-fn emit_fn(
+pub(crate) fn emit_fn(
     n: usize,
     f: &Fn<'_>,
     frozen: Option<(&Method, usize)>,
@@ -162,7 +162,7 @@ fn emit_fn(
     })
 }
 
-fn matrix(rows: usize, cols: usize, ids: &[proc_macro2::Ident]) -> TokenStream {
+pub(crate) fn matrix(rows: usize, cols: usize, ids: &[proc_macro2::Ident]) -> TokenStream {
     let rows = (0..rows).map(|r| {
         let row = &ids[r * cols..(r + 1) * cols];
         quote!([#(#row),*])
@@ -170,7 +170,7 @@ fn matrix(rows: usize, cols: usize, ids: &[proc_macro2::Ident]) -> TokenStream {
     quote!(::planar_arm::__private::matrix([#(#rows),*]))
 }
 
-fn vector(ids: &[proc_macro2::Ident]) -> TokenStream {
+pub(crate) fn vector(ids: &[proc_macro2::Ident]) -> TokenStream {
     quote!(::planar_arm::__private::vector([#(#ids),*]))
 }
 

@@ -58,6 +58,7 @@ pub mod compact;
 pub mod emit;
 pub mod frozen;
 pub mod generate;
+pub mod identification;
 pub mod methods;
 pub mod regressor;
 pub mod slp;

@@ -264,6 +264,37 @@ fn potential_energy<C: Coefficient>(arm: &ArmSpec<C>, bodies: &[Body<C>]) -> Exp
     potential
 }
 
+/// The products `omega_a omega_b` of the links' absolute rates, each built once and shared by
+/// every energy derived with the same cache.
+#[derive(Clone, Debug, Default)]
+pub struct RateProducts<C = Rational> {
+    products: std::collections::BTreeMap<(usize, usize), Expr<C>>,
+}
+
+impl<C: Coefficient> RateProducts<C> {
+    /// An empty cache.
+    #[must_use]
+    pub fn new() -> Self {
+        Self {
+            products: std::collections::BTreeMap::new(),
+        }
+    }
+
+    /// `omega_a omega_b` (`a >= b`), `omega_a = qd_1 + ... + qd_(a+1)`.
+    fn product(&mut self, a: usize, b: usize) -> &Expr<C> {
+        self.products.entry((a, b)).or_insert_with(|| {
+            let omega = |k: usize| {
+                let mut w = Expr::zero();
+                for j in 0..=k {
+                    w.add_assign(&Expr::var(rate(j)));
+                }
+                w
+            };
+            omega(a).mul(&omega(b))
+        })
+    }
+}
+
 /// The kinetic energy, built in its pairwise form.
 ///
 /// A body of link `i` has velocity `sum_a omega_a i z_a` (complex plane), `z_a = r_a e^(i theta_a)`
@@ -274,7 +305,11 @@ fn potential_energy<C: Coefficient>(arm: &ArmSpec<C>, bodies: &[Body<C>]) -> Exp
 /// B sin(theta_a - theta_b)`, `A` and `B` summed over the bodies. Squaring the velocity's x
 /// and y expressions gives the same canonical expression (checked in the tests) but creates
 /// every `cos(theta_a + theta_b)` term only to cancel it, and dominated the derive's time.
-fn kinetic_energy<C: Coefficient>(arm: &ArmSpec<C>, bodies: &[Body<C>]) -> Expr<C> {
+fn kinetic_energy<C: Coefficient>(
+    arm: &ArmSpec<C>,
+    bodies: &[Body<C>],
+    rates: &mut RateProducts<C>,
+) -> Expr<C> {
     let n = arm.links.len();
     let zero = || C::from_rational(int(0));
     // diag[a]: twice the coefficient of omega_a^2; cross[a][b] (a > b): (A, B).
@@ -297,18 +332,11 @@ fn kinetic_energy<C: Coefficient>(arm: &ArmSpec<C>, bodies: &[Body<C>]) -> Expr<
         }
         diag[i] = diag[i].clone() + body.joint_inertia.clone();
     }
-    let mut omega = Expr::zero();
-    let omegas: Vec<Expr<C>> = (0..n)
-        .map(|i| {
-            omega = omega.add(&Expr::var(rate(i)));
-            omega.clone()
-        })
-        .collect();
     let half = ratio(1, 2);
     let mut kinetic = Expr::zero();
     for a in 0..n {
         if !diag[a].is_zero() {
-            let w = omegas[a].mul(&omegas[a]);
+            let w = rates.product(a, a);
             kinetic.add_assign(&w.scale_by(&diag[a]).scale(&half));
         }
         for (b, (ca, cb)) in cross[a].iter().enumerate() {
@@ -317,7 +345,7 @@ fn kinetic_energy<C: Coefficient>(arm: &ArmSpec<C>, bodies: &[Body<C>]) -> Expr<
             }
             let angle = Angle::range(b + 1, a + 1);
             let trig = Expr::cos(ca.clone(), angle.clone()).sub(&Expr::sin(cb.clone(), angle));
-            kinetic.add_assign(&omegas[a].mul(&omegas[b]).mul(&trig));
+            kinetic.add_assign(&rates.product(a, b).mul(&trig));
         }
     }
     // The rotors: armature times the joint's own rate squared.
@@ -370,13 +398,27 @@ impl<C: Coefficient> Dynamics<C> {
         Self::of_bodies(arm, &standard_bodies(arm))
     }
 
+    /// The kinetic and potential energies of the arm's geometry (lengths, armature, gravity)
+    /// carrying `bodies`: linear in the bodies' standard parameters.
+    #[must_use]
+    pub fn energies(
+        arm: &ArmSpec<C>,
+        bodies: &[Body<C>],
+        rates: &mut RateProducts<C>,
+    ) -> (Expr<C>, Expr<C>) {
+        (
+            kinetic_energy(arm, bodies, rates),
+            potential_energy(arm, bodies),
+        )
+    }
+
     /// The equations of motion of the arm's links and joints (lengths, armature) carrying
     /// `bodies` in standard parameters instead of its own links' masses. The energies are
     /// linear in the bodies' parameters, which is what the regressor uses.
     #[must_use]
     pub fn of_bodies(arm: &ArmSpec<C>, bodies: &[Body<C>]) -> Self {
         let n = arm.links.len();
-        let kinetic = kinetic_energy(arm, bodies);
+        let kinetic = kinetic_energy(arm, bodies, &mut RateProducts::new());
         let potential = potential_energy(arm, bodies);
         let lagrangian = kinetic.sub(&potential);
         // M as the Hessian of T in the rates, g = dV/dq, and the velocity terms from the
@@ -626,14 +668,18 @@ mod tests {
                 com: (ratio(1, 5), ratio(-2, 7)),
             });
             assert_eq!(
-                kinetic_energy(&arm, &standard_bodies(&arm)),
+                kinetic_energy(&arm, &standard_bodies(&arm), &mut RateProducts::new()),
                 kinetic_energy_by_velocities(&arm),
                 "n = {n}"
             );
             // And over the polynomials, every value a parameter.
             let (symbolic, _) = arm.parameterised();
             assert_eq!(
-                kinetic_energy(&symbolic, &standard_bodies(&symbolic)),
+                kinetic_energy(
+                    &symbolic,
+                    &standard_bodies(&symbolic),
+                    &mut RateProducts::new()
+                ),
                 kinetic_energy_by_velocities(&symbolic),
                 "n = {n}, parameters"
             );

@@ -58,8 +58,14 @@ impl<C: Emit> Derived<C> {
         n < 4 || terms / n <= 2 * cost(rival)
     }
 
+    /// Terms counted by their coefficients' parts: with run-time parameters each part of a
+    /// coefficient is its own product in the expanded program.
     fn terms(exprs: &[&Expr<C>]) -> usize {
-        exprs.iter().map(|e| e.len()).sum()
+        exprs
+            .iter()
+            .flat_map(|e| e.terms())
+            .map(|(_, _, c)| c.parts().len().max(1))
+            .sum()
     }
 
     fn mass_matrix_terms(&self) -> usize {

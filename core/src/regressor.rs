@@ -19,7 +19,7 @@ use std::collections::BTreeMap;
 use num_traits::{One, Zero};
 
 use crate::expr::{Expr, Monomial};
-use crate::mechanics::{ArmSpec, Body, Dynamics, LinkSpec};
+use crate::mechanics::{ArmSpec, Body, Dynamics, LinkSpec, RateProducts};
 use crate::poly::{Param, ParamMonomial, Poly};
 use crate::ring::{Coefficient, Rational};
 use crate::trig::Trig;
@@ -39,6 +39,9 @@ pub enum Kind {
     Armature,
     /// Viscous friction coefficient (`damping`), N m s/rad.
     Damping,
+    /// Coulomb friction (`frictionloss`), N m. Its column, `sign(qd_i)` on row `i`, is not an
+    /// expression of the engine: [`regressor`] leaves it out, the generated code adds it.
+    Frictionloss,
 }
 
 /// A standard parameter: what it is and whose.
@@ -90,10 +93,12 @@ fn linear_part(c: &Poly, symbol: &Param) -> Option<Poly> {
     found.then_some(out)
 }
 
-/// Derives the regressor of `arm` (its lengths, gravity, and which joints have armature and
-/// damping; its inertial values are what the regressor multiplies).
+/// The standard parameters of `arm`, in column order (see [`Regressor::parameters`]), with
+/// `fc` (Coulomb friction) of the joints that have it last; and the arm's geometry and bodies
+/// with a symbol for each (named as the parameter), from which the energies and torques are
+/// linear in them.
 #[must_use]
-pub fn regressor(arm: &ArmSpec<Poly>) -> Regressor<Poly> {
+pub fn symbolic(arm: &ArmSpec<Poly>) -> (Vec<Standard>, ArmSpec<Poly>, Vec<Body<Poly>>) {
     let n = arm.links.len();
     let mut parameters = Vec::new();
     let mut bodies = Vec::new();
@@ -143,12 +148,27 @@ pub fn regressor(arm: &ArmSpec<Poly>) -> Regressor<Poly> {
             ..link.clone()
         };
     }
-    let damped: Vec<usize> = (0..n)
-        .filter(|&j| !arm.links[j].damping.is_zero())
-        .collect();
-    for &j in &damped {
-        push(format!("fv{}", j + 1), Kind::Damping, Some(j));
+    for j in 0..n {
+        if !arm.links[j].damping.is_zero() {
+            push(format!("fv{}", j + 1), Kind::Damping, Some(j));
+        }
     }
+    for j in 0..n {
+        if !arm.links[j].frictionloss.is_zero() {
+            push(format!("fc{}", j + 1), Kind::Frictionloss, Some(j));
+        }
+    }
+    (parameters, geometry, bodies)
+}
+
+/// Derives the regressor of `arm` (its lengths, gravity, and which joints have armature and
+/// damping; its inertial values are what the regressor multiplies). Coulomb friction's columns
+/// are left out (see [`Kind::Frictionloss`]).
+#[must_use]
+pub fn regressor(arm: &ArmSpec<Poly>) -> Regressor<Poly> {
+    let n = arm.links.len();
+    let (mut parameters, geometry, bodies) = symbolic(arm);
+    parameters.retain(|s| s.kind != Kind::Frictionloss);
     let torques = Dynamics::of_bodies(&geometry, &bodies).torques;
     let columns = parameters
         .iter()
@@ -228,6 +248,7 @@ pub fn standard_values<C: Coefficient>(arm: &ArmSpec<C>, parameters: &[Standard]
                 (Kind::Mass, Some(b)) => b.mass.clone(),
                 (Kind::Armature, _) => arm.links[s.link.unwrap_or(0)].armature.clone(),
                 (Kind::Damping, _) => arm.links[s.link.unwrap_or(0)].damping.clone(),
+                (Kind::Frictionloss, _) => arm.links[s.link.unwrap_or(0)].frictionloss.clone(),
                 (_, None) => C::from_rational(Rational::zero()),
             }
         })
@@ -277,45 +298,93 @@ type Key = (usize, Monomial, Trig);
 /// A sparse vector over [`Key`]s.
 type Sparse = BTreeMap<Key, Rational>;
 
-/// A reduced basis vector: its pivot, the vector (1 at the pivot), and the vector as a
-/// combination of the base columns.
-type Reduced = (Key, Sparse, BTreeMap<usize, Rational>);
-
 /// Exact elimination on the columns, in order: a column is a base column when it is not a
 /// rational combination of the base columns before it. `None` if a column's coefficients are
 /// not rational (run-time lengths or gravity: the combinations would be polynomials in them).
 #[must_use]
 pub fn base_parameters(reg: &Regressor<Poly>) -> Option<BaseParameters> {
     // Each column as a sparse vector over (row, monomial, atom).
-    let mut vectors: Vec<Sparse> = Vec::new();
-    for column in &reg.columns {
+    let mut vectors = Vec::new();
+    for (k, column) in reg.columns.iter().enumerate() {
         let mut v = BTreeMap::new();
         for (i, e) in column.iter().enumerate() {
             for (m, t, c) in e.terms() {
                 v.insert((i, m.clone(), t.clone()), c.as_rational()?);
             }
         }
-        vectors.push(v);
+        vectors.push((k, v));
     }
-    // Echelon basis: (pivot key, vector with 1 at the pivot, the vector as a combination of
-    // base columns).
-    let mut basis: Vec<Reduced> = Vec::new();
+    Some(eliminate(vectors))
+}
+
+/// A sparse vector over key indices, sorted.
+type Indexed = Vec<(u32, Rational)>;
+
+/// `v - a w`, merged in order, zeros dropped.
+fn axpy(v: &Indexed, a: &Rational, w: &Indexed) -> Indexed {
+    let mut out = Vec::with_capacity(v.len() + w.len());
+    let (mut i, mut j) = (0, 0);
+    while i < v.len() || j < w.len() {
+        match (v.get(i), w.get(j)) {
+            (Some((ki, x)), Some((kj, y))) if ki == kj => {
+                let z = x.clone() - a.clone() * y.clone();
+                if !Zero::is_zero(&z) {
+                    out.push((*ki, z));
+                }
+                i += 1;
+                j += 1;
+            }
+            (Some((ki, x)), Some((kj, _))) if ki < kj => {
+                out.push((*ki, x.clone()));
+                i += 1;
+            }
+            (Some((ki, x)), None) => {
+                out.push((*ki, x.clone()));
+                i += 1;
+            }
+            (_, Some((kj, y))) => {
+                out.push((*kj, -(a.clone() * y.clone())));
+                j += 1;
+            }
+            (None, None) => break,
+        }
+    }
+    out
+}
+
+/// Exact elimination on `(column index, vector)` pairs, in order.
+fn eliminate(vectors: Vec<(usize, Sparse)>) -> BaseParameters {
+    // Keys as integers: the elimination compares them constantly, and the engine runs
+    // unoptimised in a user's build.
+    let mut keys: BTreeMap<Key, u32> = BTreeMap::new();
+    for (_, v) in &vectors {
+        for key in v.keys() {
+            let next = u32::try_from(keys.len()).unwrap_or(u32::MAX);
+            keys.entry(key.clone()).or_insert(next);
+        }
+    }
+    let vectors: Vec<(usize, Indexed)> = vectors
+        .into_iter()
+        .map(|(k, v)| {
+            let mut iv: Indexed = v.into_iter().map(|(key, x)| (keys[&key], x)).collect();
+            iv.sort_by_key(|e| e.0);
+            (k, iv)
+        })
+        .collect();
+    // Echelon basis: (pivot, vector with 1 at the pivot, the vector as a combination of base
+    // columns).
+    let mut basis: Vec<(u32, Indexed, BTreeMap<usize, Rational>)> = Vec::new();
     let mut base = Vec::new();
     let mut dependent: Vec<(usize, BTreeMap<usize, Rational>)> = Vec::new();
-    for (k, v) in vectors.into_iter().enumerate() {
+    for (k, v) in vectors {
         let mut v = v;
         let mut combo = BTreeMap::from([(k, Rational::one())]);
         for (pivot, b, bc) in &basis {
-            let Some(a) = v.get(pivot).cloned() else {
+            let Ok(at) = v.binary_search_by_key(pivot, |e| e.0) else {
                 continue;
             };
-            for (key, x) in b {
-                let e = v.entry(key.clone()).or_insert_with(Rational::zero);
-                *e = e.clone() - a.clone() * x.clone();
-                if Zero::is_zero(e) {
-                    v.remove(key);
-                }
-            }
+            let a = v[at].1.clone();
+            v = axpy(&v, &a, b);
             for (j, x) in bc {
                 let e = combo.entry(*j).or_insert_with(Rational::zero);
                 *e = e.clone() - a.clone() * x.clone();
@@ -324,7 +393,7 @@ pub fn base_parameters(reg: &Regressor<Poly>) -> Option<BaseParameters> {
                 }
             }
         }
-        match v.iter().next().map(|(key, a)| (key.clone(), a.clone())) {
+        match v.first().cloned() {
             None => {
                 // 0 = Y_k + sum_j combo_j Y_j: Y_k = -sum_j combo_j Y_j.
                 combo.remove(&k);
@@ -356,10 +425,90 @@ pub fn base_parameters(reg: &Regressor<Poly>) -> Option<BaseParameters> {
             }
         }
     }
-    Some(BaseParameters {
+    BaseParameters {
         columns: base,
         grouping,
-    })
+    }
+}
+
+/// The base parameters from the energies instead of the torques: the torques are Lagrange's
+/// operator applied to `L = T - V`, which is linear in the parameters, and for `L` quadratic
+/// in the rates plus a function of the angles the operator gives zero exactly when `L` is a
+/// constant (its `qdd` part is M, so T's part vanishes, then dV/dq = 0). So the torque columns
+/// satisfy exactly the rational relations that the energy columns satisfy up to constants:
+/// elimination on `L`'s columns with constants dropped gives the same base parameters and
+/// groupings as on the torques' ([`base_parameters`]; checked equal in the tests), without
+/// deriving the torques. Damping and Coulomb friction (not in `L`) are each their own base
+/// parameter, kept in order. `None` if a coefficient is not rational.
+#[must_use]
+pub fn base_parameters_from_energies(
+    arm: &ArmSpec<Poly>,
+) -> Option<(Vec<Standard>, BaseParameters)> {
+    let (parameters, _, _) = symbolic(arm);
+    // The geometry over the rationals: lengths and gravity must be numbers.
+    let n = arm.links.len();
+    let zero = Rational::zero();
+    let geometry = ArmSpec {
+        links: arm
+            .links
+            .iter()
+            .map(|l| {
+                Some(LinkSpec {
+                    length: l.length.as_rational()?,
+                    ..LinkSpec::rod(Rational::one(), Rational::one())
+                })
+            })
+            .collect::<Option<Vec<_>>>()?,
+        gravity: arm.gravity.as_rational()?,
+        payload: None,
+    };
+    // Each column of L = T - V directly: the energies of the geometry carrying one body whose
+    // parameters are all zero but that one (or one rotor), over the rationals.
+    let mut vectors = Vec::new();
+    let mut friction = Vec::new();
+    let mut rates = RateProducts::<Rational>::new();
+    for (k, s) in parameters.iter().enumerate() {
+        let link = s.link.unwrap_or(n - 1);
+        let unit = |kind: Kind| {
+            if s.kind == kind {
+                Rational::one()
+            } else {
+                zero.clone()
+            }
+        };
+        let mut g = geometry.clone();
+        let bodies = match s.kind {
+            Kind::Damping | Kind::Frictionloss => {
+                friction.push(k);
+                continue;
+            }
+            Kind::Armature => {
+                g.links[link].armature = Rational::one();
+                Vec::new()
+            }
+            _ => vec![Body {
+                link,
+                mass: unit(Kind::Mass),
+                first_moment: (unit(Kind::Mx), unit(Kind::My)),
+                joint_inertia: unit(Kind::Zz),
+            }],
+        };
+        let (kinetic, potential) = Dynamics::energies(&g, &bodies, &mut rates);
+        let mut v: Sparse = BTreeMap::new();
+        for (m, t, c) in kinetic.sub(&potential).terms() {
+            if m.degree() == 0 && *t == Trig::One {
+                continue;
+            }
+            v.insert((0, m.clone(), t.clone()), c.clone());
+        }
+        vectors.push((k, v));
+    }
+    let mut base = eliminate(vectors);
+    for k in friction {
+        base.columns.push(k);
+        base.grouping.push(vec![(k, Rational::one())]);
+    }
+    Some((parameters, base))
 }
 
 #[cfg(test)]
@@ -461,6 +610,26 @@ mod tests {
                     })
                     .collect();
                 assert_eq!(combine(&reg, &base_values, n), torques, "n = {n}, base");
+            }
+        }
+    }
+
+    #[test]
+    fn energies_give_the_torques_base_parameters() {
+        for n in 1..=4 {
+            for (g, a, p) in [
+                (true, false, false),
+                (true, true, true),
+                (false, true, true),
+            ] {
+                let arm = poly_arm(&arm(n, g, a, p));
+                let reg = regressor(&arm);
+                let from_torques = base_parameters(&reg).expect("rational");
+                let (params, from_energies) =
+                    base_parameters_from_energies(&arm).expect("rational");
+                assert_eq!(params[..reg.parameters.len()], reg.parameters[..]);
+                assert_eq!(from_energies.columns, from_torques.columns, "n = {n}");
+                assert_eq!(from_energies.grouping, from_torques.grouping, "n = {n}");
             }
         }
     }

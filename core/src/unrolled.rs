@@ -3,7 +3,7 @@
 //! the arm's exact constants folded in. They are candidates next to the expanded formulas
 //! (see [`methods`](crate::methods)).
 
-use num_traits::{Signed, Zero};
+use num_traits::{One, Signed, Zero};
 
 use crate::expr::Expr;
 use crate::mechanics::ArmSpec;
@@ -127,8 +127,48 @@ fn body_nodes<C: Emit>(p: &mut Program, arm: &ArmSpec<C>) -> Vec<BodyNodes> {
 /// carries one rigid body (the payload merged into the last), and
 /// each joint's rotor adds `armature qdd_i`.
 pub(crate) fn newton_euler<C: Emit>(p: &mut Program, arm: &ArmSpec<C>, terms: Terms) -> Vec<Id> {
-    let n = arm.links.len();
     let bodies = body_nodes(p, arm);
+    newton_euler_of(p, arm, &bodies, None, terms)
+}
+
+/// Which standard parameter is one in [`newton_euler_unit`].
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub(crate) enum Unit {
+    Zz(usize),
+    Mx(usize),
+    My(usize),
+    Mass(usize),
+    Armature(usize),
+}
+
+/// The torques per unit of one standard parameter: the recursion over the arm's geometry
+/// carrying bodies whose parameters are all zero but `unit`, which is one. The torques are
+/// linear in those parameters, so this is the parameter's regressor column; the zeros fold
+/// away, and the kinematics (rotations, velocities, accelerations) are shared nodes between the
+/// columns.
+pub(crate) fn newton_euler_unit<C: Emit>(p: &mut Program, arm: &ArmSpec<C>, unit: Unit) -> Vec<Id> {
+    let n = arm.links.len();
+    let (zero, one) = (p.constant(Rational::zero()), p.constant(Rational::one()));
+    let pick = |hit: bool| if hit { one } else { zero };
+    let bodies: Vec<BodyNodes> = (0..n)
+        .map(|i| BodyNodes {
+            mass: pick(unit == Unit::Mass(i)),
+            first: (pick(unit == Unit::Mx(i)), pick(unit == Unit::My(i))),
+            inertia: pick(unit == Unit::Zz(i)),
+        })
+        .collect();
+    let armature: Vec<Id> = (0..n).map(|j| pick(unit == Unit::Armature(j))).collect();
+    newton_euler_of(p, arm, &bodies, Some(&armature), Terms::ALL)
+}
+
+fn newton_euler_of<C: Emit>(
+    p: &mut Program,
+    arm: &ArmSpec<C>,
+    bodies: &[BodyNodes],
+    armature: Option<&[Id]>,
+    terms: Terms,
+) -> Vec<Id> {
+    let n = arm.links.len();
     let zero = p.constant(Rational::zero());
     let g = if terms.gravity {
         p.coefficient(&arm.gravity)
@@ -142,7 +182,7 @@ pub(crate) fn newton_euler<C: Emit>(p: &mut Program, arm: &ArmSpec<C>, terms: Te
     let mut force = Vec::with_capacity(n);
     let mut alpha = Vec::with_capacity(n);
     let mut accel = Vec::with_capacity(n);
-    for (i, (link, body)) in arm.links.iter().zip(&bodies).enumerate() {
+    for (i, (link, body)) in arm.links.iter().zip(bodies).enumerate() {
         let cs = joint_trig(p, i);
         let a = rotate_back(p, cs, end);
         p.set_name(a.0, format!("ax{}", i + 1));
@@ -212,7 +252,10 @@ pub(crate) fn newton_euler<C: Emit>(p: &mut Program, arm: &ArmSpec<C>, terms: Te
         tau[i] = moment;
         if terms.accelerations {
             // The rotor turns with the joint's own rate: its torque is not transmitted inwards.
-            let armature = p.coefficient(&link.armature);
+            let armature = match armature {
+                Some(a) => a[i],
+                None => p.coefficient(&link.armature),
+            };
             let qdd = p.input(Input::Qdd(i));
             let rotor = p.mul(armature, qdd);
             tau[i] = p.add(moment, rotor);

@@ -64,6 +64,10 @@ fn emit<C: Emit>(
     let mut tokens =
         generate(&derived, header).map_err(|e| emit_error(arm, &derived, &e).to_compile_error())?;
     tokens.extend(planar_arm_core::generate::closed_forms(&derived, header));
+    tokens.extend(
+        planar_arm_core::identification::identification(&derived, header)
+            .map_err(|e| emit_error(arm, &derived, &e).to_compile_error())?,
+    );
     Ok(tokens)
 }
 

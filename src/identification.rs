@@ -1,0 +1,67 @@
+//! [`Identification`]: the regressor and the exact base parameters of a derived arm.
+
+use nalgebra::{SMatrix, SVector};
+
+use crate::PlanarArm;
+
+/// Identification of an arm's inertial and friction parameters from measured torques.
+///
+/// The joint torques are linear in the *standard parameters* `theta` (per link the moment of
+/// inertia about the joint `zz = Izz + m (cx^2 + cy^2)`, the first moments `mx = m cx` and
+/// `my = m cy`, the mass `m`; the payload's; per joint armature, damping and Coulomb friction
+/// where the arm has them): `inverse_dynamics(q, qd, qdd) == regressor(q, qd, qdd) * theta`.
+/// Only combinations of them, the *base parameters*, can be found from torques. The derive
+/// finds them exactly at compile time (rational elimination on the regressor's columns, no
+/// rank threshold), and [`BASE_PARAMETERS`](Self::BASE_PARAMETERS) shows each as a formula
+/// in the standard ones (`zz1 + 9/16 m2 + 9/16 m3`: Gautier and Khalil's grouping).
+///
+/// Derived for every arm whose lengths and gravity are literals (its masses, inertias,
+/// centres of mass, payload, armature and friction may be run-time parameters). `P` is the
+/// number of standard parameters, `B` of base parameters.
+///
+/// ```
+/// use planar_arm::prelude::*;
+///
+/// #[derive(PlanarArm)]
+/// #[arm(gravity = 9.81)]
+/// struct Two {
+///     #[arm(length = 0.5, mass = 2.0)]
+///     upper: Revolute,
+///     #[arm(length = 0.4, mass = self.m2, damping = 0.1)]
+///     fore: Revolute,
+///     m2: f64,
+/// }
+///
+/// let arm = Two { upper: Revolute, fore: Revolute, m2: 1.5 };
+/// // zz, mx, my of two links, two masses, one damping: 9 standard, 7 base parameters.
+/// assert_eq!(<Two as Identification<2, 9, 7>>::BASE_PARAMETERS[0], "zz1 + 1/4 m2");
+/// let (q, qd, qdd) = (Vector2::new(0.3, -0.8), Vector2::new(1.0, 0.5), Vector2::new(-2.0, 1.0));
+/// let tau = arm.inverse_dynamics(&q, &qd, &qdd);
+/// assert!((arm.regressor(&q, &qd, &qdd) * arm.standard_parameters() - tau).norm() < 1e-12);
+/// assert!((arm.base_regressor(&q, &qd, &qdd) * arm.base_parameters() - tau).norm() < 1e-12);
+/// ```
+pub trait Identification<const N: usize, const P: usize, const B: usize>: PlanarArm<N> {
+    /// The standard parameters' names, in column order (`zz1`, `mx1`, `my1`, ..., `m1`, ...,
+    /// `ia1`, `fv1`, `fc1`).
+    const PARAMETERS: [&'static str; P];
+    /// Each base parameter as an exact formula in the standard parameters.
+    const BASE_PARAMETERS: [&'static str; B];
+    /// The regressor Y(q, qd, qdd), N x P.
+    fn regressor(
+        &self,
+        q: &SVector<f64, N>,
+        qd: &SVector<f64, N>,
+        qdd: &SVector<f64, N>,
+    ) -> SMatrix<f64, N, P>;
+    /// The standard parameters' values now.
+    fn standard_parameters(&self) -> SVector<f64, P>;
+    /// The base regressor, N x B: the regressor's columns of the base parameters.
+    fn base_regressor(
+        &self,
+        q: &SVector<f64, N>,
+        qd: &SVector<f64, N>,
+        qdd: &SVector<f64, N>,
+    ) -> SMatrix<f64, N, B>;
+    /// The base parameters' values now.
+    fn base_parameters(&self) -> SVector<f64, B>;
+}
