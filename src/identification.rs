@@ -15,9 +15,11 @@ use crate::PlanarArm;
 /// rank threshold), and [`BASE_PARAMETERS`](Self::BASE_PARAMETERS) shows each as a formula
 /// in the standard ones (`zz1 + 9/16 m2 + 9/16 m3`: Gautier and Khalil's grouping).
 ///
-/// Derived for every arm whose lengths and gravity are literals (its masses, inertias,
-/// centres of mass, payload, armature and friction may be run-time parameters). `P` is the
-/// number of standard parameters, `B` of base parameters.
+/// Derived for every arm of up to 20 links whose lengths and gravity are literals (its masses,
+/// inertias, centres of mass, payload, armature and friction may be run-time parameters):
+/// beyond 20 links the exact elimination would cost more compile time than the rest of the
+/// derive (docs/performance.md). `P` is the number of standard parameters, `B` of base
+/// parameters.
 ///
 /// ```
 /// use planar_arm::prelude::*;

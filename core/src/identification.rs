@@ -155,12 +155,21 @@ impl<C: Emit> Derived<C> {
     }
 }
 
+/// The longest arm that gets an `Identification` impl. The exact elimination grows about as
+/// the fifth power of the links and runs unoptimised in a user's build: at 30 links it took 40
+/// of a 100 s build (docs/performance.md), past the compile-time budget, for chains (snakes,
+/// discretised cables) that are rarely identified link by link.
+pub const MAX_LINKS: usize = 20;
+
 /// `impl ::planar_arm::Identification<N, P, B>` for the arm, or nothing when its lengths or
-/// gravity are run-time parameters.
+/// gravity are run-time parameters or it has more than [`MAX_LINKS`] links.
 ///
 /// # Errors
 /// If a constant does not fit in `f64`.
 pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream, EmitError> {
+    if d.arm.links.len() > MAX_LINKS {
+        return Ok(TokenStream::new());
+    }
     let Some(id) = d.identification() else {
         return Ok(TokenStream::new());
     };

@@ -281,7 +281,7 @@ impl<C: Coefficient> RateProducts<C> {
     }
 
     /// `omega_a omega_b` (`a >= b`), `omega_a = qd_1 + ... + qd_(a+1)`.
-    fn product(&mut self, a: usize, b: usize) -> &Expr<C> {
+    pub(crate) fn product(&mut self, a: usize, b: usize) -> &Expr<C> {
         self.products.entry((a, b)).or_insert_with(|| {
             let omega = |k: usize| {
                 let mut w = Expr::zero();
