@@ -19,7 +19,8 @@ use crate::PlanarArm;
 /// inertias, centres of mass, payload, armature and friction may be run-time parameters):
 /// beyond 20 links the exact elimination would cost more compile time than the rest of the
 /// derive (docs/performance.md). `P` is the number of standard parameters, `B` of base
-/// parameters.
+/// parameters. docs/identification.md lists the parameters, compares the groupings with
+/// Gautier and Khalil's rules and gives operation counts.
 ///
 /// ```
 /// use planar_arm::prelude::*;
