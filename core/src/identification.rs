@@ -28,7 +28,8 @@ fn to_poly<C: Emit>(c: &C) -> Poly {
         .fold(Poly::default(), |acc, (m, r)| acc + Poly::monomial(m, r))
 }
 
-fn poly_arm<C: Emit>(arm: &ArmSpec<C>) -> ArmSpec<Poly> {
+/// The arm over the polynomials (a literal arm's values as constants).
+pub(crate) fn poly_arm<C: Emit>(arm: &ArmSpec<C>) -> ArmSpec<Poly> {
     ArmSpec {
         links: arm
             .links

@@ -546,6 +546,7 @@ pub fn base_parameters_from_energies(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::identification::poly_arm;
     use crate::ring::{int, ratio};
 
     fn arm(n: usize, gravity: bool, armature: bool, payload: bool) -> ArmSpec {
@@ -570,31 +571,6 @@ mod tests {
             });
         }
         a
-    }
-
-    fn poly_arm(a: &ArmSpec) -> ArmSpec<Poly> {
-        let c = |r: &Rational| Poly::constant(r.clone());
-        ArmSpec {
-            links: a
-                .links
-                .iter()
-                .map(|l| LinkSpec {
-                    length: c(&l.length),
-                    mass: c(&l.mass),
-                    inertia: c(&l.inertia),
-                    com: (c(&l.com.0), c(&l.com.1)),
-                    armature: c(&l.armature),
-                    damping: c(&l.damping),
-                    frictionloss: c(&l.frictionloss),
-                })
-                .collect(),
-            gravity: c(&a.gravity),
-            payload: a.payload.as_ref().map(|p| crate::mechanics::PayloadSpec {
-                mass: c(&p.mass),
-                inertia: c(&p.inertia),
-                com: (c(&p.com.0), c(&p.com.1)),
-            }),
-        }
     }
 
     /// `sum_k columns[k] values[k]`, without the damping columns (the Lagrangian torques have
