@@ -44,10 +44,15 @@
 //! | [`forward_dynamics_crba`] | CRBA + RNEA bias + Cholesky solve | O(N^3) |
 //! | [`kinetic_energy`], [`potential_energy`] | direct sums over COM velocities / heights, payload as its own body | O(N) |
 //! | [`tip_position`], [`joint_positions`], [`jacobian`] | forward kinematics; the Jacobian column of joint j is `perp(tip - joint_j)` | O(N) / O(N) / O(N) |
+//! | [`regressor`] | the torques of each body's four inertial parameters per unit value, by one outward Newton-Euler pass and each body's wrench moved to every joint before it (as Pinocchio's `computeJointTorqueRegressor`) | O(N^2) |
 
 use nalgebra::{Matrix3, Point2, SMatrix, SVector, Vector2, Vector3};
 
 use crate::Model;
+
+mod regressor;
+
+pub use regressor::{link_parameters, payload_parameters, regressor, Regressor};
 
 /// Unit vectors `(cos phi_i, sin phi_i)` along each link, from the cumulative absolute angles.
 #[inline(always)]

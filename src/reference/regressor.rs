@@ -1,0 +1,182 @@
+//! The numeric joint-torque regressor: the columns of `tau = Y(q, qd, qdd) theta` by the
+//! Newton-Euler recursion, the way Pinocchio's `computeJointTorqueRegressor` builds them.
+
+use nalgebra::{SMatrix, SVector, Vector2, Vector4};
+
+use super::{cross, link_directions, perp, sign};
+use crate::{Link, Model, Payload};
+
+/// The regressor of the standard parameters at one state, in blocks.
+///
+/// Body `j` (a link, or the payload) enters the torques through four parameters, in its own
+/// frame and about its own joint (the payload's are in the last link's frame, about the last
+/// joint):
+/// `[zz, mx, my, m] = [Izz + m |c|^2, m cx, m cy, m]`. Its block is the `N x 4` matrix of the
+/// torques those four parameters produce per unit value. A joint's armature, damping and
+/// Coulomb friction act on that joint alone, so their columns are `qdd_i`, `qd_i` and
+/// `sign(qd_i)` (with `sign(0) = 0`) in row `i` and zero elsewhere; they are kept as vectors.
+///
+/// [`column`](Self::column) reads a column by the names of the generated
+/// [`Identification::PARAMETERS`](crate::Identification::PARAMETERS), so the generated
+/// regressor can be checked column by column against this one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Regressor<const N: usize> {
+    /// Per link, the torques of `[zz, mx, my, m]`.
+    pub links: [SMatrix<f64, N, 4>; N],
+    /// The payload's `[zz, mx, my, m]`, in the last link's frame about the last joint.
+    pub payload: SMatrix<f64, N, 4>,
+    /// `qdd`: the armature column of joint `i` is `armature[i]` in row `i`.
+    pub armature: SVector<f64, N>,
+    /// `qd`: the damping (viscous friction) columns, one per joint, on the diagonal.
+    pub damping: SVector<f64, N>,
+    /// `sign(qd)`: the Coulomb friction columns, one per joint, on the diagonal.
+    pub coulomb: SVector<f64, N>,
+}
+
+impl<const N: usize> Regressor<N> {
+    /// The column of the standard parameter called `name` (`zz2`, `mx1`, `myp`, `m3`, `ia1`,
+    /// `fv2`, `fc1`; links count from 1, `p` is the payload), or `None` for a name that is not
+    /// one of them.
+    #[must_use]
+    pub fn column(&self, name: &str) -> Option<SVector<f64, N>> {
+        let split = name.find(|c: char| c.is_ascii_digit() || c == 'p')?;
+        let (kind, index) = name.split_at(split);
+        let block = if index == "p" {
+            &self.payload
+        } else {
+            let j: usize = index.parse().ok()?;
+            if !(1..=N).contains(&j) || index.starts_with('0') {
+                return None;
+            }
+            match kind {
+                "ia" | "fv" | "fc" => {
+                    let diag = match kind {
+                        "ia" => self.armature,
+                        "fv" => self.damping,
+                        _ => self.coulomb,
+                    };
+                    let mut col = SVector::zeros();
+                    col[j - 1] = diag[j - 1];
+                    return Some(col);
+                }
+                _ => &self.links[j - 1],
+            }
+        };
+        let k = ["zz", "mx", "my", "m"].iter().position(|&k| k == kind)?;
+        Some(block.column(k).into_owned())
+    }
+
+    /// `Y theta` for the model's own parameter values: the torques
+    /// [`inverse_dynamics`](super::inverse_dynamics) computes.
+    #[must_use]
+    pub fn torques(&self, model: &Model<N>) -> SVector<f64, N> {
+        let mut tau = self.payload * payload_parameters(model);
+        for (block, link) in self.links.iter().zip(model.links.iter()) {
+            tau += block * link_parameters(link);
+        }
+        for (i, link) in model.links.iter().enumerate() {
+            tau[i] += link.armature * self.armature[i]
+                + link.damping * self.damping[i]
+                + link.frictionloss * self.coulomb[i];
+        }
+        tau
+    }
+}
+
+/// A link's `[zz, mx, my, m]`: inertia about its joint, first moments, mass.
+#[must_use]
+pub fn link_parameters(link: &Link) -> Vector4<f64> {
+    let m = link.mass;
+    Vector4::new(
+        link.inertia_about_joint(),
+        m * link.com.x,
+        m * link.com.y,
+        m,
+    )
+}
+
+/// The payload's `[zz, mx, my, m]` as a body of the last link: in that link's frame, about its
+/// joint (the payload's centre of mass is `length + com.x` along the link).
+#[must_use]
+pub fn payload_parameters<const N: usize>(model: &Model<N>) -> Vector4<f64> {
+    let Payload {
+        mass: m,
+        inertia,
+        com,
+    } = model.payload;
+    let c = com + Vector2::new(model.links.last().map_or(0.0, |l| l.length), 0.0);
+    Vector4::new(inertia + m * c.norm_squared(), m * c.x, m * c.y, m)
+}
+
+/// The regressor at `(q, qd, qdd)`: it depends on the model's lengths and gravity only.
+///
+/// An outward pass gives each body's joint position `p_j`, direction `u_j`, angular rate and
+/// acceleration, and joint acceleration `a_j` (gravity as an upward base acceleration). A body
+/// with first moment `h` (world frame, from its joint) and inertia `zz` about its joint feels
+/// the force `f = m a_j + alpha perp(h) - omega^2 h` and the moment
+/// `n = zz alpha + h x a_j` about its joint, linear in `[zz, mx, my, m]` since
+/// `h = mx u_j + my perp(u_j)`. Its torque at joint `i <= j` is `n + (p_j - p_i) x f`, the
+/// moment about the origin less `p_i x f`. O(N^2), no allocation.
+#[must_use]
+pub fn regressor<const N: usize>(
+    model: &Model<N>,
+    q: &SVector<f64, N>,
+    qd: &SVector<f64, N>,
+    qdd: &SVector<f64, N>,
+) -> Regressor<N> {
+    let dirs = link_directions(q);
+    let mut joints = [Vector2::zeros(); N];
+    let mut out = Regressor {
+        links: [SMatrix::zeros(); N],
+        payload: SMatrix::zeros(),
+        armature: *qdd,
+        damping: *qd,
+        coulomb: qd.map(sign),
+    };
+    let mut p = Vector2::zeros();
+    let mut a = Vector2::new(0.0, model.gravity);
+    let (mut omega, mut alpha) = (0.0, 0.0);
+    // The payload is a body of the last link's frame about the last joint (the base's for an
+    // arm of no links): the last block starts where its link's did.
+    let mut last = (p, Vector2::x(), a);
+    for j in 0..N {
+        omega += qd[j];
+        alpha += qdd[j];
+        joints[j] = p;
+        last = (p, dirs[j], a);
+        out.links[j] = body_block(&joints[..=j], p, dirs[j], omega, alpha, a);
+        let l = model.links[j].length;
+        a += (perp(dirs[j]) * alpha - dirs[j] * (omega * omega)) * l;
+        p += dirs[j] * l;
+    }
+    let (p, u, a) = last;
+    out.payload = body_block(&joints, p, u, omega, alpha, a);
+    out
+}
+
+/// The `N x 4` block of a body at joint position `p` with direction `u`, rate `omega`,
+/// acceleration `alpha` and joint acceleration `a`, seen from the joints `joints` (those at or
+/// before it; later rows stay zero).
+#[inline(always)]
+fn body_block<const N: usize>(
+    joints: &[Vector2<f64>],
+    p: Vector2<f64>,
+    u: Vector2<f64>,
+    omega: f64,
+    alpha: f64,
+    a: Vector2<f64>,
+) -> SMatrix<f64, N, 4> {
+    let w2 = omega * omega;
+    let v = perp(u);
+    // Per parameter: the force and the moment about the body's joint per unit value.
+    let forces = [Vector2::zeros(), v * alpha - u * w2, -u * alpha - v * w2, a];
+    let moments = [alpha, cross(u, a), cross(v, a), 0.0];
+    let mut block = SMatrix::<f64, N, 4>::zeros();
+    for (k, (f, n)) in forces.iter().zip(moments).enumerate() {
+        let about_origin = n + cross(p, *f);
+        for (i, joint) in joints.iter().enumerate() {
+            block[(i, k)] = about_origin - cross(*joint, *f);
+        }
+    }
+    block
+}
