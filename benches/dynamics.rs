@@ -43,84 +43,9 @@ equal_arm!(Equal4, a, b, c, d);
 equal_arm!(Equal6, a, b, c, d, e, f);
 equal_arm!(Equal8, a, b, c, d, e, f, g, h);
 
-// Random rational parameters (drawn once with a fixed seed and written here).
-#[derive(PlanarArm, Default, Debug)]
-#[arm(gravity = 9.80665)]
-struct Random1 {
-    #[arm(length = 23/8, mass = 6/1, inertia = 27/50, com = 23/20)]
-    a: Revolute,
-}
-
-#[derive(PlanarArm, Default, Debug)]
-#[arm(gravity = 9.80665)]
-struct Random2 {
-    #[arm(length = 6/1, mass = 3/1, inertia = 6/25, com = 12/5)]
-    a: Revolute,
-    #[arm(length = 4/1, mass = 38/5, inertia = 1/25, com = 4/1)]
-    b: Revolute,
-}
-
-#[derive(PlanarArm, Default, Debug)]
-#[arm(gravity = 9.80665)]
-struct Random3 {
-    #[arm(length = 12/5, mass = 26/5, inertia = 5/4, com = 6/25)]
-    a: Revolute,
-    #[arm(length = 23/10, mass = 2/1, inertia = 1/20, com = 69/100)]
-    b: Revolute,
-    #[arm(length = 2/1, mass = 3/2, inertia = 11/25, com = 3/5)]
-    c: Revolute,
-}
-
-#[derive(PlanarArm, Default, Debug)]
-#[arm(gravity = 9.80665)]
-struct Random4 {
-    #[arm(length = 9/5, mass = 13/4, inertia = 1/40, com = 9/5)]
-    a: Revolute,
-    #[arm(length = 9/5, mass = 9/2, inertia = 11/40, com = -27/50)]
-    b: Revolute,
-    #[arm(length = 23/8, mass = 3/4, inertia = 3/10, com = 69/20)]
-    c: Revolute,
-    #[arm(length = 14/5, mass = 16/5, inertia = 23/25, com = -14/25)]
-    d: Revolute,
-}
-
-#[derive(PlanarArm, Default, Debug)]
-#[arm(gravity = 9.80665)]
-struct Random6 {
-    #[arm(length = 3/1, mass = 12/5, inertia = 1/50, com = 12/5)]
-    a: Revolute,
-    #[arm(length = 4/1, mass = 15/2, inertia = 23/25, com = 6/5)]
-    b: Revolute,
-    #[arm(length = 7/5, mass = 31/8, inertia = 17/40, com = 7/10)]
-    c: Revolute,
-    #[arm(length = 9/2, mass = 39/8, inertia = 7/10, com = -9/10)]
-    d: Revolute,
-    #[arm(length = 17/4, mass = 15/8, inertia = 17/40, com = 17/40)]
-    e: Revolute,
-    #[arm(length = 7/4, mass = 9/1, inertia = 1/4, com = 21/20)]
-    f: Revolute,
-}
-
-#[derive(PlanarArm, Default, Debug)]
-#[arm(gravity = 9.80665)]
-struct Random8 {
-    #[arm(length = 9/4, mass = 11/8, inertia = 16/25, com = -9/20)]
-    a: Revolute,
-    #[arm(length = 3/5, mass = 4/5, inertia = 3/5, com = 3/10)]
-    b: Revolute,
-    #[arm(length = 9/5, mass = 11/4, inertia = 3/2, com = 54/25)]
-    c: Revolute,
-    #[arm(length = 14/5, mass = 2/1, inertia = 21/50, com = 0/1)]
-    d: Revolute,
-    #[arm(length = 9/10, mass = 5/1, inertia = 1/25, com = 27/50)]
-    e: Revolute,
-    #[arm(length = 4/5, mass = 6/5, inertia = 2/5, com = 24/25)]
-    f: Revolute,
-    #[arm(length = 3/2, mass = 16/5, inertia = 29/25, com = 0/1)]
-    g: Revolute,
-    #[arm(length = 16/5, mass = 33/8, inertia = 3/10, com = 96/25)]
-    h: Revolute,
-}
+#[path = "support/random_arms.rs"]
+mod random_arms;
+use random_arms::{Random1, Random2, Random3, Random4, Random6, Random8};
 
 /// A deterministic pseudo-random vector in `[-range, range]` (xorshift).
 fn state<const N: usize>(seed: u64, range: f64) -> SVector<f64, N> {

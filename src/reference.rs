@@ -44,7 +44,8 @@
 //! | [`forward_dynamics_crba`] | CRBA + RNEA bias + Cholesky solve | O(N^3) |
 //! | [`kinetic_energy`], [`potential_energy`] | direct sums over COM velocities / heights, payload as its own body | O(N) |
 //! | [`tip_position`], [`joint_positions`], [`jacobian`] | forward kinematics; the Jacobian column of joint j is `perp(tip - joint_j)` | O(N) / O(N) / O(N) |
-//! | [`regressor`] | the torques of each body's four inertial parameters per unit value, by one outward Newton-Euler pass and each body's wrench moved to every joint before it (as Pinocchio's `computeJointTorqueRegressor`) | O(N^2) |
+//! | [`regressor`] | the torques of each body's four inertial parameters per unit value, by one outward Newton-Euler pass and each body's wrench moved to every joint before it | O(N^2) |
+//! | [`regressor_local`] | the same by Pinocchio's `computeJointTorqueRegressor` algorithm: each body's regressor in its own frame, moved inwards joint by joint | O(N^2) |
 
 use nalgebra::{Matrix3, Point2, SMatrix, SVector, Vector2, Vector3};
 
@@ -52,7 +53,7 @@ use crate::Model;
 
 mod regressor;
 
-pub use regressor::{link_parameters, payload_parameters, regressor, Regressor};
+pub use regressor::{link_parameters, payload_parameters, regressor, regressor_local, Regressor};
 
 /// Unit vectors `(cos phi_i, sin phi_i)` along each link, from the cumulative absolute angles.
 #[inline(always)]

@@ -226,13 +226,36 @@ fn reference_regressor_matches<const N: usize>(rng: &mut Rng) {
         let y = reference::regressor(&model, &q, &qd, &qdd);
         let d = (y.torques(&model) - tau).amax();
         assert!(d <= 1e-12 * (1.0 + tau.amax()), "N = {N}: {d:e}");
+        // Pinocchio's algorithm (local frames, joint by joint) gives the same columns.
+        let local = reference::regressor_local(&model, &q, &qd, &qdd);
+        let blocks = |r: &reference::Regressor<N>| {
+            r.links
+                .iter()
+                .chain([&r.payload])
+                .map(|b| b.amax())
+                .fold(0.0, f64::max)
+        };
+        let scale = 1.0 + blocks(&y);
+        for (a, b) in y
+            .links
+            .iter()
+            .chain([&y.payload])
+            .zip(local.links.iter().chain([&local.payload]))
+        {
+            assert!((a - b).amax() <= 1e-12 * scale, "N = {N}: local frames");
+        }
+        assert_eq!(
+            (y.armature, y.damping, y.coulomb),
+            (local.armature, local.damping, local.coulomb)
+        );
     }
 }
 
 #[test]
 fn numeric_regressor_times_parameters_is_the_newton_euler_torque() {
     // The numeric regressor against the reference's own recursion (one pass that sums
-    // wrenches inwards, the other per body and per joint), 1 to 8 links.
+    // wrenches inwards, the other per body and per joint), and against the same columns by
+    // Pinocchio's algorithm, 1 to 8 links.
     let mut rng = Rng(0x5eed);
     reference_regressor_matches::<1>(&mut rng);
     reference_regressor_matches::<2>(&mut rng);
