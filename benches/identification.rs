@@ -26,7 +26,7 @@ use interleaved::interleaved;
 
 #[path = "support/random_arms.rs"]
 mod random_arms;
-use random_arms::{Random2, Random3, Random4, Random6, Random8};
+use random_arms::{Random1, Random2, Random3, Random4, Random6, Random8};
 
 fn row<A, const N: usize, const P: usize, const B: usize>()
 where
@@ -90,6 +90,7 @@ fn main() {
         "| N | P | B | base regressor ns | regressor ns | local-frame numeric ns | local / base | local / regressor | world-frame numeric ns | world / base | world / regressor |"
     );
     println!("|---|---|---|---|---|---|---|---|---|---|---|");
+    row::<Random1, 1, 4, 3>();
     row::<Random2, 2, 8, 6>();
     row::<Random3, 3, 12, 9>();
     row::<Random4, 4, 16, 12>();
