@@ -9,10 +9,12 @@ only type-checked), builds it once to compile the dependencies, then times
 memory is the largest resident size of any process of the build (GNU time's %M).
 
 Arms: lengths 2/4, 3/4, 4/4, ... and literal masses, inertias and centres of mass; with
-`params`, masses, inertias and centres are run-time parameters (`self.m0`, ...).
+`params`, masses, inertias and centres are run-time parameters (`self.m0`, ...); with
+`--lengths`, the parameterised arms' lengths too (`self.len0`, ...).
 
     python3 bench/compile_time.py                 # 6 10 14 20 30 links, literal and parameterised
     python3 bench/compile_time.py 6 10 --runs 3   # chosen sizes, best of three
+    python3 bench/compile_time.py 6 10 14 --lengths --repo /tmp/old   # against another checkout
 """
 
 import argparse
@@ -24,18 +26,22 @@ import tempfile
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def crate(root, n, params):
-    name = f"arm{n}{'p' if params else ''}"
+def crate(root, n, params, lengths=False, repo=REPO):
+    name = f"arm{n}{'p' if params else ''}{'l' if lengths else ''}"
     path = os.path.join(root, name)
     os.makedirs(os.path.join(path, "src"), exist_ok=True)
     with open(os.path.join(path, "Cargo.toml"), "w") as f:
         f.write(
             f'[package]\nname = "{name}"\nversion = "0.0.0"\nedition = "2021"\n'
-            f'[dependencies]\nplanar_arm = {{ path = "{REPO}" }}\n[workspace]\n'
+            f'[dependencies]\nplanar_arm = {{ path = "{repo}" }}\n[workspace]\n'
         )
     links, fields, values = [], [], []
     for i in range(n):
         length = f"{i % 3 + 2}/4"
+        if lengths:
+            length = f"self.len{i}"
+            fields.append(f"    len{i}: f64,")
+            values.append(f"len{i}: {i % 3 + 2}.0 / 4.0,")
         if params:
             links.append(
                 f"    #[arm(length = {length}, mass = self.m{i}, inertia = self.i{i}, com = self.c{i})]\n"
@@ -85,6 +91,8 @@ def main():
     ap.add_argument("sizes", nargs="*", type=int, default=[6, 10, 14, 20, 30])
     ap.add_argument("--runs", type=int, default=1)
     ap.add_argument("--literal-only", action="store_true")
+    ap.add_argument("--lengths", action="store_true", help="run-time lengths in the parameterised arms")
+    ap.add_argument("--repo", default=REPO, help="the planar_arm checkout to build against")
     args = ap.parse_args()
     with tempfile.TemporaryDirectory() as root:
         target = os.path.join(root, "target")
@@ -93,11 +101,11 @@ def main():
         for n in args.sizes:
             kinds = [False] if args.literal_only or n > 14 else [False, True]
             for params in kinds:
-                name, path = crate(root, n, params)
+                name, path = crate(root, n, params, args.lengths and params, args.repo)
                 env = dict(os.environ, CARGO_TARGET_DIR=target)
                 subprocess.run(["cargo", "build", "-q"], cwd=path, env=env, check=True)
                 best = min(timed_build(path, name, target) for _ in range(args.runs))
-                kind = "parameters" if params else "literal"
+                kind = ("parameters, lengths" if args.lengths else "parameters") if params else "literal"
                 print(f"| {n} | {kind} | {best[0]:.2f} | {best[1]:.0f} |", flush=True)
 
 

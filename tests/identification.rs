@@ -54,6 +54,22 @@ struct Six {
     f: Revolute,
 }
 
+/// Run-time lengths: the groupings are polynomials in them.
+#[derive(PlanarArm, Clone)]
+#[arm(gravity = 9.81)]
+struct Stretch {
+    #[arm(length = self.l1, mass = 2, com = self.c1)]
+    a: Revolute,
+    #[arm(length = self.l2, mass = self.m2, armature = 0.01)]
+    b: Revolute,
+    #[arm(length = 0.3, mass = 0.5, damping = 0.05)]
+    c: Revolute,
+    l1: f64,
+    l2: f64,
+    c1: f64,
+    m2: f64,
+}
+
 fn check<A, const N: usize, const P: usize, const B: usize>(arm: &A, rng: &mut Rng)
 where
     A: Identification<N, P, B>,
@@ -132,6 +148,55 @@ fn regressor_and_base_regressor_give_the_inverse_dynamics() {
     }
     check(&Flat::default(), &mut rng);
     check(&Six::default(), &mut rng);
+    for _ in 0..5 {
+        let arm = Stretch {
+            a: Revolute,
+            b: Revolute,
+            c: Revolute,
+            l1: rng.range(0.2, 1.0),
+            l2: rng.range(0.2, 1.0),
+            c1: rng.range(0.05, 0.3),
+            m2: rng.range(0.5, 3.0),
+        };
+        check(&arm, &mut rng);
+    }
+}
+
+#[test]
+fn run_time_lengths_group_as_polynomials() {
+    // Gautier and Khalil's grouping with the lengths as symbols; link 3's literal length 0.3
+    // groups nothing (no link beyond it), the armature of joint 2 and damping stand alone.
+    assert_eq!(
+        <Stretch as Identification<3, 14, 11>>::BASE_PARAMETERS,
+        [
+            "zz1 + l1^2 m2 + l1^2 m3",
+            "mx1 + l1 m2 + l1 m3",
+            "my1",
+            "zz2 + l2^2 m3",
+            "mx2 + l2 m3",
+            "my2",
+            "zz3",
+            "mx3",
+            "my3",
+            "ia2",
+            "fv3"
+        ]
+    );
+    // The base parameters follow the lengths at run time: zz1 + l1^2 (m2 + m3), where link 1's
+    // default inertia m l1^2 / 12 moves with l1 too.
+    let mut arm = Stretch {
+        a: Revolute,
+        b: Revolute,
+        c: Revolute,
+        l1: 0.5,
+        l2: 0.4,
+        c1: 0.2,
+        m2: 1.5,
+    };
+    let before = arm.base_parameters()[0];
+    arm.l1 = 0.6;
+    let after = arm.base_parameters()[0];
+    assert!((after - before - (0.36 - 0.25) * (2.0 / 12.0 + 1.5 + 0.5)).abs() < 1e-12);
 }
 
 #[test]

@@ -59,12 +59,13 @@ pub struct Identification {
     /// The standard parameters, in the regressor's column order.
     pub parameters: Vec<Standard>,
     /// The base parameters.
-    pub base: BaseParameters,
+    pub base: BaseParameters<Poly>,
 }
 
 impl<C: Emit> Derived<C> {
-    /// The standard and base parameters; `None` when a length or gravity is a run-time
-    /// parameter (the groupings would be polynomials in them).
+    /// The standard and base parameters; `None` when gravity is a run-time parameter (the
+    /// groupings would not all be polynomials in it). With run-time lengths the groupings are
+    /// polynomials in them.
     #[must_use]
     pub fn identification(&self) -> Option<Identification> {
         let (parameters, base) = base_parameters_from_energies(&poly_arm(&self.arm))?;
@@ -124,7 +125,7 @@ impl<C: Emit> Derived<C> {
     pub fn parameter_values_method(
         &self,
         parameters: &[Standard],
-        base: Option<&BaseParameters>,
+        base: Option<&BaseParameters<Poly>>,
     ) -> Method {
         let values = standard_values(&self.arm, parameters);
         let mut p = Program::new();
@@ -139,12 +140,22 @@ impl<C: Emit> Derived<C> {
                 .iter()
                 .enumerate()
                 .map(|(b, group)| {
-                    let value = group
-                        .iter()
-                        .fold(C::from_rational(crate::ring::int(0)), |acc, (k, x)| {
-                            acc + values[*k].scale(x)
-                        });
-                    (format!("b{}", b + 1), p.coefficient(&value))
+                    // Numeric multipliers in the arm's own coefficients; those that are
+                    // polynomials in run-time lengths over the polynomials.
+                    let mut value = C::from_rational(crate::ring::int(0));
+                    let mut poly = Poly::default();
+                    for (k, x) in group {
+                        match x.as_rational() {
+                            Some(r) => value = value + values[*k].scale(&r),
+                            None => poly = poly + to_poly(&values[*k]) * x.clone(),
+                        }
+                    }
+                    let id = if poly == Poly::default() {
+                        p.coefficient(&value)
+                    } else {
+                        p.coefficient(&(to_poly(&value) + poly))
+                    };
+                    (format!("b{}", b + 1), id)
                 })
                 .collect(),
         };
@@ -163,7 +174,8 @@ impl<C: Emit> Derived<C> {
 pub const MAX_LINKS: usize = 20;
 
 /// `impl ::planar_arm::Identification<N, P, B>` for the arm, or nothing when its lengths or
-/// gravity are run-time parameters or it has more than [`MAX_LINKS`] links.
+/// gravity are such that the groupings are not polynomials (see
+/// [`base_parameters_from_energies`]) or it has more than [`MAX_LINKS`] links.
 ///
 /// # Errors
 /// If a constant does not fit in `f64`.

@@ -22,6 +22,7 @@ use crate::expr::{Expr, Monomial};
 use crate::mechanics::{ArmSpec, Body, Dynamics, LinkSpec, RateProducts};
 use crate::poly::{Param, ParamMonomial, Poly};
 use crate::ring::{Coefficient, Rational};
+use crate::slp::Emit;
 use crate::trig::{Angle, Trig};
 
 /// What a standard parameter is.
@@ -257,46 +258,63 @@ pub fn standard_values<C: Coefficient>(arm: &ArmSpec<C>, parameters: &[Standard]
 
 /// The base parameters: a minimal set of columns spanning the regressor, and each base
 /// parameter as an exact combination of standard ones.
-#[derive(Clone, Debug)]
-pub struct BaseParameters {
+///
+/// The coefficients are rationals for an arm whose lengths and gravity are numbers, and
+/// polynomials in the run-time lengths otherwise (`zz1 + l1^2 m2`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct BaseParameters<C = Rational> {
     /// The standard parameters whose columns are kept (indices into
     /// [`Regressor::parameters`]), in order.
     pub columns: Vec<usize>,
     /// For each base parameter, `(standard parameter, coefficient)` pairs: the base parameter
     /// is their sum. Its own parameter comes first with coefficient 1.
-    pub grouping: Vec<Vec<(usize, Rational)>>,
+    pub grouping: Vec<Vec<(usize, C)>>,
 }
 
-impl BaseParameters {
+impl<C: Emit> BaseParameters<C> {
     /// The base parameter `b` as a formula in the standard parameters' names:
-    /// `zz1 + ia1 + 9/16 m2 + ...`.
+    /// `zz1 + ia1 + 9/16 m2 + ...`, or with run-time lengths `zz1 + l1^2 m2`.
     #[must_use]
     pub fn formula(&self, b: usize, parameters: &[Standard]) -> String {
         let mut s = String::new();
         for (k, (p, c)) in self.grouping[b].iter().enumerate() {
             let name = &parameters[*p].name;
-            let negative = c < &Rational::zero();
-            let mag = if negative { -c.clone() } else { c.clone() };
+            let (negative, mag) = c.sign_split();
             let sign = match (k, negative) {
                 (0, true) => "-",
                 (0, false) => "",
                 (_, true) => " - ",
                 (_, false) => " + ",
             };
-            if mag.is_one() {
-                s.push_str(&format!("{sign}{name}"));
-            } else {
-                s.push_str(&format!("{sign}{mag} {name}"));
+            match mag.rational() {
+                Some(r) if r.is_one() => s.push_str(&format!("{sign}{name}")),
+                Some(r) => s.push_str(&format!("{sign}{r} {name}")),
+                None => s.push_str(&format!("{sign}{mag} {name}")),
             }
         }
         s
     }
 }
 
+impl BaseParameters<Rational> {
+    /// The same groupings over the polynomials.
+    #[must_use]
+    pub fn into_poly(self) -> BaseParameters<Poly> {
+        BaseParameters {
+            columns: self.columns,
+            grouping: self
+                .grouping
+                .into_iter()
+                .map(|g| g.into_iter().map(|(k, c)| (k, Poly::constant(c))).collect())
+                .collect(),
+        }
+    }
+}
+
 type Key = (usize, Monomial, Trig);
 
 /// A sparse vector over [`Key`]s.
-type Sparse = BTreeMap<Key, Rational>;
+type Sparse<C = Rational> = BTreeMap<Key, C>;
 
 /// Exact elimination on the columns, in order: a column is a base column when it is not a
 /// rational combination of the base columns before it. `None` if a column's coefficients are
@@ -314,21 +332,21 @@ pub fn base_parameters(reg: &Regressor<Poly>) -> Option<BaseParameters> {
         }
         vectors.push((k, v));
     }
-    Some(eliminate(vectors))
+    eliminate(vectors)
 }
 
 /// A sparse vector over key indices, sorted.
-type Indexed = Vec<(u32, Rational)>;
+type Indexed<C> = Vec<(u32, C)>;
 
 /// `v - a w`, merged in order, zeros dropped.
-fn axpy(v: &Indexed, a: &Rational, w: &Indexed) -> Indexed {
+fn axpy<C: Coefficient>(v: &Indexed<C>, a: &C, w: &Indexed<C>) -> Indexed<C> {
     let mut out = Vec::with_capacity(v.len() + w.len());
     let (mut i, mut j) = (0, 0);
     while i < v.len() || j < w.len() {
         match (v.get(i), w.get(j)) {
             (Some((ki, x)), Some((kj, y))) if ki == kj => {
                 let z = x.clone() - a.clone() * y.clone();
-                if !Zero::is_zero(&z) {
+                if !z.is_zero() {
                     out.push((*ki, z));
                 }
                 i += 1;
@@ -353,7 +371,12 @@ fn axpy(v: &Indexed, a: &Rational, w: &Indexed) -> Indexed {
 }
 
 /// Exact elimination on `(column index, vector)` pairs, in order.
-fn eliminate(vectors: Vec<(usize, Sparse)>) -> BaseParameters {
+///
+/// Over polynomials in run-time lengths the pivot of a vector is its first entry whose
+/// coefficient is a nonzero number, so that every multiplier stays a polynomial; `None` if a
+/// vector that does not vanish has no such entry (the groupings would be rational functions).
+/// Over the rationals that is the first entry, as it always was.
+fn eliminate<C: Emit>(vectors: Vec<(usize, Sparse<C>)>) -> Option<BaseParameters<C>> {
     // Keys as integers: the elimination compares them constantly, and the engine runs
     // unoptimised in a user's build.
     let mut keys: BTreeMap<Key, u32> = BTreeMap::new();
@@ -363,22 +386,23 @@ fn eliminate(vectors: Vec<(usize, Sparse)>) -> BaseParameters {
             keys.entry(key.clone()).or_insert(next);
         }
     }
-    let vectors: Vec<(usize, Indexed)> = vectors
+    let vectors: Vec<(usize, Indexed<C>)> = vectors
         .into_iter()
         .map(|(k, v)| {
-            let mut iv: Indexed = v.into_iter().map(|(key, x)| (keys[&key], x)).collect();
+            let mut iv: Indexed<C> = v.into_iter().map(|(key, x)| (keys[&key], x)).collect();
             iv.sort_by_key(|e| e.0);
             (k, iv)
         })
         .collect();
+    let one = || C::from_rational(Rational::one());
     // Echelon basis: (pivot, vector with 1 at the pivot, the vector as a combination of base
     // columns).
-    let mut basis: Vec<(u32, Indexed, BTreeMap<usize, Rational>)> = Vec::new();
+    let mut basis: Vec<(u32, Indexed<C>, BTreeMap<usize, C>)> = Vec::new();
     let mut base = Vec::new();
-    let mut dependent: Vec<(usize, BTreeMap<usize, Rational>)> = Vec::new();
+    let mut dependent: Vec<(usize, BTreeMap<usize, C>)> = Vec::new();
     for (k, v) in vectors {
         let mut v = v;
-        let mut combo = BTreeMap::from([(k, Rational::one())]);
+        let mut combo = BTreeMap::from([(k, one())]);
         for (pivot, b, bc) in &basis {
             let Ok(at) = v.binary_search_by_key(pivot, |e| e.0) else {
                 continue;
@@ -386,49 +410,43 @@ fn eliminate(vectors: Vec<(usize, Sparse)>) -> BaseParameters {
             let a = v[at].1.clone();
             v = axpy(&v, &a, b);
             for (j, x) in bc {
-                let e = combo.entry(*j).or_insert_with(Rational::zero);
+                let e = combo
+                    .entry(*j)
+                    .or_insert_with(|| C::from_rational(Rational::zero()));
                 *e = e.clone() - a.clone() * x.clone();
-                if Zero::is_zero(e) {
+                if e.is_zero() {
                     combo.remove(j);
                 }
             }
         }
-        match v.first().cloned() {
-            None => {
-                // 0 = Y_k + sum_j combo_j Y_j: Y_k = -sum_j combo_j Y_j.
-                combo.remove(&k);
-                dependent.push((k, combo));
-            }
-            Some((pivot, a)) => {
-                let inv = Rational::one() / a;
-                let v = v
-                    .into_iter()
-                    .map(|(key, x)| (key, x * inv.clone()))
-                    .collect();
-                let combo = combo
-                    .into_iter()
-                    .map(|(j, x)| (j, x * inv.clone()))
-                    .collect();
-                basis.push((pivot, v, combo));
-                base.push(k);
-            }
+        if v.is_empty() {
+            // 0 = Y_k + sum_j combo_j Y_j: Y_k = -sum_j combo_j Y_j.
+            combo.remove(&k);
+            dependent.push((k, combo));
+            continue;
         }
+        let (pivot, inv) = v.iter().find_map(|(key, x)| {
+            let r = x.rational()?;
+            (!Zero::is_zero(&r)).then(|| (*key, Rational::one() / r))
+        })?;
+        let v = v.into_iter().map(|(key, x)| (key, x.scale(&inv))).collect();
+        let combo = combo.into_iter().map(|(j, x)| (j, x.scale(&inv))).collect();
+        basis.push((pivot, v, combo));
+        base.push(k);
     }
     // theta_b' = theta_b + sum over dependent j of beta_jb theta_j, Y_j = sum_b beta_jb Y_b.
-    let mut grouping: Vec<Vec<(usize, Rational)>> =
-        base.iter().map(|&b| vec![(b, Rational::one())]).collect();
+    let mut grouping: Vec<Vec<(usize, C)>> = base.iter().map(|&b| vec![(b, one())]).collect();
     for (j, combo) in dependent {
         for (b, x) in combo {
-            let beta = -x;
             if let Some(slot) = base.iter().position(|&c| c == b) {
-                grouping[slot].push((j, beta));
+                grouping[slot].push((j, -x));
             }
         }
     }
-    BaseParameters {
+    Some(BaseParameters {
         columns: base,
         grouping,
-    }
+    })
 }
 
 /// The base parameters from the energies instead of the torques: the torques are Lagrange's
@@ -440,43 +458,71 @@ fn eliminate(vectors: Vec<(usize, Sparse)>) -> BaseParameters {
 /// groupings as on the torques' ([`base_parameters`]; checked equal in the tests), without
 /// deriving the torques. Damping and Coulomb friction (not in `L`) are each their own base
 /// parameter, kept in order. `None` if a coefficient is not rational.
+///
+/// With run-time lengths the elimination runs over polynomials in them, and the groupings are
+/// polynomials (`zz1 + l1^2 m2`), valid for every value of the lengths at which the same
+/// columns stay independent (all but a few: a zero length, say). `None` if a multiplier would
+/// not be a polynomial: with a run-time gravity (the first moments of link 1 enter the torques
+/// only through it), and with run-time lengths and no gravity (the first moments then enter
+/// only through `l_i cos(..)` terms).
 #[must_use]
 pub fn base_parameters_from_energies(
     arm: &ArmSpec<Poly>,
-) -> Option<(Vec<Standard>, BaseParameters)> {
+) -> Option<(Vec<Standard>, BaseParameters<Poly>)> {
     let (parameters, _, _) = symbolic(arm);
-    // The geometry over the rationals: lengths and gravity must be numbers.
-    let n = arm.links.len();
-    let zero = Rational::zero();
+    // The geometry over the rationals when its lengths and gravity are numbers: the common
+    // case, and several times faster than over polynomials.
+    let rational = arm
+        .links
+        .iter()
+        .map(|l| l.length.as_rational())
+        .collect::<Option<Vec<_>>>()
+        .zip(arm.gravity.as_rational());
+    let base = match rational {
+        Some((lengths, gravity)) => energy_elimination(&lengths, gravity, &parameters)?.into_poly(),
+        None => {
+            let lengths: Vec<Poly> = arm.links.iter().map(|l| l.length.clone()).collect();
+            energy_elimination(&lengths, arm.gravity.clone(), &parameters)?
+        }
+    };
+    Some((parameters, base))
+}
+
+/// [`base_parameters_from_energies`] for an arm of these lengths and gravity.
+fn energy_elimination<C: Emit>(
+    lengths: &[C],
+    gravity: C,
+    parameters: &[Standard],
+) -> Option<BaseParameters<C>> {
+    let n = lengths.len();
+    let num = |r: Rational| C::from_rational(r);
     let geometry = ArmSpec {
-        links: arm
-            .links
+        links: lengths
             .iter()
-            .map(|l| {
-                Some(LinkSpec {
-                    length: l.length.as_rational()?,
-                    ..LinkSpec::rod(Rational::one(), Rational::one())
-                })
+            .map(|l| LinkSpec {
+                length: l.clone(),
+                ..LinkSpec::rod(num(Rational::one()), num(Rational::one()))
             })
-            .collect::<Option<Vec<_>>>()?,
-        gravity: arm.gravity.as_rational()?,
+            .collect(),
+        gravity,
         payload: None,
     };
     // Each column of L = T - V directly: the energies of the geometry carrying one body whose
-    // parameters are all zero but that one (or one rotor), over the rationals.
+    // parameters are all zero but that one (or one rotor).
     let mut vectors = Vec::new();
     let mut friction = Vec::new();
-    let mut rates = RateProducts::<Rational>::new();
+    let mut rates = RateProducts::<C>::new();
     // A unit mass on link i: the energies of a point at joint i, the sum over the links
     // before it of S_a = 1/2 l_a^2 w_a^2 + sum_(b < a) l_a l_b cos(theta_a - theta_b) w_a w_b
     // minus g l_a sin(theta_a). Built as prefix sums: each unit-mass energy from scratch cost
     // the derive of a 30-link arm half a minute.
-    let mut mass_columns: Vec<Expr<Rational>> = vec![Expr::zero()];
+    let mut mass_columns: Vec<Expr<C>> = vec![Expr::zero()];
+    let half = Rational::new(1.into(), 2.into());
     for a in 0..n {
         let la = &geometry.links[a].length;
         let mut step = rates
             .product(a, a)
-            .scale(&(la.clone() * la.clone() / Rational::from_integer(2.into())));
+            .scale_by(&(la.clone() * la.clone()).scale(&half));
         for b in 0..a {
             let lb = &geometry.links[b].length;
             let trig = Expr::cos(la.clone() * lb.clone(), Angle::range(b + 1, a + 1));
@@ -489,12 +535,13 @@ pub fn base_parameters_from_energies(
         let next = mass_columns[a].add(&step);
         mass_columns.push(next);
     }
+    let constant = |m: &Monomial, t: &Trig| m.degree() == 0 && *t == Trig::One;
     for (k, s) in parameters.iter().enumerate() {
         let link = s.link.unwrap_or(n - 1);
         if s.kind == Kind::Mass {
-            let mut v: Sparse = BTreeMap::new();
+            let mut v: Sparse<C> = BTreeMap::new();
             for (m, t, c) in mass_columns[link].terms() {
-                if !(m.degree() == 0 && *t == Trig::One) {
+                if !constant(m, t) {
                     v.insert((0, m.clone(), t.clone()), c.clone());
                 }
             }
@@ -502,11 +549,11 @@ pub fn base_parameters_from_energies(
             continue;
         }
         let unit = |kind: Kind| {
-            if s.kind == kind {
+            num(if s.kind == kind {
                 Rational::one()
             } else {
-                zero.clone()
-            }
+                Rational::zero()
+            })
         };
         let mut g = geometry.clone();
         let bodies = match s.kind {
@@ -515,7 +562,7 @@ pub fn base_parameters_from_energies(
                 continue;
             }
             Kind::Armature => {
-                g.links[link].armature = Rational::one();
+                g.links[link].armature = num(Rational::one());
                 Vec::new()
             }
             _ => vec![Body {
@@ -526,21 +573,20 @@ pub fn base_parameters_from_energies(
             }],
         };
         let (kinetic, potential) = Dynamics::energies(&g, &bodies, &mut rates);
-        let mut v: Sparse = BTreeMap::new();
+        let mut v: Sparse<C> = BTreeMap::new();
         for (m, t, c) in kinetic.sub(&potential).terms() {
-            if m.degree() == 0 && *t == Trig::One {
-                continue;
+            if !constant(m, t) {
+                v.insert((0, m.clone(), t.clone()), c.clone());
             }
-            v.insert((0, m.clone(), t.clone()), c.clone());
         }
         vectors.push((k, v));
     }
-    let mut base = eliminate(vectors);
+    let mut base = eliminate(vectors)?;
     for k in friction {
         base.columns.push(k);
-        base.grouping.push(vec![(k, Rational::one())]);
+        base.grouping.push(vec![(k, num(Rational::one()))]);
     }
-    Some((parameters, base))
+    Some(base)
 }
 
 #[cfg(test)]
@@ -637,9 +683,71 @@ mod tests {
                     base_parameters_from_energies(&arm).expect("rational");
                 assert_eq!(params[..reg.parameters.len()], reg.parameters[..]);
                 assert_eq!(from_energies.columns, from_torques.columns, "n = {n}");
-                assert_eq!(from_energies.grouping, from_torques.grouping, "n = {n}");
+                assert_eq!(
+                    from_energies.grouping,
+                    from_torques.into_poly().grouping,
+                    "n = {n}"
+                );
             }
         }
+    }
+
+    #[test]
+    fn run_time_lengths_give_the_rational_groupings_as_polynomials() {
+        // Lengths l1, l2, l3 as symbols: the columns and the groupings are those of any
+        // numeric lengths, with the numbers replaced by the polynomials Gautier and Khalil's
+        // rules give (zz1 + l1^2 (m2 + m3), mx1 + l1 (m2 + m3), ...).
+        for (g, a, p) in [
+            (true, false, false),
+            (true, true, true),
+            (false, true, true),
+        ] {
+            let numeric = poly_arm(&arm(3, g, a, p));
+            let mut symbolic = numeric.clone();
+            for (i, l) in symbolic.links.iter_mut().enumerate() {
+                l.length = param(&format!("l{}", i + 1));
+            }
+            if !g {
+                // Without gravity the first moments enter only through l_i cos(..) terms:
+                // no numeric pivot, so no polynomial groupings.
+                assert!(base_parameters_from_energies(&symbolic).is_none());
+                continue;
+            }
+            let (_, with_numbers) = base_parameters_from_energies(&numeric).expect("rational");
+            let (params, with_symbols) =
+                base_parameters_from_energies(&symbolic).expect("polynomial");
+            assert_eq!(with_symbols.columns, with_numbers.columns);
+            let lengths = [ratio(3, 4), int(1), ratio(5, 4)];
+            let at = |c: &Poly| -> Rational {
+                c.parts().iter().fold(Rational::zero(), |acc, (m, r)| {
+                    let mut x = r.clone();
+                    for (p, e) in m.powers() {
+                        let i: usize = p.to_string()[1..].parse().expect("l<i>");
+                        for _ in 0..*e {
+                            x = x * lengths[i - 1].clone();
+                        }
+                    }
+                    acc + x
+                })
+            };
+            for (gs, gn) in with_symbols.grouping.iter().zip(&with_numbers.grouping) {
+                let substituted: Vec<(usize, Rational)> =
+                    gs.iter().map(|(k, c)| (*k, at(c))).collect();
+                let numbers: Vec<(usize, Rational)> = gn
+                    .iter()
+                    .map(|(k, c)| (*k, c.as_rational().expect("number")))
+                    .collect();
+                assert_eq!(substituted, numbers);
+            }
+            let f = |b: usize| with_symbols.formula(b, &params);
+            // (+ l1^2 mp with the payload, + ia1 with armature)
+            assert!(f(0).starts_with("zz1 + l1^2 m2 + l1^2 m3"), "{}", f(0));
+            assert!(f(1).starts_with("mx1 + l1 m2 + l1 m3"), "{}", f(1));
+        }
+        // A run-time gravity: the first moments of link 1 would need dividing by it.
+        let mut free = poly_arm(&arm(2, true, false, false));
+        free.gravity = param("g");
+        assert!(base_parameters_from_energies(&free).is_none());
     }
 
     #[test]
