@@ -1,0 +1,736 @@
+//! Identifies a three-link arm's base parameters from simulated noisy joint torques, the way
+//! robot makers calibrate a dynamic model, with the derived [`Identification`] trait:
+//!
+//! 1. an exciting trajectory: per joint a finite Fourier series (Swevers et al.: five harmonics
+//!    of 0.1 Hz), the best of a few random coefficient sets by the condition number of the
+//!    stacked base regressor;
+//! 2. "measured" torques along it from the independent numeric reference
+//!    ([`planar_arm::reference::inverse_dynamics`], not the generated code) plus Gaussian noise;
+//! 3. least squares on the base regressor stacked over the samples (SVD), with each
+//!    parameter's standard deviation from the covariance `sigma^2 (W^T W)^-1`;
+//! 4. validation: torques predicted with the identified parameters on a fresh trajectory
+//!    against fresh measurements, whose RMS error should be the noise level;
+//! 5. an unknown payload: the same regressor identifies the loaded arm's base parameters, and
+//!    the change from the empty arm's gives the payload's mass.
+//!
+//! It prints the tables and draws `docs/identify-torques.svg` (measured against predicted
+//! torques on the fresh trajectory) and `docs/identify-parameters.svg` (identification errors
+//! against their standard deviations).
+//!
+//! ```text
+//! cargo run --example identify
+//! ```
+
+use std::error::Error;
+use std::f64::consts::TAU;
+use std::path::{Path, PathBuf};
+
+use planar_arm::nalgebra::{DMatrix, DVector, SVector};
+use planar_arm::prelude::*;
+use planar_arm::reference;
+use plotters::coord::ranged1d::SegmentValue;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+/// A 3-link arm with realistic masses, geared joints (armature, viscous and Coulomb friction)
+/// and a payload slot; the values the factory does not know precisely are run-time parameters.
+#[derive(PlanarArm, Clone)]
+#[arm(
+    gravity = 9.81,
+    payload = self.load,
+    payload_inertia = self.load_inertia,
+    payload_com = (self.load_x, self.load_y)
+)]
+struct Arm {
+    #[arm(length = 0.4, mass = 4.2, inertia = 0.065, com = (0.17, 0.006),
+          armature = 0.12, damping = 0.8, frictionloss = self.f1)]
+    shoulder: Revolute,
+    #[arm(length = 0.35, mass = self.m2, inertia = self.i2, com = (0.15, -0.004),
+          armature = 0.05, damping = 0.4, frictionloss = 0.6)]
+    elbow: Revolute,
+    #[arm(length = 0.25, mass = self.m3, inertia = 0.006, com = (self.c3, 0.012),
+          armature = 0.02, damping = 0.15, frictionloss = 0.25)]
+    wrist: Revolute,
+    f1: f64,
+    m2: f64,
+    i2: f64,
+    m3: f64,
+    c3: f64,
+    load: f64,
+    load_inertia: f64,
+    load_x: f64,
+    load_y: f64,
+}
+
+/// Standard parameters: zz, mx, my per link and the payload's (12), four masses, three
+/// armatures, three dampings, three Coulomb frictions.
+const P: usize = 25;
+/// Base parameters: three per link, the armatures of joints 2 and 3 (joint 1's joins zz1),
+/// damping and Coulomb friction per joint.
+const B: usize = 17;
+
+impl Arm {
+    /// The arm as it left the factory, without a payload.
+    fn empty() -> Self {
+        Self {
+            shoulder: Revolute,
+            elbow: Revolute,
+            wrist: Revolute,
+            f1: 1.2,
+            m2: 2.6,
+            i2: 0.031,
+            m3: 1.1,
+            c3: 0.09,
+            load: 0.0,
+            load_inertia: 0.0,
+            load_x: 0.0,
+            load_y: 0.0,
+        }
+    }
+}
+
+type V3 = SVector<f64, 3>;
+
+/// Sampling rate of the joint sensors, Hz.
+const RATE: f64 = 100.0;
+/// Samples of the identification run: three periods of the excitation.
+const SAMPLES: u32 = 3000;
+/// Samples of the validation run.
+const FRESH: u32 = 1000;
+/// Standard deviation of the torque measurement noise, N m (motor-current noise).
+const SIGMA: f64 = 0.1;
+/// Fundamental frequency of the excitation, Hz: a 10 s period.
+const BASE_HZ: f64 = 0.1;
+const HARMONICS: usize = 5;
+
+/// Deterministic splitmix64 numbers, uniform and (Box-Muller) Gaussian.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^= z >> 31;
+        #[allow(clippy::cast_precision_loss)]
+        let u = (z >> 11) as f64 / (1u64 << 53) as f64;
+        u
+    }
+
+    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.next()
+    }
+
+    fn gaussian(&mut self) -> f64 {
+        // 1 - u lies in (0, 1], so the logarithm is finite.
+        let (u, v) = (1.0 - self.next(), self.next());
+        (-2.0 * u.ln()).sqrt() * (TAU * v).cos()
+    }
+
+    fn noise(&mut self, sigma: f64) -> V3 {
+        V3::from_fn(|_, _| sigma * self.gaussian())
+    }
+}
+
+/// Swevers' periodic excitation: per joint
+/// `q(t) = q0 + sum_l a_l / (w l) sin(w l t) - b_l / (w l) cos(w l t)`, `w = 2 pi 0.1 Hz`.
+struct Excitation {
+    q0: [f64; 3],
+    a: [[f64; HARMONICS]; 3],
+    b: [[f64; HARMONICS]; 3],
+}
+
+/// Bounds of the motion about the centre, rad, rad/s, rad/s^2: the arm sweeps most of its
+/// range while the motors stay within their speed and torque.
+const Q_SWING: f64 = 1.5;
+const QD_MAX: f64 = 3.0;
+const QDD_MAX: f64 = 10.0;
+
+impl Excitation {
+    fn random(rng: &mut Rng, q0: [f64; 3]) -> Self {
+        let mut coefficients =
+            || std::array::from_fn(|_| std::array::from_fn(|_| rng.uniform(-1.0, 1.0)));
+        let mut e = Self {
+            q0,
+            a: coefficients(),
+            b: coefficients(),
+        };
+        // Scale each joint's series so that its largest swing, speed or acceleration over a
+        // period meets its bound.
+        let mut peak = V3::zeros();
+        for k in 0..1000 {
+            let (q, qd, qdd) = e.state(f64::from(k) / (1000.0 * BASE_HZ));
+            let ratio = ((q - V3::from(q0)).abs() / Q_SWING)
+                .sup(&(qd.abs() / QD_MAX))
+                .sup(&(qdd.abs() / QDD_MAX));
+            peak = peak.sup(&ratio);
+        }
+        for ((a, b), p) in e.a.iter_mut().zip(&mut e.b).zip(peak.iter()) {
+            for (a, b) in a.iter_mut().zip(b.iter_mut()) {
+                *a /= p;
+                *b /= p;
+            }
+        }
+        e
+    }
+
+    /// `q, qd, qdd` at time `t`, analytic.
+    fn state(&self, t: f64) -> (V3, V3, V3) {
+        let omega = TAU * BASE_HZ;
+        let (mut q, mut qd, mut qdd) = (V3::from(self.q0), V3::zeros(), V3::zeros());
+        for j in 0..3 {
+            // The l-th harmonic's frequency, omega l.
+            let mut wl = 0.0;
+            for (&a, &b) in self.a[j].iter().zip(&self.b[j]) {
+                wl += omega;
+                let (s, c) = (wl * t).sin_cos();
+                q[j] += (a * s - b * c) / wl;
+                qd[j] += a * c + b * s;
+                qdd[j] += wl * (b * c - a * s);
+            }
+        }
+        (q, qd, qdd)
+    }
+}
+
+/// One run: sample times, states and measured (noisy) torques.
+struct Run {
+    t: Vec<f64>,
+    states: Vec<(V3, V3, V3)>,
+    measured: Vec<V3>,
+}
+
+/// "The real robot": the numeric reference's torques along the trajectory plus sensor noise.
+fn measure(robot: &Arm, e: &Excitation, samples: u32, rng: &mut Rng) -> Run {
+    let model = robot.model();
+    let t: Vec<f64> = (0..samples).map(|k| f64::from(k) / RATE).collect();
+    let states: Vec<_> = t.iter().map(|&t| e.state(t)).collect();
+    let measured = states
+        .iter()
+        .map(|(q, qd, qdd)| reference::inverse_dynamics(&model, q, qd, qdd) + rng.noise(SIGMA))
+        .collect();
+    Run {
+        t,
+        states,
+        measured,
+    }
+}
+
+/// The base regressor stacked over the states, 3 rows per sample.
+fn stack(model: &Arm, states: &[(V3, V3, V3)]) -> DMatrix<f64> {
+    let mut w = DMatrix::zeros(3 * states.len(), B);
+    for (k, (q, qd, qdd)) in states.iter().enumerate() {
+        w.fixed_view_mut::<3, B>(3 * k, 0)
+            .copy_from(&model.base_regressor(q, qd, qdd));
+    }
+    w
+}
+
+/// Divides each column by its norm: the condition number then no longer depends on units.
+fn scale_columns(w: &DMatrix<f64>) -> DMatrix<f64> {
+    let mut s = w.clone();
+    for mut c in s.column_iter_mut() {
+        let n = c.norm();
+        c /= n;
+    }
+    s
+}
+
+fn condition(w: &DMatrix<f64>) -> f64 {
+    let s = w.singular_values();
+    s.max() / s.min()
+}
+
+/// A least-squares estimate with its covariance.
+struct Estimate {
+    theta: SVector<f64, B>,
+    std: SVector<f64, B>,
+    sigma: f64,
+    condition: f64,
+    scaled_condition: f64,
+}
+
+/// Least squares `W theta = tau` by SVD; the noise level is estimated from the residual, as on
+/// a real robot, and the covariance is `sigma^2 (W^T W)^-1 = sigma^2 V S^-2 V^T`.
+fn identify(model: &Arm, run: &Run) -> Result<Estimate, Box<dyn Error>> {
+    let w = stack(model, &run.states);
+    let tau = DVector::from_iterator(
+        w.nrows(),
+        run.measured.iter().flat_map(|t| t.iter().copied()),
+    );
+    let scaled_condition = condition(&scale_columns(&w));
+    let svd = w.clone().svd(true, true);
+    let condition = svd.singular_values.max() / svd.singular_values.min();
+    let theta = svd.solve(&tau, 0.0)?;
+    let residual = &tau - &w * &theta;
+    let theta = SVector::from_column_slice(theta.as_slice());
+    #[allow(clippy::cast_precision_loss)]
+    let dof = (w.nrows() - B) as f64;
+    let sigma = (residual.norm_squared() / dof).sqrt();
+    let v_t = svd.v_t.as_ref().ok_or("no V")?;
+    let std = SVector::from_fn(|i, _| {
+        let var: f64 = (0..B)
+            .map(|k| (v_t[(k, i)] / svd.singular_values[k]).powi(2))
+            .sum();
+        sigma * var.sqrt()
+    });
+    Ok(Estimate {
+        theta,
+        std,
+        sigma,
+        condition,
+        scaled_condition,
+    })
+}
+
+/// The excitation among `candidates` random ones whose column-scaled regressor (sampled
+/// coarsely over one period) is best conditioned; returns it and the best and worst numbers.
+fn best_excitation(model: &Arm, rng: &mut Rng, candidates: u32) -> (Excitation, f64, f64) {
+    let mut best: Option<(Excitation, f64)> = None;
+    let mut worst = 0.0_f64;
+    for _ in 0..candidates {
+        let e = Excitation::random(rng, [0.0, 0.4, -0.3]);
+        let states: Vec<_> = (0..200)
+            .map(|k| e.state(f64::from(k) / (200.0 * BASE_HZ)))
+            .collect();
+        let c = condition(&scale_columns(&stack(model, &states)));
+        worst = worst.max(c);
+        if best.as_ref().is_none_or(|(_, b)| c < *b) {
+            best = Some((e, c));
+        }
+    }
+    let (e, c) = best.expect("at least one candidate");
+    (e, c, worst)
+}
+
+fn rms(values: impl Iterator<Item = f64>) -> f64 {
+    let (mut sum, mut n) = (0.0, 0.0);
+    for v in values {
+        sum += v * v;
+        n += 1.0;
+    }
+    (sum / n).sqrt()
+}
+
+const MEASURED: RGBColor = RGBColor(110, 110, 110);
+const PREDICTED: RGBColor = RGBColor(200, 80, 40);
+const BAND: RGBColor = RGBColor(70, 110, 190);
+
+/// Seconds of the validation run drawn: enough for the shape, few enough to see the noise.
+const WINDOW: f64 = 5.0;
+
+fn label_font() -> TextStyle<'static> {
+    ("sans-serif", 13).into_font().into()
+}
+
+/// Per joint: measured against predicted torque, and their difference against the noise band.
+fn draw_torques(
+    path: &Path,
+    run: &Run,
+    predicted: &[V3],
+    errors: &[f64; 3],
+) -> Result<(), Box<dyn Error>> {
+    let root = SVGBackend::new(path, (1200, 900)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let (head, body) = root.split_vertically(76);
+    head.draw(&Text::new(
+        "Identified model against measured torques on a fresh trajectory (the steps: Coulomb friction as a joint reverses)",
+        (16, 10),
+        ("sans-serif", 21).into_font(),
+    ))?;
+    let key = label_font();
+    let y = 52;
+    head.draw(&Circle::new((26, y), 3, MEASURED.filled()))?;
+    head.draw(&Text::new(
+        format!("measured: reference inverse dynamics + noise (sigma = {SIGMA} N m), {RATE} Hz"),
+        (40, y - 7),
+        key.clone(),
+    ))?;
+    head.draw(&PathElement::new(
+        vec![(560, y), (584, y)],
+        PREDICTED.stroke_width(2),
+    ))?;
+    head.draw(&Text::new(
+        "predicted: base_regressor(q, qd, qdd) * identified parameters",
+        (592, y - 7),
+        key.clone(),
+    ))?;
+    head.draw(&Rectangle::new(
+        [(1000, y - 6), (1018, y + 6)],
+        BAND.mix(0.2).filled(),
+    ))?;
+    head.draw(&Text::new("+- 2 sigma", (1026, y - 7), key))?;
+
+    let shown: Vec<usize> = (0..run.t.len()).filter(|&k| run.t[k] <= WINDOW).collect();
+    for (j, row) in body.split_evenly((3, 1)).iter().enumerate() {
+        let (left, right) = row.split_horizontally(790);
+        let (lo, hi) = shown.iter().fold((f64::MAX, f64::MIN), |(lo, hi), &k| {
+            let (m, p) = (run.measured[k][j], predicted[k][j]);
+            (lo.min(m).min(p), hi.max(m).max(p))
+        });
+        let pad = 0.08 * (hi - lo);
+        let mut chart = ChartBuilder::on(&left)
+            .margin(8)
+            .caption(format!("joint {}: torque", j + 1), ("sans-serif", 16))
+            .x_label_area_size(38)
+            .y_label_area_size(62)
+            .build_cartesian_2d(0.0..WINDOW, (lo - pad)..(hi + pad))?;
+        chart
+            .configure_mesh()
+            .light_line_style(TRANSPARENT)
+            .bold_line_style(BLACK.mix(0.08))
+            .x_desc("time (s)")
+            .y_desc("torque (N m)")
+            .label_style(label_font())
+            .axis_desc_style(label_font())
+            .draw()?;
+        chart.draw_series(
+            shown
+                .iter()
+                .map(|&k| Circle::new((run.t[k], run.measured[k][j]), 1, MEASURED.filled())),
+        )?;
+        chart.draw_series(LineSeries::new(
+            shown.iter().map(|&k| (run.t[k], predicted[k][j])),
+            PREDICTED.stroke_width(2),
+        ))?;
+
+        let lim = 4.0 * SIGMA;
+        let mut chart = ChartBuilder::on(&right)
+            .margin(8)
+            .margin_right(18)
+            .caption(
+                format!("measured - predicted: RMS {:.3} N m", errors[j]),
+                ("sans-serif", 16),
+            )
+            .x_label_area_size(38)
+            .y_label_area_size(62)
+            .build_cartesian_2d(0.0..WINDOW, -lim..lim)?;
+        chart
+            .configure_mesh()
+            .light_line_style(TRANSPARENT)
+            .bold_line_style(BLACK.mix(0.08))
+            .x_desc("time (s)")
+            .y_desc("error (N m)")
+            .x_labels(6)
+            .y_labels(5)
+            .label_style(label_font())
+            .axis_desc_style(label_font())
+            .draw()?;
+        chart.draw_series(std::iter::once(Rectangle::new(
+            [(0.0, -2.0 * SIGMA), (WINDOW, 2.0 * SIGMA)],
+            BAND.mix(0.2).filled(),
+        )))?;
+        chart.draw_series(shown.iter().map(|&k| {
+            let e = run.measured[k][j] - predicted[k][j];
+            Circle::new((run.t[k], e), 1, MEASURED.filled())
+        }))?;
+    }
+    root.present()?;
+    Ok(())
+}
+
+/// Per base parameter: its error in standard deviations, and its relative standard deviation.
+fn draw_parameters(
+    path: &Path,
+    truth: &SVector<f64, B>,
+    est: &Estimate,
+) -> Result<(), Box<dyn Error>> {
+    let names = <Arm as Identification<3, P, B>>::BASE_PARAMETERS;
+    let root = SVGBackend::new(path, (1200, 640)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let (head, body) = root.split_vertically(50);
+    head.draw(&Text::new(
+        format!("Identified base parameters: {SAMPLES} samples, noise sigma = {SIGMA} N m"),
+        (16, 14),
+        ("sans-serif", 21).into_font(),
+    ))?;
+    let (left, right) = body.split_horizontally(800);
+    // The first parameter on top.
+    let row = |i: usize| SegmentValue::CenterOf(i32::try_from(B - 1 - i).unwrap_or(0));
+    // plotters' integer ranges include their end: B rows.
+    let rows = 0..i32::try_from(B - 1)?;
+
+    let mut chart = ChartBuilder::on(&left)
+        .margin(10)
+        .caption(
+            "(identified - true) / standard deviation (whiskers +- 1, band +- 2)",
+            ("sans-serif", 16),
+        )
+        .x_label_area_size(40)
+        .y_label_area_size(215)
+        .build_cartesian_2d(-4.0..4.0, rows.clone().into_segmented())?;
+    chart
+        .configure_mesh()
+        .light_line_style(TRANSPARENT)
+        .bold_line_style(BLACK.mix(0.08))
+        .y_labels(B)
+        .y_label_formatter(&|v| match v {
+            SegmentValue::CenterOf(i) => usize::try_from(*i)
+                .ok()
+                .and_then(|i| (B - 1).checked_sub(i))
+                .and_then(|i| names.get(i))
+                .map_or_else(String::new, |n| (*n).to_string()),
+            _ => String::new(),
+        })
+        .x_label_formatter(&|x| format!("{x:.0}"))
+        .x_desc("standard deviations")
+        .label_style(label_font())
+        .axis_desc_style(label_font())
+        .draw()?;
+    chart.draw_series(std::iter::once(Rectangle::new(
+        [(-2.0, SegmentValue::Exact(0)), (2.0, SegmentValue::Last)],
+        BAND.mix(0.15).filled(),
+    )))?;
+    chart.draw_series(std::iter::once(PathElement::new(
+        vec![(0.0, SegmentValue::Exact(0)), (0.0, SegmentValue::Last)],
+        BLACK.mix(0.5),
+    )))?;
+    // plotters' ErrorBar needs a feature this crate does not enable: a whisker and a dot.
+    let z = |i: usize| (est.theta[i] - truth[i]) / est.std[i];
+    chart.draw_series((0..B).map(|i| {
+        PathElement::new(
+            vec![(z(i) - 1.0, row(i)), (z(i) + 1.0, row(i))],
+            PREDICTED.stroke_width(2),
+        )
+    }))?;
+    chart.draw_series((0..B).map(|i| Circle::new((z(i), row(i)), 4, PREDICTED.filled())))?;
+
+    let mut chart = ChartBuilder::on(&right)
+        .margin(10)
+        .caption("standard deviation / |true value|", ("sans-serif", 16))
+        .x_label_area_size(40)
+        .y_label_area_size(10)
+        .margin_right(24)
+        .build_cartesian_2d((0.01..30.0).log_scale(), rows.into_segmented())?;
+    chart
+        .configure_mesh()
+        .light_line_style(TRANSPARENT)
+        .bold_line_style(BLACK.mix(0.08))
+        .y_labels(B)
+        .y_label_formatter(&|_| String::new())
+        .x_label_formatter(&|x| format!("{x}%"))
+        .x_desc("relative standard deviation (log scale)")
+        .label_style(label_font())
+        .axis_desc_style(label_font())
+        .draw()?;
+    let pct = |i: usize| 100.0 * est.std[i] / truth[i].abs();
+    chart.draw_series((0..B).map(|i| {
+        PathElement::new(
+            vec![(0.01, row(i)), (pct(i), row(i))],
+            BAND.mix(0.7).stroke_width(12),
+        )
+    }))?;
+    chart.draw_series((0..B).map(|i| {
+        let p = pct(i);
+        let text = if p < 0.1 {
+            format!("{p:.3}%")
+        } else {
+            format!("{p:.2}%")
+        };
+        EmptyElement::at((p, row(i)))
+            + Text::new(
+                text,
+                (6, 0),
+                label_font().pos(Pos::new(HPos::Left, VPos::Center)),
+            )
+    }))?;
+    root.present()?;
+    Ok(())
+}
+
+fn docs() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("docs")
+}
+
+/// Prints the table of base parameters and returns the largest error in standard deviations.
+fn print_estimate(truth: &SVector<f64, B>, est: &Estimate) -> f64 {
+    let names = <Arm as Identification<3, P, B>>::BASE_PARAMETERS;
+    let width = names.iter().map(|n| n.len()).max().unwrap_or(0);
+    println!(
+        "{:width$}  {:>10} {:>10} {:>10} {:>9} {:>7}",
+        "base parameter", "true", "identified", "error", "std dev", "err/std"
+    );
+    let mut worst = 0.0_f64;
+    for i in 0..B {
+        let err = est.theta[i] - truth[i];
+        let z = err / est.std[i];
+        worst = worst.max(z.abs());
+        println!(
+            "{:width$}  {:>10.5} {:>10.5} {:>10.5} {:>9.5} {:>7.2}",
+            names[i], truth[i], est.theta[i], err, est.std[i], z
+        );
+    }
+    println!("largest error: {worst:.2} standard deviations");
+    worst
+}
+
+/// Steps 1 and 2: the excitation, its measurements and the identified base parameters.
+fn identify_empty(
+    model: &Arm,
+    robot: &Arm,
+    rng: &mut Rng,
+) -> Result<(Excitation, Estimate), Box<dyn Error>> {
+    println!("== 1. excitation ==");
+    let (excitation, cond, worst) = best_excitation(model, rng, 20);
+    println!(
+        "best of 20 random Fourier coefficient sets: column-scaled condition number {cond:.2} (worst {worst:.2})"
+    );
+    let run = measure(robot, &excitation, SAMPLES, rng);
+    // Coulomb friction is only told from viscous friction and inertia when the speeds change
+    // sign, and the inertias only when the arm sweeps its range.
+    let extent = |pick: fn(&(V3, V3, V3)) -> V3| {
+        let (lo, hi) = run.states.iter().fold(
+            (V3::repeat(f64::MAX), V3::repeat(f64::MIN)),
+            |(lo, hi), s| (lo.inf(&pick(s)), hi.sup(&pick(s))),
+        );
+        format!("{:.2?}", (0..3).map(|j| (lo[j], hi[j])).collect::<Vec<_>>())
+    };
+    let torque_rms: Vec<f64> = (0..3)
+        .map(|j| rms(run.measured.iter().map(|t| t[j])))
+        .collect();
+    println!(
+        "{SAMPLES} samples at {RATE} Hz over {} s",
+        f64::from(SAMPLES) / RATE
+    );
+    println!("joint angles (min, max): {} rad", extent(|s| s.0));
+    println!("joint speeds (min, max): {} rad/s", extent(|s| s.1));
+    println!("measured torque RMS {torque_rms:.2?} N m; noise sigma {SIGMA} N m");
+
+    println!("\n== 2. least squares ==");
+    let est = identify(model, &run)?;
+    println!(
+        "stacked base regressor {} x {B}: condition number {:.1}, column-scaled {:.2}",
+        3 * SAMPLES,
+        est.condition,
+        est.scaled_condition
+    );
+    println!(
+        "noise estimated from the residual: {:.4} N m (true {SIGMA}); std dev = sqrt of the diagonal of sigma^2 (W^T W)^-1\n",
+        est.sigma
+    );
+    let worst_z = print_estimate(&robot.base_parameters(), &est);
+    assert!(
+        worst_z < 5.0,
+        "an identified parameter is off by {worst_z:.1} standard deviations"
+    );
+    Ok((excitation, est))
+}
+
+/// Step 3: the identified model's torques on a fresh trajectory against fresh measurements.
+fn validate(model: &Arm, robot: &Arm, est: &Estimate, rng: &mut Rng) -> (Run, Vec<V3>, [f64; 3]) {
+    println!("\n== 3. validation on a fresh trajectory ==");
+    let fresh = Excitation::random(rng, [0.6, -0.5, 0.8]);
+    let check = measure(robot, &fresh, FRESH, rng);
+    let predicted: Vec<V3> = check
+        .states
+        .iter()
+        .map(|(q, qd, qdd)| model.base_regressor(q, qd, qdd) * est.theta)
+        .collect();
+    let errors: [f64; 3] = std::array::from_fn(|j| {
+        rms(check
+            .measured
+            .iter()
+            .zip(&predicted)
+            .map(|(m, p)| m[j] - p[j]))
+    });
+    for (j, e) in errors.iter().enumerate() {
+        println!(
+            "joint {}: RMS(measured - predicted) = {e:.4} N m = {:.3} sigma",
+            j + 1,
+            e / SIGMA
+        );
+        assert!(*e < 1.5 * SIGMA, "joint {}: prediction error {e}", j + 1);
+    }
+    (check, predicted, errors)
+}
+
+/// Step 4: the arm carries a payload the model does not know; the same regressor identifies
+/// the loaded arm's base parameters, and their change from the empty arm's gives its mass.
+fn identify_payload(
+    model: &Arm,
+    robot: &Arm,
+    excitation: &Excitation,
+    empty: &Estimate,
+    rng: &mut Rng,
+) -> Result<(), Box<dyn Error>> {
+    println!("\n== 4. an unknown payload ==");
+    let loaded = Arm {
+        load: 1.5,
+        load_inertia: 0.004,
+        load_x: 0.06,
+        load_y: 0.02,
+        ..robot.clone()
+    };
+    let carrying = measure(&loaded, excitation, SAMPLES, rng);
+    let est = identify(model, &carrying)?;
+    let (before, after) = (robot.base_parameters(), loaded.base_parameters());
+    let names = <Arm as Identification<3, P, B>>::BASE_PARAMETERS;
+    let width = names.iter().map(|n| n.len()).max().unwrap_or(0);
+    println!(
+        "{:width$}  {:>10} {:>10} {:>10} {:>9} {:>12} {:>12}",
+        "changed by the payload",
+        "empty",
+        "loaded",
+        "identified",
+        "std dev",
+        "vs loaded",
+        "vs empty"
+    );
+    let mut worst = 0.0_f64;
+    for i in 0..B {
+        let z_loaded = (est.theta[i] - after[i]) / est.std[i];
+        worst = worst.max(z_loaded.abs());
+        // The base parameters without a payload term evaluate the same expression.
+        if (after[i] - before[i]).abs() <= 1e-12 {
+            continue;
+        }
+        let z_empty = (est.theta[i] - before[i]) / est.std[i];
+        println!(
+            "{:width$}  {:>10.5} {:>10.5} {:>10.5} {:>9.5} {:>10.2} sd {:>9.1} sd",
+            names[i], before[i], after[i], est.theta[i], est.std[i], z_loaded, z_empty
+        );
+        assert!(
+            z_empty.abs() > 10.0,
+            "{}: the payload should show",
+            names[i]
+        );
+    }
+    println!("all {B} within {worst:.2} standard deviations of the loaded arm's base parameters");
+    assert!(worst < 5.0, "loaded: off by {worst:.1} standard deviations");
+    // mx2 + l2 m3 + l2 mp: the payload's mass is its change over l2, between two independent
+    // identifications.
+    let i = names
+        .iter()
+        .position(|n| n.starts_with("mx2"))
+        .ok_or("mx2")?;
+    let l2 = robot.links()[1].length;
+    let mass = (est.theta[i] - empty.theta[i]) / l2;
+    let mass_std = est.std[i].hypot(empty.std[i]) / l2;
+    println!(
+        "payload mass from the change of {}: {mass:.4} +- {mass_std:.4} kg (true {})",
+        names[i], loaded.load
+    );
+    assert!((mass - loaded.load).abs() < 5.0 * mass_std);
+    Ok(())
+}
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let robot = Arm::empty();
+    // The base regressor depends on the lengths and gravity only: the model it comes from
+    // need not know any mass, inertia or friction.
+    let model = Arm::empty();
+    let mut rng = Rng(0x1de7_1f1e);
+
+    let (excitation, est) = identify_empty(&model, &robot, &mut rng)?;
+    let (check, predicted, errors) = validate(&model, &robot, &est, &mut rng);
+    identify_payload(&model, &robot, &excitation, &est, &mut rng)?;
+
+    let torques = docs().join("identify-torques.svg");
+    draw_torques(&torques, &check, &predicted, &errors)?;
+    println!("\n{}", torques.display());
+    let parameters = docs().join("identify-parameters.svg");
+    draw_parameters(&parameters, &robot.base_parameters(), &est)?;
+    println!("{}", parameters.display());
+    Ok(())
+}
