@@ -1,28 +1,29 @@
 //! Items that generated code names. Not public API: no stability promise.
 #![allow(missing_docs)]
 
-pub use crate::trig::sin_cos;
 pub use ::core;
 pub use ::nalgebra;
 
 use nalgebra::{Isometry2, SMatrix, SVector, Translation2, UnitComplex};
 
+use crate::Real;
+
 #[inline(always)]
 #[must_use]
-pub fn unpack<const N: usize>(v: &SVector<f64, N>) -> [f64; N] {
+pub fn unpack<T: Copy, const N: usize>(v: &SVector<T, N>) -> [T; N] {
     v.data.0[0]
 }
 
 #[inline(always)]
 #[must_use]
-pub fn vector<const N: usize>(v: [f64; N]) -> SVector<f64, N> {
+pub fn vector<T: Real, const N: usize>(v: [T; N]) -> SVector<T, N> {
     SVector::from_array_storage(nalgebra::ArrayStorage([v]))
 }
 
 /// Rows in, nalgebra's column-major storage out.
 #[inline(always)]
 #[must_use]
-pub fn matrix<const R: usize, const C: usize>(rows: [[f64; C]; R]) -> SMatrix<f64, R, C> {
+pub fn matrix<T: Real, const R: usize, const C: usize>(rows: [[T; C]; R]) -> SMatrix<T, R, C> {
     SMatrix::from_fn(|r, c| rows[r][c])
 }
 
@@ -53,14 +54,29 @@ pub const fn terms(code: &'static [u8], names: &'static [&'static str]) -> crate
 /// The sign for Coulomb friction: 0 at zero (unlike `f64::signum`), NaN for NaN.
 #[inline(always)]
 #[must_use]
-pub fn sign(x: f64) -> f64 {
-    if x > 0.0 {
-        1.0
-    } else if x < 0.0 {
-        -1.0
-    } else {
-        x * 0.0
-    }
+pub fn sign<T: Real>(x: T) -> T {
+    x.sign()
+}
+
+/// The angles' sines and cosines in the scalar `T` (for `f64`, [`crate::trig::sin_cos`]).
+#[inline(always)]
+#[must_use]
+pub fn sin_cos<T: Real, const N: usize>(q: [T; N]) -> [(T, T); N] {
+    T::sin_cos(q)
+}
+
+/// `a.max(b)` in the scalar `T`.
+#[inline(always)]
+#[must_use]
+pub fn max<T: Real>(a: T, b: T) -> T {
+    a.max(b)
+}
+
+/// An `f64` constant or parameter in the scalar `T`.
+#[inline(always)]
+#[must_use]
+pub fn real<T: Real>(x: f64) -> T {
+    T::from_f64(x)
 }
 
 /// The parameter-only values of an arm's hot methods, computed by its `__freeze` and held by

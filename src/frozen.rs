@@ -3,6 +3,8 @@
 
 use nalgebra::{SMatrix, SVector};
 
+use crate::Real;
+
 use crate::PlanarArm;
 
 /// A view of an arm that evaluates the parameter-only part of its dynamics once, at
@@ -30,7 +32,7 @@ use crate::PlanarArm;
 /// let mut arm = Picker { upper: Revolute, fore: Revolute, m2: 1.0 };
 /// let frozen = arm.freeze();
 /// arm.m2 = 1.5; // error: `arm` is borrowed by `frozen`
-/// let _ = frozen.mass_matrix(&SVector::zeros());
+/// let _ = frozen.mass_matrix(&SVector::<f64, 2>::zeros());
 /// ```
 ///
 /// For an all-literal arm there is nothing to compute beforehand and `Frozen` calls the arm's
@@ -103,49 +105,49 @@ impl<'a, A: PlanarArm<N> + ?Sized, const N: usize> Frozen<'a, A, N> {
     /// [`PlanarArm::mass_matrix`].
     #[inline]
     #[must_use]
-    pub fn mass_matrix(&self, q: &SVector<f64, N>) -> SMatrix<f64, N, N> {
+    pub fn mass_matrix<T: Real>(&self, q: &SVector<T, N>) -> SMatrix<T, N, N> {
         self.arm.__mass_matrix_frozen(&self.block, q)
     }
 
     /// [`PlanarArm::bias`].
     #[inline]
     #[must_use]
-    pub fn bias(&self, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> SVector<f64, N> {
+    pub fn bias<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> SVector<T, N> {
         self.arm.__bias_frozen(&self.block, q, qd)
     }
 
     /// [`PlanarArm::mass_matrix_and_bias`].
     #[inline]
     #[must_use]
-    pub fn mass_matrix_and_bias(
+    pub fn mass_matrix_and_bias<T: Real>(
         &self,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-    ) -> (SMatrix<f64, N, N>, SVector<f64, N>) {
+        q: &SVector<T, N>,
+        qd: &SVector<T, N>,
+    ) -> (SMatrix<T, N, N>, SVector<T, N>) {
         self.arm.__mass_matrix_and_bias_frozen(&self.block, q, qd)
     }
 
     /// [`PlanarArm::inverse_dynamics`].
     #[inline]
     #[must_use]
-    pub fn inverse_dynamics(
+    pub fn inverse_dynamics<T: Real>(
         &self,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        qdd: &SVector<f64, N>,
-    ) -> SVector<f64, N> {
+        q: &SVector<T, N>,
+        qd: &SVector<T, N>,
+        qdd: &SVector<T, N>,
+    ) -> SVector<T, N> {
         self.arm.__inverse_dynamics_frozen(&self.block, q, qd, qdd)
     }
 
     /// [`PlanarArm::forward_dynamics`].
     #[inline]
     #[must_use]
-    pub fn forward_dynamics(
+    pub fn forward_dynamics<T: Real>(
         &self,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        tau: &SVector<f64, N>,
-    ) -> SVector<f64, N> {
+        q: &SVector<T, N>,
+        qd: &SVector<T, N>,
+        tau: &SVector<T, N>,
+    ) -> SVector<T, N> {
         self.arm.__forward_dynamics_frozen(&self.block, q, qd, tau)
     }
 }

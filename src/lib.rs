@@ -174,7 +174,9 @@ mod identification;
 pub mod kinematics;
 mod link;
 mod model;
+mod real;
 pub mod reference;
+pub mod simd;
 pub mod trig;
 
 #[doc(hidden)]
@@ -193,6 +195,7 @@ pub use model::{Model, Payload};
 pub use nalgebra;
 pub use planar_arm_core as symbolic;
 pub use planar_arm_derive::PlanarArm;
+pub use real::Real;
 
 use kinematics::{DlsOptions, IkTarget, Workspace};
 use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2};
@@ -202,7 +205,9 @@ pub mod prelude {
     pub use crate::kinematics::{
         ClosedFormIk, DexterousWorkspace, DlsOptions, IkTarget, TipForce, TipWrench, Workspace,
     };
-    pub use crate::{ArmError, Frozen, Identification, Link, Model, Payload, PlanarArm, Revolute};
+    pub use crate::{
+        ArmError, Frozen, Identification, Link, Model, Payload, PlanarArm, Real, Revolute,
+    };
     pub use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2};
 }
 
@@ -249,47 +254,47 @@ pub trait PlanarArm<const N: usize> {
     }
 
     /// The mass (sensitivity) matrix M(q): symmetric positive definite.
-    fn mass_matrix(&self, q: &SVector<f64, N>) -> SMatrix<f64, N, N>;
+    fn mass_matrix<T: Real>(&self, q: &SVector<T, N>) -> SMatrix<T, N, N>;
     /// The velocity-product (Coriolis and centrifugal) torques c(q, qd).
-    fn coriolis(&self, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> SVector<f64, N>;
+    fn coriolis<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> SVector<T, N>;
     /// The Coriolis matrix C(q, qd) built from Christoffel symbols: `C qd = c` and `Mdot - 2C` is skew.
-    fn coriolis_matrix(&self, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> SMatrix<f64, N, N>;
+    fn coriolis_matrix<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> SMatrix<T, N, N>;
     /// The torques that hold the arm against gravity, g(q) = dV/dq.
-    fn gravity(&self, q: &SVector<f64, N>) -> SVector<f64, N>;
+    fn gravity<T: Real>(&self, q: &SVector<T, N>) -> SVector<T, N>;
     /// The joint friction torques f(qd): viscous `damping qd_i` plus Coulomb
     /// `frictionloss sign(qd_i)` (MuJoCo's `damping` and `frictionloss`), with `sign(0) = 0`.
     /// The Coulomb term is discontinuous at `qd_i = 0`; an integrator stepping through zero
     /// rate chatters around it (a stiction model is not part of this crate).
-    fn friction(&self, qd: &SVector<f64, N>) -> SVector<f64, N>;
+    fn friction<T: Real>(&self, qd: &SVector<T, N>) -> SVector<T, N>;
     /// The bias h(q, qd) = c + g + f: every torque but the inertial one, so that
     /// `inverse_dynamics(q, qd, qdd) = mass_matrix(q) * qdd + bias(q, qd)` (Pinocchio's
     /// `nonLinearEffects`; MuJoCo's `qfrc_bias` with the passive joint friction added).
-    fn bias(&self, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> SVector<f64, N>;
+    fn bias<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> SVector<T, N>;
     /// `(mass_matrix(q), bias(q, qd))` in one pass that shares the trigonometry and common
     /// subexpressions: what a computed-torque or operational-space controller needs every cycle.
-    fn mass_matrix_and_bias(
+    fn mass_matrix_and_bias<T: Real>(
         &self,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-    ) -> (SMatrix<f64, N, N>, SVector<f64, N>);
+        q: &SVector<T, N>,
+        qd: &SVector<T, N>,
+    ) -> (SMatrix<T, N, N>, SVector<T, N>);
     /// The joint torques tau = M qdd + c + g + f.
-    fn inverse_dynamics(
+    fn inverse_dynamics<T: Real>(
         &self,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        qdd: &SVector<f64, N>,
-    ) -> SVector<f64, N>;
+        q: &SVector<T, N>,
+        qd: &SVector<T, N>,
+        qdd: &SVector<T, N>,
+    ) -> SVector<T, N>;
     /// The joint accelerations qdd that solve M qdd = tau - c - g - f.
-    fn forward_dynamics(
+    fn forward_dynamics<T: Real>(
         &self,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        tau: &SVector<f64, N>,
-    ) -> SVector<f64, N>;
+        q: &SVector<T, N>,
+        qd: &SVector<T, N>,
+        tau: &SVector<T, N>,
+    ) -> SVector<T, N>;
     /// Kinetic energy, J: the links, the payload and the rotors (`armature qd_i^2 / 2`).
-    fn kinetic_energy(&self, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> f64;
+    fn kinetic_energy<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> T;
     /// Potential energy, J, measured from y = 0 at the base.
-    fn potential_energy(&self, q: &SVector<f64, N>) -> f64;
+    fn potential_energy<T: Real>(&self, q: &SVector<T, N>) -> T;
     /// Tip position and the orientation of the last link.
     fn tip_pose(&self, q: &SVector<f64, N>) -> Isometry2<f64>;
     /// The 3 x N Jacobian: rows are d/dt of tip x, tip y and the last link's angle.
@@ -323,45 +328,49 @@ pub trait PlanarArm<const N: usize> {
         Self::__Frozen::default()
     }
     #[doc(hidden)]
-    fn __mass_matrix_frozen(&self, _: &Self::__Frozen, q: &SVector<f64, N>) -> SMatrix<f64, N, N> {
+    fn __mass_matrix_frozen<T: Real>(
+        &self,
+        _: &Self::__Frozen,
+        q: &SVector<T, N>,
+    ) -> SMatrix<T, N, N> {
         self.mass_matrix(q)
     }
     #[doc(hidden)]
-    fn __bias_frozen(
+    fn __bias_frozen<T: Real>(
         &self,
         _: &Self::__Frozen,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-    ) -> SVector<f64, N> {
+        q: &SVector<T, N>,
+        qd: &SVector<T, N>,
+    ) -> SVector<T, N> {
         self.bias(q, qd)
     }
     #[doc(hidden)]
-    fn __mass_matrix_and_bias_frozen(
+    fn __mass_matrix_and_bias_frozen<T: Real>(
         &self,
         _: &Self::__Frozen,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-    ) -> (SMatrix<f64, N, N>, SVector<f64, N>) {
+        q: &SVector<T, N>,
+        qd: &SVector<T, N>,
+    ) -> (SMatrix<T, N, N>, SVector<T, N>) {
         self.mass_matrix_and_bias(q, qd)
     }
     #[doc(hidden)]
-    fn __inverse_dynamics_frozen(
+    fn __inverse_dynamics_frozen<T: Real>(
         &self,
         _: &Self::__Frozen,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        qdd: &SVector<f64, N>,
-    ) -> SVector<f64, N> {
+        q: &SVector<T, N>,
+        qd: &SVector<T, N>,
+        qdd: &SVector<T, N>,
+    ) -> SVector<T, N> {
         self.inverse_dynamics(q, qd, qdd)
     }
     #[doc(hidden)]
-    fn __forward_dynamics_frozen(
+    fn __forward_dynamics_frozen<T: Real>(
         &self,
         _: &Self::__Frozen,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        tau: &SVector<f64, N>,
-    ) -> SVector<f64, N> {
+        q: &SVector<T, N>,
+        qd: &SVector<T, N>,
+        tau: &SVector<T, N>,
+    ) -> SVector<T, N> {
         self.forward_dynamics(q, qd, tau)
     }
 

@@ -94,6 +94,23 @@ pub fn sin_cos<const N: usize>(q: [f64; N]) -> [(f64, f64); N] {
     out
 }
 
+/// `(sin x_i, cos x_i)` for the `L` lanes of one SIMD batch, all in one kernel call (the same
+/// kernel and accuracy as [`sin_cos`]; out-of-range lanes go to `f64::sin_cos`). The batch
+/// scalar types of [`Real`](crate::Real) call it once per joint.
+#[inline(always)]
+#[must_use]
+pub fn sin_cos_lanes<const L: usize>(x: [f64; L]) -> ([f64; L], [f64; L]) {
+    let mut out = kernel(x);
+    let mut in_range = true;
+    for v in x {
+        in_range &= v.abs() <= LIMIT;
+    }
+    if !in_range {
+        outside_the_range(&x, &mut out);
+    }
+    (out.map(|(s, _)| s), out.map(|(_, c)| c))
+}
+
 /// The standard library's `sin_cos` for the angles the kernel does not cover.
 #[cold]
 #[inline(never)]

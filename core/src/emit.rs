@@ -123,11 +123,46 @@ pub fn input_name(i: Input, params: &[Param]) -> String {
     }
 }
 
-/// Renders a method.
+/// The scalar a method is emitted in.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum Scalar {
+    /// `f64` throughout.
+    F64,
+    /// The method's type parameter `__T: ::planar_arm::Real`: constants and parameters enter
+    /// through `from_f64`.
+    Generic,
+}
+
+impl Scalar {
+    fn zero(self) -> TokenStream {
+        self.constant(quote!(0.0))
+    }
+
+    fn constant(self, value: TokenStream) -> TokenStream {
+        match self {
+            Scalar::F64 => value,
+            Scalar::Generic => {
+                // `(5.0 / 3.0)` is an argument already: no second pair of parentheses.
+                let mut it = value.clone().into_iter();
+                let inner = match (it.next(), it.next()) {
+                    (Some(proc_macro2::TokenTree::Group(g)), None)
+                        if g.delimiter() == proc_macro2::Delimiter::Parenthesis =>
+                    {
+                        g.stream()
+                    }
+                    _ => value,
+                };
+                quote!(__T::from_f64(#inner))
+            }
+        }
+    }
+}
+
+/// Renders a method in `scalar`.
 ///
 /// # Errors
 /// If a constant does not fit in `f64`.
-pub fn render(method: &Method) -> Result<Rendered, EmitError> {
+pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
     let p = &method.program;
     let out_ids: Vec<Id> = method.outputs.iter().map(|o| o.1).collect();
     let uses = p.use_counts(&out_ids);
@@ -186,7 +221,12 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
                 Some(raw) => Ident::new_raw(raw, Span::call_site()),
                 None => Ident::new(name_of_field, Span::call_site()),
             };
-            statements.push(quote!(let #name: f64 = self.#field;));
+            statements.push(match scalar {
+                Scalar::F64 => quote!(let #name: f64 = self.#field;),
+                Scalar::Generic => {
+                    quote!(let #name: __T = ::planar_arm::__private::real(self.#field);)
+                }
+            });
         }
     }
     // Parameter-only values computed beforehand are read from the block.
@@ -194,7 +234,12 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
         if let Input::Frozen(k) = i {
             let (name, block) = (local(&input_name(i, p.params())), local("block"));
             let k = proc_macro2::Literal::usize_unsuffixed(k);
-            statements.push(quote!(let #name: f64 = #block.0[#k];));
+            statements.push(match scalar {
+                Scalar::F64 => quote!(let #name: f64 = #block.0[#k];),
+                Scalar::Generic => {
+                    quote!(let #name: __T = ::planar_arm::__private::real(#block.0[#k]);)
+                }
+            });
         }
     }
     if !joints.is_empty() {
@@ -227,7 +272,7 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
         let get = |c: Id, exprs: &Vec<Option<(Prec, TokenStream)>>| {
             exprs[c.0 as usize]
                 .clone()
-                .unwrap_or((Prec::Atom, quote!(0.0)))
+                .unwrap_or((Prec::Atom, scalar.zero()))
         };
         let paren = |(prec, ts): (Prec, TokenStream), min: Prec| {
             if prec >= min {
@@ -241,7 +286,7 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
                 Prec::Atom,
                 local(&input_name(*i, p.params())).into_token_stream(),
             ),
-            Node::Const(r) => (Prec::Atom, f64_tokens(r)?),
+            Node::Const(r) => (Prec::Atom, scalar.constant(f64_tokens(r)?)),
             Node::Sin(j) => (
                 Prec::Atom,
                 local(&format!("s{}", j + 1)).into_token_stream(),
@@ -274,11 +319,17 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
                 let b = paren(get(*b, &exprs), Prec::Atom);
                 (Prec::Product, quote!(#a / #b))
             }
-            Node::Max(a, b) => {
-                let a = paren(get(*a, &exprs), Prec::Atom);
-                let (_, b) = get(*b, &exprs);
-                (Prec::Atom, quote!(#a.max(#b)))
-            }
+            Node::Max(a, b) => match scalar {
+                Scalar::F64 => {
+                    let a = paren(get(*a, &exprs), Prec::Atom);
+                    let (_, b) = get(*b, &exprs);
+                    (Prec::Atom, quote!(#a.max(#b)))
+                }
+                Scalar::Generic => {
+                    let ((_, a), (_, b)) = (get(*a, &exprs), get(*b, &exprs));
+                    (Prec::Atom, quote!(::planar_arm::__private::max(#a, #b)))
+                }
+            },
             Node::Neg(a) => {
                 let a = paren(get(*a, &exprs), Prec::Atom);
                 (Prec::Sum, quote!(-#a))
@@ -314,7 +365,7 @@ pub fn render(method: &Method) -> Result<Rendered, EmitError> {
     for (name, id) in &method.outputs {
         let (_, ts) = exprs[id.0 as usize]
             .clone()
-            .unwrap_or((Prec::Atom, quote!(0.0)));
+            .unwrap_or((Prec::Atom, scalar.zero()));
         // Leaves and repeated outputs (the symmetric half of M) get their own readable let.
         let ident = match syn_ident(&ts) {
             Some(existing) => existing,
@@ -356,11 +407,14 @@ pub fn coefficient_tokens<C: Emit>(c: &C) -> Result<TokenStream, EmitError> {
     }
     let mut p = Program::new();
     let id = p.coefficient(c);
-    let rendered = render(&Method {
-        program: p,
-        outputs: vec![("value".into(), id)],
-        evaluation: String::new(),
-    })?;
+    let rendered = render(
+        &Method {
+            program: p,
+            outputs: vec![("value".into(), id)],
+            evaluation: String::new(),
+        },
+        Scalar::F64,
+    )?;
     let statements = &rendered.statements;
     let out = &rendered.outputs[0];
     Ok(quote!({ #(#statements)* #out }))

@@ -8,6 +8,7 @@ use quote::quote;
 
 use crate::emit::{
     check_representable, coefficient_tokens, formula_doc, input_name, local, render, EmitError,
+    Scalar,
 };
 use crate::expr::Expr;
 use crate::methods::{Derived, Method};
@@ -51,6 +52,9 @@ pub(crate) struct Fn<'a> {
     pub(crate) touch: TokenStream,
     /// Builds the return value from the output identifiers.
     pub(crate) finish: Finish<'a>,
+    /// Emitted generic over the scalar (`fn NAME<__T: ::planar_arm::Real>`), its vectors of
+    /// `__T`.
+    pub(crate) generic: bool,
 }
 
 /// The methods that get a variant reading a frozen block (see [`crate::frozen`]): what
@@ -72,7 +76,13 @@ pub(crate) fn emit_fn(
     frozen: Option<(&Method, usize)>,
 ) -> Result<TokenStream, EmitError> {
     let method = frozen.map_or(&f.method, |(m, _)| m);
-    let rendered = render(method)?;
+    let scalar = if f.generic {
+        Scalar::Generic
+    } else {
+        Scalar::F64
+    };
+    let rendered = render(method, scalar)?;
+    let real = if f.generic { quote!(__T) } else { quote!(f64) };
     let nn = Literal::usize_unsuffixed(n);
     let mut params = Vec::new();
     let mut unpack = Vec::new();
@@ -91,7 +101,7 @@ pub(crate) fn emit_fn(
                 } else {
                     local("_")
                 };
-                params.push(quote!(#pname: &::planar_arm::nalgebra::SVector<f64, #nn>));
+                params.push(quote!(#pname: &::planar_arm::nalgebra::SVector<#real, #nn>));
                 if used.iter().any(|&u| u) {
                     let pats = (0..n).map(|j| {
                         if used[j] {
@@ -149,11 +159,16 @@ pub(crate) fn emit_fn(
         let doc = format!("{}\n\n{evaluation}Cost: {}.", f.doc, method.op_count());
         (quote::format_ident!("{}", f.name), doc, TokenStream::new())
     };
+    let generics = if f.generic {
+        quote!(<__T: ::planar_arm::Real>)
+    } else {
+        TokenStream::new()
+    };
     Ok(quote! {
         #[doc = #doc]
         #hidden
         #[inline]
-        fn #name(&self, #(#params),*) -> #ret {
+        fn #name #generics(&self, #(#params),*) -> #ret {
             #touch
             #(#unpack)*
             #(#statements)*
@@ -238,8 +253,8 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     let qd = Param::Joints("qd", Input::Qd);
     let qdd = Param::Joints("qdd", Input::Qdd);
     let tau = Param::Joints("tau", Input::Tau);
-    let svec = quote!(::planar_arm::nalgebra::SVector<f64, #nn>);
-    let smat = quote!(::planar_arm::nalgebra::SMatrix<f64, #nn, #nn>);
+    let svec = quote!(::planar_arm::nalgebra::SVector<__T, #nn>);
+    let smat = quote!(::planar_arm::nalgebra::SMatrix<__T, #nn, #nn>);
     let fields = &header.fields;
     let touch = if fields.is_empty() {
         TokenStream::new()
@@ -264,6 +279,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     let mut specs = Vec::new();
     specs.push(Fn {
         name: "mass_matrix",
+        generic: true,
         params: vec![q],
         ret: smat.clone(),
         doc: formula_doc(&format!("The mass matrix M(q), derived exactly (symmetric; upper triangle shown). {conventions}"), &m_rows),
@@ -273,6 +289,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     });
     specs.push(Fn {
         name: "coriolis",
+        generic: true,
         params: vec![q, qd],
         ret: svec.clone(),
         doc: formula_doc(
@@ -285,6 +302,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     });
     specs.push(Fn {
         name: "coriolis_matrix",
+        generic: true,
         params: vec![q, qd],
         ret: smat.clone(),
         doc: formula_doc("The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.", &cm_rows),
@@ -294,6 +312,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     });
     specs.push(Fn {
         name: "gravity",
+        generic: true,
         params: vec![q],
         ret: svec.clone(),
         doc: formula_doc(
@@ -333,6 +352,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     friction_doc.push_str("```\n");
     specs.push(Fn {
         name: "friction",
+        generic: true,
         params: vec![qd],
         ret: svec.clone(),
         doc: friction_doc,
@@ -342,6 +362,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     });
     specs.push(Fn {
         name: "bias",
+        generic: true,
         params: vec![q, qd],
         ret: svec.clone(),
         doc: "The bias h(q, qd) = c + g + f: every torque but the inertial one, so that \
@@ -354,6 +375,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     });
     specs.push(Fn {
         name: "mass_matrix_and_bias",
+        generic: true,
         params: vec![q, qd],
         ret: quote!((#smat, #svec)),
         doc: "M(q) and h(q, qd) = c + g + f in one pass, sharing the trigonometry and every \
@@ -370,6 +392,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     });
     specs.push(Fn {
         name: "inverse_dynamics",
+        generic: true,
         params: vec![q, qd, qdd],
         ret: svec.clone(),
         doc: formula_doc(
@@ -388,6 +411,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     };
     specs.push(Fn {
         name: "forward_dynamics",
+        generic: true,
         params: vec![q, qd, tau],
         ret: svec.clone(),
         doc: fd_doc,
@@ -397,8 +421,9 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     });
     specs.push(Fn {
         name: "kinetic_energy",
+        generic: true,
         params: vec![q, qd],
-        ret: quote!(f64),
+        ret: quote!(__T),
         doc: formula_doc("The kinetic energy.", &[("T".into(), &dy.kinetic_energy)]),
         method: d.kinetic_energy_method(),
         touch: TokenStream::new(),
@@ -409,8 +434,9 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     });
     specs.push(Fn {
         name: "potential_energy",
+        generic: true,
         params: vec![q],
-        ret: quote!(f64),
+        ret: quote!(__T),
         doc: formula_doc(
             "The potential energy (zero at y = 0).",
             &[("V".into(), &dy.potential_energy)],
@@ -426,6 +452,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     let (tx, ty) = &ki.points[n];
     specs.push(Fn {
         name: "tip_pose",
+        generic: false,
         params: vec![q],
         ret: quote!(::planar_arm::nalgebra::Isometry2<f64>),
         doc: formula_doc(
@@ -450,6 +477,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     }
     specs.push(Fn {
         name: "jacobian",
+        generic: false,
         params: vec![q],
         ret: quote!(::planar_arm::nalgebra::SMatrix<f64, 3, #nn>),
         doc: formula_doc("The Jacobian d(x, y, phi)/dq.", &j_rows),
@@ -459,6 +487,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     });
     specs.push(Fn {
         name: "joint_positions",
+        generic: false,
         params: vec![q],
         ret: quote!([::planar_arm::nalgebra::Point2<f64>; #nn]),
         doc: "The position of each joint, joint 1 at the origin.".to_string(),
@@ -474,6 +503,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     });
     specs.push(Fn {
         name: "tip_polar",
+        generic: false,
         params: vec![q],
         ret: quote!((f64, f64)),
         doc: formula_doc(
@@ -489,8 +519,9 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     });
     specs.push(Fn {
         name: "joint_torques",
+        generic: false,
         params: vec![q, Param::Force, Param::Torque],
-        ret: svec.clone(),
+        ret: quote!(::planar_arm::nalgebra::SVector<f64, #nn>),
         doc: "Statics: tau = J^T (u, v, torque), the motor torques that make the tip exert force (u, v) and torque `torque`.".to_string(),
         method: d.joint_torques_method(),
         touch: TokenStream::new(),
@@ -519,7 +550,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
         for (f, m) in hot.iter().zip(&fz.methods) {
             fns.push(emit_fn(n, f, Some((m, slots)))?);
         }
-        let rendered = render(&fz.block)?;
+        let rendered = render(&fz.block, Scalar::F64)?;
         let statements = &rendered.statements;
         let outputs = &rendered.outputs;
         let doc = format!(
@@ -700,9 +731,12 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
     } = header;
     let nn = Literal::usize_unsuffixed(n);
     let v = quote!(&::planar_arm::nalgebra::SVector<f64, #nn>);
-    let m = quote!(::planar_arm::nalgebra::SMatrix<f64, #nn, #nn>);
     let sv = quote!(::planar_arm::nalgebra::SVector<f64, #nn>);
     let body = quote!({ ::core::unreachable!() });
+    let g = quote!(<__T: ::planar_arm::Real>);
+    let vt = quote!(&::planar_arm::nalgebra::SVector<__T, #nn>);
+    let mt = quote!(::planar_arm::nalgebra::SMatrix<__T, #nn, #nn>);
+    let svt = quote!(::planar_arm::nalgebra::SVector<__T, #nn>);
     quote! {
         #[automatically_derived]
         impl #impl_generics ::planar_arm::PlanarArm<#nn> for #ty #where_clause {
@@ -713,19 +747,19 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
                 coriolis: [::planar_arm::__private::terms(b"", &[]); #nn],
                 gravity: [::planar_arm::__private::terms(b"", &[]); #nn],
             };
-            fn mass_matrix(&self, _: #v) -> #m #body
-            fn coriolis(&self, _: #v, _: #v) -> #sv #body
-            fn coriolis_matrix(&self, _: #v, _: #v) -> #m #body
-            fn gravity(&self, _: #v) -> #sv #body
-            fn friction(&self, _: #v) -> #sv #body
-            fn bias(&self, _: #v, _: #v) -> #sv #body
-            fn mass_matrix_and_bias(&self, _: #v, _: #v) -> (#m, #sv) #body
+            fn mass_matrix #g(&self, _: #vt) -> #mt #body
+            fn coriolis #g(&self, _: #vt, _: #vt) -> #svt #body
+            fn coriolis_matrix #g(&self, _: #vt, _: #vt) -> #mt #body
+            fn gravity #g(&self, _: #vt) -> #svt #body
+            fn friction #g(&self, _: #vt) -> #svt #body
+            fn bias #g(&self, _: #vt, _: #vt) -> #svt #body
+            fn mass_matrix_and_bias #g(&self, _: #vt, _: #vt) -> (#mt, #svt) #body
             type __Frozen = ::planar_arm::__private::Block<0>;
             fn model(&self) -> ::planar_arm::Model<#nn> #body
-            fn inverse_dynamics(&self, _: #v, _: #v, _: #v) -> #sv #body
-            fn forward_dynamics(&self, _: #v, _: #v, _: #v) -> #sv #body
-            fn kinetic_energy(&self, _: #v, _: #v) -> f64 #body
-            fn potential_energy(&self, _: #v) -> f64 #body
+            fn inverse_dynamics #g(&self, _: #vt, _: #vt, _: #vt) -> #svt #body
+            fn forward_dynamics #g(&self, _: #vt, _: #vt, _: #vt) -> #svt #body
+            fn kinetic_energy #g(&self, _: #vt, _: #vt) -> __T #body
+            fn potential_energy #g(&self, _: #vt) -> __T #body
             fn tip_pose(&self, _: #v) -> ::planar_arm::nalgebra::Isometry2<f64> #body
             fn jacobian(&self, _: #v) -> ::planar_arm::nalgebra::SMatrix<f64, 3, #nn> #body
             fn joint_positions(&self, _: #v) -> [::planar_arm::nalgebra::Point2<f64>; #nn] #body

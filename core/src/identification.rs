@@ -228,6 +228,7 @@ pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenS
     let specs = [
         Fn {
             name: "regressor",
+            generic: false,
             params: vec![q, qd, qdd],
             ret: quote!(::planar_arm::nalgebra::SMatrix<f64, #nn, #pl>),
             doc: format!("The regressor Y(q, qd, qdd): `Y * standard_parameters() == inverse_dynamics(q, qd, qdd)`. {standard_doc}"),
@@ -237,6 +238,7 @@ pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenS
         },
         Fn {
             name: "standard_parameters",
+            generic: false,
             params: vec![],
             ret: quote!(::planar_arm::nalgebra::SVector<f64, #pl>),
             doc: format!("The arm's standard parameters now (run-time parameters read from their fields). {standard_doc}"),
@@ -246,6 +248,7 @@ pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenS
         },
         Fn {
             name: "base_regressor",
+            generic: false,
             params: vec![q, qd, qdd],
             ret: quote!(::planar_arm::nalgebra::SMatrix<f64, #nn, #bl>),
             doc: format!("The base regressor: the regressor's columns of the base parameters, `Y_b * base_parameters() == inverse_dynamics(q, qd, qdd)`. {base_doc}"),
@@ -255,6 +258,7 @@ pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenS
         },
         Fn {
             name: "base_parameters",
+            generic: false,
             params: vec![],
             ret: quote!(::planar_arm::nalgebra::SVector<f64, #bl>),
             doc: format!("The arm's base parameters now. {base_doc}"),

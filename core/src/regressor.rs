@@ -724,7 +724,7 @@ mod tests {
                     for (p, e) in m.powers() {
                         let i: usize = p.to_string()[1..].parse().expect("l<i>");
                         for _ in 0..*e {
-                            x = x * lengths[i - 1].clone();
+                            x *= lengths[i - 1].clone();
                         }
                     }
                     acc + x

@@ -69,16 +69,16 @@ M22 = 1/3
 
 Cost: 1 multiplications, 2 additions, 0 divisions, 1 sin_cos pairs.*/
     #[inline]
-    fn mass_matrix(
+    fn mass_matrix<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
-    ) -> ::planar_arm::nalgebra::SMatrix<f64, 2, 2> {
+        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
+    ) -> ::planar_arm::nalgebra::SMatrix<__T, 2, 2> {
         let _ = (&self.upper, &self.fore);
         let [_, __q2] = ::planar_arm::__private::unpack(__q);
         let [(_, __c2)] = ::planar_arm::__private::sin_cos([__q2]);
-        let __m11 = (5.0 / 3.0) + __c2;
-        let __m12 = (1.0 / 3.0) + (1.0 / 2.0) * __c2;
-        let __m22 = (1.0 / 3.0);
+        let __m11 = __T::from_f64(5.0 / 3.0) + __c2;
+        let __m12 = __T::from_f64(1.0 / 3.0) + __T::from_f64(1.0 / 2.0) * __c2;
+        let __m22 = __T::from_f64(1.0 / 3.0);
         ::planar_arm::__private::matrix([[__m11, __m12], [__m12, __m22]])
     }
     /**The velocity-product torques c(q, qd).
@@ -91,15 +91,15 @@ c2 = 1/2 s2 qd1^2
 
 Cost: 7 multiplications, 2 additions, 0 divisions, 1 sin_cos pairs.*/
     #[inline]
-    fn coriolis(
+    fn coriolis<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
-        __qd: &::planar_arm::nalgebra::SVector<f64, 2>,
-    ) -> ::planar_arm::nalgebra::SVector<f64, 2> {
+        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 2>,
+    ) -> ::planar_arm::nalgebra::SVector<__T, 2> {
         let [_, __q2] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
         let [(__s2, _)] = ::planar_arm::__private::sin_cos([__q2]);
-        let __t1 = (1.0 / 2.0) * __s2;
+        let __t1 = __T::from_f64(1.0 / 2.0) * __s2;
         let __cor1 = -(__s2 * __qd1 * __qd2) - __t1 * __qd2 * __qd2;
         let __cor2 = __t1 * __qd1 * __qd1;
         ::planar_arm::__private::vector([__cor1, __cor2])
@@ -116,20 +116,20 @@ C22 = 0
 
 Cost: 3 multiplications, 3 additions, 0 divisions, 1 sin_cos pairs.*/
     #[inline]
-    fn coriolis_matrix(
+    fn coriolis_matrix<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
-        __qd: &::planar_arm::nalgebra::SVector<f64, 2>,
-    ) -> ::planar_arm::nalgebra::SMatrix<f64, 2, 2> {
+        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 2>,
+    ) -> ::planar_arm::nalgebra::SMatrix<__T, 2, 2> {
         let [_, __q2] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
         let [(__s2, _)] = ::planar_arm::__private::sin_cos([__q2]);
-        let __t1 = (1.0 / 2.0) * __s2;
+        let __t1 = __T::from_f64(1.0 / 2.0) * __s2;
         let __t2 = __t1 * __qd2;
         let __cm11 = -__t2;
         let __cm21 = __t1 * __qd1;
         let __cm12 = -__cm21 - __t2;
-        let __cm22 = 0.0;
+        let __cm22 = __T::from_f64(0.0);
         ::planar_arm::__private::matrix([[__cm11, __cm12], [__cm21, __cm22]])
     }
     /**The gravity torques g(q) = dV/dq.
@@ -142,18 +142,18 @@ g2 = 981/200 c12
 
 Cost: 4 multiplications, 2 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
-    fn gravity(
+    fn gravity<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
-    ) -> ::planar_arm::nalgebra::SVector<f64, 2> {
+        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
+    ) -> ::planar_arm::nalgebra::SVector<__T, 2> {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
         let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
             __q1,
             __q2,
         ]);
         let __c12 = __c1 * __c2 - __s1 * __s2;
-        let __g2 = (981.0 / 200.0) * __c12;
-        let __g1 = (2943.0 / 200.0) * __c1 + __g2;
+        let __g2 = __T::from_f64(981.0 / 200.0) * __c12;
+        let __g1 = __T::from_f64(2943.0 / 200.0) * __c1 + __g2;
         ::planar_arm::__private::vector([__g1, __g2])
     }
     /**The joint friction torques f(qd): viscous `damping qd_i` plus Coulomb `frictionloss sign(qd_i)`, with sign(0) = 0 (MuJoCo's `damping` and `frictionloss`). The Coulomb term jumps at `qd_i = 0`.
@@ -166,22 +166,22 @@ f2 = 0
 
 Cost: 0 multiplications, 0 additions, 0 divisions, 0 sin_cos pairs.*/
     #[inline]
-    fn friction(
+    fn friction<__T: ::planar_arm::Real>(
         &self,
-        _: &::planar_arm::nalgebra::SVector<f64, 2>,
-    ) -> ::planar_arm::nalgebra::SVector<f64, 2> {
-        let __f1 = 0.0;
+        _: &::planar_arm::nalgebra::SVector<__T, 2>,
+    ) -> ::planar_arm::nalgebra::SVector<__T, 2> {
+        let __f1 = __T::from_f64(0.0);
         ::planar_arm::__private::vector([__f1, __f1])
     }
     /**The bias h(q, qd) = c + g + f: every torque but the inertial one, so that `inverse_dynamics(q, qd, qdd) = mass_matrix(q) qdd + bias(q, qd)` (Pinocchio's `nonLinearEffects`, MuJoCo's `qfrc_bias` plus its passive joint friction).
 
 Cost: 11 multiplications, 5 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
-    fn bias(
+    fn bias<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
-        __qd: &::planar_arm::nalgebra::SVector<f64, 2>,
-    ) -> ::planar_arm::nalgebra::SVector<f64, 2> {
+        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 2>,
+    ) -> ::planar_arm::nalgebra::SVector<__T, 2> {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
         let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
@@ -189,9 +189,9 @@ Cost: 11 multiplications, 5 additions, 0 divisions, 2 sin_cos pairs.*/
             __q2,
         ]);
         let __c12 = __c1 * __c2 - __s1 * __s2;
-        let __t1 = (981.0 / 200.0) * __c12;
-        let __t2 = (1.0 / 2.0) * __s2;
-        let __h1 = (2943.0 / 200.0) * __c1 + __t1
+        let __t1 = __T::from_f64(981.0 / 200.0) * __c12;
+        let __t2 = __T::from_f64(1.0 / 2.0) * __s2;
+        let __h1 = __T::from_f64(2943.0 / 200.0) * __c1 + __t1
             - (__s2 * __qd1 * __qd2 + __t2 * __qd2 * __qd2);
         let __h2 = __t1 + __t2 * __qd1 * __qd1;
         ::planar_arm::__private::vector([__h1, __h2])
@@ -200,13 +200,13 @@ Cost: 11 multiplications, 5 additions, 0 divisions, 2 sin_cos pairs.*/
 
 Cost: 12 multiplications, 7 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
-    fn mass_matrix_and_bias(
+    fn mass_matrix_and_bias<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
-        __qd: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 2>,
     ) -> (
-        ::planar_arm::nalgebra::SMatrix<f64, 2, 2>,
-        ::planar_arm::nalgebra::SVector<f64, 2>,
+        ::planar_arm::nalgebra::SMatrix<__T, 2, 2>,
+        ::planar_arm::nalgebra::SVector<__T, 2>,
     ) {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
@@ -214,15 +214,15 @@ Cost: 12 multiplications, 7 additions, 0 divisions, 2 sin_cos pairs.*/
             __q1,
             __q2,
         ]);
-        let __m11 = (5.0 / 3.0) + __c2;
-        let __m12 = (1.0 / 3.0) + (1.0 / 2.0) * __c2;
+        let __m11 = __T::from_f64(5.0 / 3.0) + __c2;
+        let __m12 = __T::from_f64(1.0 / 3.0) + __T::from_f64(1.0 / 2.0) * __c2;
         let __c12 = __c2 * __c1 - __s2 * __s1;
-        let __t1 = (981.0 / 200.0) * __c12;
-        let __t2 = (1.0 / 2.0) * __s2;
-        let __h1 = (2943.0 / 200.0) * __c1 + __t1
+        let __t1 = __T::from_f64(981.0 / 200.0) * __c12;
+        let __t2 = __T::from_f64(1.0 / 2.0) * __s2;
+        let __h1 = __T::from_f64(2943.0 / 200.0) * __c1 + __t1
             - (__s2 * __qd1 * __qd2 + __t2 * __qd2 * __qd2);
         let __h2 = __t1 + __t2 * __qd1 * __qd1;
-        let __m22 = (1.0 / 3.0);
+        let __m22 = __T::from_f64(1.0 / 3.0);
         (
             ::planar_arm::__private::matrix([[__m11, __m12], [__m12, __m22]]),
             ::planar_arm::__private::vector([__h1, __h2]),
@@ -238,12 +238,12 @@ tau2 = 981/200 c12 + (1/3 + 1/2 c2) qdd1 + 1/3 qdd2 + 1/2 s2 qd1^2
 
 Cost: 16 multiplications, 11 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
-    fn inverse_dynamics(
+    fn inverse_dynamics<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
-        __qd: &::planar_arm::nalgebra::SVector<f64, 2>,
-        __qdd: &::planar_arm::nalgebra::SVector<f64, 2>,
-    ) -> ::planar_arm::nalgebra::SVector<f64, 2> {
+        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 2>,
+        __qdd: &::planar_arm::nalgebra::SVector<__T, 2>,
+    ) -> ::planar_arm::nalgebra::SVector<__T, 2> {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
         let [__qdd1, __qdd2] = ::planar_arm::__private::unpack(__qdd);
@@ -252,25 +252,26 @@ Cost: 16 multiplications, 11 additions, 0 divisions, 2 sin_cos pairs.*/
             __q2,
         ]);
         let __c12 = __c1 * __c2 - __s1 * __s2;
-        let __t1 = (981.0 / 200.0) * __c12;
-        let __t2 = (1.0 / 3.0) + (1.0 / 2.0) * __c2;
-        let __t3 = (1.0 / 2.0) * __s2;
-        let __tau1 = __t2 * __qdd2 + (2943.0 / 200.0) * __c1 + __t1
-            + (__c2 + (5.0 / 3.0)) * __qdd1
+        let __t1 = __T::from_f64(981.0 / 200.0) * __c12;
+        let __t2 = __T::from_f64(1.0 / 3.0) + __T::from_f64(1.0 / 2.0) * __c2;
+        let __t3 = __T::from_f64(1.0 / 2.0) * __s2;
+        let __tau1 = __t2 * __qdd2 + __T::from_f64(2943.0 / 200.0) * __c1 + __t1
+            + (__c2 + __T::from_f64(5.0 / 3.0)) * __qdd1
             - (__s2 * __qd1 * __qd2 + __t3 * __qd2 * __qd2);
-        let __tau2 = __t1 + __qdd1 * __t2 + (1.0 / 3.0) * __qdd2 + __t3 * __qd1 * __qd1;
+        let __tau2 = __t1 + __qdd1 * __t2 + __T::from_f64(1.0 / 3.0) * __qdd2
+            + __t3 * __qd1 * __qd1;
         ::planar_arm::__private::vector([__tau1, __tau2])
     }
     /**qdd = M^-1 (tau - c - g - f) in closed form (Cramer's rule, det = M11 M22 - M12^2 > 0).
 
 Cost: 18 multiplications, 13 additions, 2 divisions, 2 sin_cos pairs.*/
     #[inline]
-    fn forward_dynamics(
+    fn forward_dynamics<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
-        __qd: &::planar_arm::nalgebra::SVector<f64, 2>,
-        __tau: &::planar_arm::nalgebra::SVector<f64, 2>,
-    ) -> ::planar_arm::nalgebra::SVector<f64, 2> {
+        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 2>,
+        __tau: &::planar_arm::nalgebra::SVector<__T, 2>,
+    ) -> ::planar_arm::nalgebra::SVector<__T, 2> {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
         let [__tau1, __tau2] = ::planar_arm::__private::unpack(__tau);
@@ -278,16 +279,17 @@ Cost: 18 multiplications, 13 additions, 2 divisions, 2 sin_cos pairs.*/
             __q1,
             __q2,
         ]);
-        let __t1 = (1.0 / 3.0) + (1.0 / 2.0) * __c2;
-        let __t2 = (1.0 / 2.0) * __s2;
+        let __t1 = __T::from_f64(1.0 / 3.0) + __T::from_f64(1.0 / 2.0) * __c2;
+        let __t2 = __T::from_f64(1.0 / 2.0) * __s2;
         let __c12 = __c2 * __c1 - __s2 * __s1;
-        let __t3 = (981.0 / 200.0) * __c12;
+        let __t3 = __T::from_f64(981.0 / 200.0) * __c12;
         let __rhs1 = __tau1 - (-(__s2 * __qd1 * __qd2) - __t2 * __qd2 * __qd2)
-            - ((2943.0 / 200.0) * __c1 + __t3);
+            - (__T::from_f64(2943.0 / 200.0) * __c1 + __t3);
         let __rhs2 = __tau2 - __t2 * __qd1 * __qd1 - __t3;
-        let __det = (7.0 / 36.0) + (1.0 / 4.0) * __s2 * __s2;
-        let __qdd1 = ((1.0 / 3.0) * __rhs1 - __t1 * __rhs2) / __det;
-        let __qdd2 = (((5.0 / 3.0) + __c2) * __rhs2 - __t1 * __rhs1) / __det;
+        let __det = __T::from_f64(7.0 / 36.0) + __T::from_f64(1.0 / 4.0) * __s2 * __s2;
+        let __qdd1 = (__T::from_f64(1.0 / 3.0) * __rhs1 - __t1 * __rhs2) / __det;
+        let __qdd2 = ((__T::from_f64(5.0 / 3.0) + __c2) * __rhs2 - __t1 * __rhs1)
+            / __det;
         ::planar_arm::__private::vector([__qdd1, __qdd2])
     }
     /**The kinetic energy.
@@ -299,18 +301,18 @@ T = (5/6 + 1/2 c2) qd1^2 + (1/3 + 1/2 c2) qd1 qd2 + 1/6 qd2^2
 
 Cost: 7 multiplications, 4 additions, 0 divisions, 1 sin_cos pairs.*/
     #[inline]
-    fn kinetic_energy(
+    fn kinetic_energy<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
-        __qd: &::planar_arm::nalgebra::SVector<f64, 2>,
-    ) -> f64 {
+        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 2>,
+    ) -> __T {
         let [_, __q2] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
         let [(_, __c2)] = ::planar_arm::__private::sin_cos([__q2]);
-        let __t1 = (1.0 / 2.0) * __c2;
-        let __kinetic = (1.0 / 6.0) * __qd2 * __qd2
-            + ((5.0 / 6.0) + __t1) * __qd1 * __qd1
-            + (__t1 + (1.0 / 3.0)) * __qd1 * __qd2;
+        let __t1 = __T::from_f64(1.0 / 2.0) * __c2;
+        let __kinetic = __T::from_f64(1.0 / 6.0) * __qd2 * __qd2
+            + (__T::from_f64(5.0 / 6.0) + __t1) * __qd1 * __qd1
+            + (__t1 + __T::from_f64(1.0 / 3.0)) * __qd1 * __qd2;
         __kinetic
     }
     /**The potential energy (zero at y = 0).
@@ -322,14 +324,18 @@ V = 2943/200 s1 + 981/200 s12
 
 Cost: 4 multiplications, 2 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
-    fn potential_energy(&self, __q: &::planar_arm::nalgebra::SVector<f64, 2>) -> f64 {
+    fn potential_energy<__T: ::planar_arm::Real>(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
+    ) -> __T {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
         let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
             __q1,
             __q2,
         ]);
         let __s12 = __s1 * __c2 + __c1 * __s2;
-        let __potential = (2943.0 / 200.0) * __s1 + (981.0 / 200.0) * __s12;
+        let __potential = __T::from_f64(2943.0 / 200.0) * __s1
+            + __T::from_f64(981.0 / 200.0) * __s12;
         __potential
     }
     /**The tip pose; the orientation is the last link's angle q1 + q2.

@@ -111,10 +111,10 @@ M33 = 1/3
 
 Cost: 6 multiplications, 11 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
-    fn mass_matrix(
+    fn mass_matrix<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
-    ) -> ::planar_arm::nalgebra::SMatrix<f64, 3, 3> {
+        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
+    ) -> ::planar_arm::nalgebra::SMatrix<__T, 3, 3> {
         let _ = (&self.upper, &self.fore, &self.hand);
         let [_, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [(__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
@@ -122,14 +122,15 @@ Cost: 6 multiplications, 11 additions, 0 divisions, 2 sin_cos pairs.*/
             __q3,
         ]);
         let __c23 = __c2 * __c3 - __s2 * __s3;
-        let __m11 = 4.0 + 3.0 * __c2 + __c3 + __c23;
-        let __t1 = (1.0 / 2.0) * __c23;
-        let __m12 = (5.0 / 3.0) + (3.0 / 2.0) * __c2 + __c3 + __t1;
-        let __t2 = (1.0 / 2.0) * __c3;
-        let __m13 = __t2 + __t1 + (1.0 / 3.0);
-        let __m22 = __c3 + (5.0 / 3.0);
-        let __m23 = (1.0 / 3.0) + __t2;
-        let __m33 = (1.0 / 3.0);
+        let __m11 = __T::from_f64(4.0) + __T::from_f64(3.0) * __c2 + __c3 + __c23;
+        let __t1 = __T::from_f64(1.0 / 2.0) * __c23;
+        let __m12 = __T::from_f64(5.0 / 3.0) + __T::from_f64(3.0 / 2.0) * __c2 + __c3
+            + __t1;
+        let __t2 = __T::from_f64(1.0 / 2.0) * __c3;
+        let __m13 = __t2 + __t1 + __T::from_f64(1.0 / 3.0);
+        let __m22 = __c3 + __T::from_f64(5.0 / 3.0);
+        let __m23 = __T::from_f64(1.0 / 3.0) + __t2;
+        let __m33 = __T::from_f64(1.0 / 3.0);
         ::planar_arm::__private::matrix([
             [__m11, __m12, __m13],
             [__m12, __m22, __m23],
@@ -149,11 +150,11 @@ Evaluated not term by term but by the planar recursive Newton-Euler algorithm un
 
 Cost: 19 multiplications, 17 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
-    fn coriolis(
+    fn coriolis<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
-        __qd: &::planar_arm::nalgebra::SVector<f64, 3>,
-    ) -> ::planar_arm::nalgebra::SVector<f64, 3> {
+        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 3>,
+    ) -> ::planar_arm::nalgebra::SVector<__T, 3> {
         let [_, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
         let [(__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
@@ -170,12 +171,13 @@ Cost: 19 multiplications, 17 additions, 0 divisions, 2 sin_cos pairs.*/
         let __ax3 = __ex2 * __c3 + __ay2 * __s3;
         let __ay3 = __ay2 * __c3 - __ex2 * __s3;
         let __w3 = __w2 + __qd3;
-        let __fx3 = __ax3 - (1.0 / 2.0) * __w3 * __w3;
-        let __cor3 = (1.0 / 2.0) * __ay3;
+        let __fx3 = __ax3 - __T::from_f64(1.0 / 2.0) * __w3 * __w3;
+        let __cor3 = __T::from_f64(1.0 / 2.0) * __ay3;
         let __t3 = __s3 * __fx3 + __c3 * __ay3;
-        let __fx2 = __ax2 - (1.0 / 2.0) * __t2 + __c3 * __fx3 - __s3 * __ay3;
+        let __fx2 = __ax2 - __T::from_f64(1.0 / 2.0) * __t2 + __c3 * __fx3
+            - __s3 * __ay3;
         let __fy2 = __t3 - __t1;
-        let __cor2 = __cor3 + (1.0 / 2.0) * __ay2 + __t3;
+        let __cor2 = __cor3 + __T::from_f64(1.0 / 2.0) * __ay2 + __t3;
         let __fy1 = __s2 * __fx2 + __c2 * __fy2;
         let __cor1 = __cor2 + __fy1;
         ::planar_arm::__private::vector([__cor1, __cor2, __cor3])
@@ -197,23 +199,23 @@ C33 = 0
 
 Cost: 15 multiplications, 19 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
-    fn coriolis_matrix(
+    fn coriolis_matrix<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
-        __qd: &::planar_arm::nalgebra::SVector<f64, 3>,
-    ) -> ::planar_arm::nalgebra::SMatrix<f64, 3, 3> {
+        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 3>,
+    ) -> ::planar_arm::nalgebra::SMatrix<__T, 3, 3> {
         let [_, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
         let [(__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
             __q2,
             __q3,
         ]);
-        let __t1 = (3.0 / 2.0) * __s2;
+        let __t1 = __T::from_f64(3.0 / 2.0) * __s2;
         let __s23 = __s2 * __c3 + __c2 * __s3;
-        let __t2 = (1.0 / 2.0) * __s23;
+        let __t2 = __T::from_f64(1.0 / 2.0) * __s23;
         let __t3 = -__t1 - __t2;
         let __t4 = __t3 * __qd2;
-        let __t5 = (1.0 / 2.0) * __s3;
+        let __t5 = __T::from_f64(1.0 / 2.0) * __s3;
         let __t6 = -__t2 - __t5;
         let __t7 = __t6 * __qd3;
         let __cm11 = __t4 + __t7;
@@ -227,7 +229,7 @@ Cost: 15 multiplications, 19 additions, 0 divisions, 2 sin_cos pairs.*/
         let __cm32 = __t9 + __t10;
         let __cm23 = -__t9 - (__t8 + __t10);
         let __cm31 = __t10 + (__t2 + __t5) * __qd1;
-        let __cm33 = 0.0;
+        let __cm33 = __T::from_f64(0.0);
         ::planar_arm::__private::matrix([
             [__cm11, __cm12, __cm13],
             [__cm21, __cm22, __cm23],
@@ -245,10 +247,10 @@ g3 = 981/200 c123
 
 Cost: 9 multiplications, 6 additions, 0 divisions, 3 sin_cos pairs.*/
     #[inline]
-    fn gravity(
+    fn gravity<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
-    ) -> ::planar_arm::nalgebra::SVector<f64, 3> {
+        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
+    ) -> ::planar_arm::nalgebra::SVector<__T, 3> {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
             __q1,
@@ -257,10 +259,10 @@ Cost: 9 multiplications, 6 additions, 0 divisions, 3 sin_cos pairs.*/
         ]);
         let __c12 = __c1 * __c2 - __s1 * __s2;
         let __s12 = __s1 * __c2 + __c1 * __s2;
-        let __t1 = (2943.0 / 200.0) * __c12;
+        let __t1 = __T::from_f64(2943.0 / 200.0) * __c12;
         let __c123 = __c12 * __c3 - __s12 * __s3;
-        let __g3 = (981.0 / 200.0) * __c123;
-        let __g1 = __g3 + (981.0 / 40.0) * __c1 + __t1;
+        let __g3 = __T::from_f64(981.0 / 200.0) * __c123;
+        let __g1 = __g3 + __T::from_f64(981.0 / 40.0) * __c1 + __t1;
         let __g2 = __t1 + __g3;
         ::planar_arm::__private::vector([__g1, __g2, __g3])
     }
@@ -275,11 +277,11 @@ f3 = 0
 
 Cost: 0 multiplications, 0 additions, 0 divisions, 0 sin_cos pairs.*/
     #[inline]
-    fn friction(
+    fn friction<__T: ::planar_arm::Real>(
         &self,
-        _: &::planar_arm::nalgebra::SVector<f64, 3>,
-    ) -> ::planar_arm::nalgebra::SVector<f64, 3> {
-        let __f1 = 0.0;
+        _: &::planar_arm::nalgebra::SVector<__T, 3>,
+    ) -> ::planar_arm::nalgebra::SVector<__T, 3> {
+        let __f1 = __T::from_f64(0.0);
         ::planar_arm::__private::vector([__f1, __f1, __f1])
     }
     /**The bias h(q, qd) = c + g + f: every torque but the inertial one, so that `inverse_dynamics(q, qd, qdd) = mass_matrix(q) qdd + bias(q, qd)` (Pinocchio's `nonLinearEffects`, MuJoCo's `qfrc_bias` plus its passive joint friction).
@@ -288,11 +290,11 @@ Evaluated not term by term but by the planar recursive Newton-Euler algorithm un
 
 Cost: 24 multiplications, 19 additions, 0 divisions, 3 sin_cos pairs.*/
     #[inline]
-    fn bias(
+    fn bias<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
-        __qd: &::planar_arm::nalgebra::SVector<f64, 3>,
-    ) -> ::planar_arm::nalgebra::SVector<f64, 3> {
+        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 3>,
+    ) -> ::planar_arm::nalgebra::SVector<__T, 3> {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
         let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
@@ -300,8 +302,8 @@ Cost: 24 multiplications, 19 additions, 0 divisions, 3 sin_cos pairs.*/
             __q2,
             __q3,
         ]);
-        let __ax1 = (981.0 / 100.0) * __s1;
-        let __ay1 = (981.0 / 100.0) * __c1;
+        let __ax1 = __T::from_f64(981.0 / 100.0) * __s1;
+        let __ay1 = __T::from_f64(981.0 / 100.0) * __c1;
         let __ex1 = __ax1 - __qd1 * __qd1;
         let __ax2 = __ex1 * __c2 + __ay1 * __s2;
         let __ay2 = __ay1 * __c2 - __ex1 * __s2;
@@ -311,13 +313,14 @@ Cost: 24 multiplications, 19 additions, 0 divisions, 3 sin_cos pairs.*/
         let __ax3 = __ex2 * __c3 + __ay2 * __s3;
         let __ay3 = __ay2 * __c3 - __ex2 * __s3;
         let __w3 = __w2 + __qd3;
-        let __fx3 = __ax3 - (1.0 / 2.0) * __w3 * __w3;
-        let __h3 = (1.0 / 2.0) * __ay3;
+        let __fx3 = __ax3 - __T::from_f64(1.0 / 2.0) * __w3 * __w3;
+        let __h3 = __T::from_f64(1.0 / 2.0) * __ay3;
         let __t2 = __s3 * __fx3 + __c3 * __ay3;
-        let __fx2 = __ax2 - (1.0 / 2.0) * __t1 + __c3 * __fx3 - __s3 * __ay3;
+        let __fx2 = __ax2 - __T::from_f64(1.0 / 2.0) * __t1 + __c3 * __fx3
+            - __s3 * __ay3;
         let __fy2 = __ay2 + __t2;
-        let __h2 = __h3 + (1.0 / 2.0) * __ay2 + __t2;
-        let __h1 = __h2 + (1.0 / 2.0) * __ay1 + __s2 * __fx2 + __c2 * __fy2;
+        let __h2 = __h3 + __T::from_f64(1.0 / 2.0) * __ay2 + __t2;
+        let __h1 = __h2 + __T::from_f64(1.0 / 2.0) * __ay1 + __s2 * __fx2 + __c2 * __fy2;
         ::planar_arm::__private::vector([__h1, __h2, __h3])
     }
     /**M(q) and h(q, qd) = c + g + f in one pass, sharing the trigonometry and every common subexpression: what computed-torque and operational-space controllers need every cycle.
@@ -326,13 +329,13 @@ M by the composite-rigid-body algorithm unrolled for this arm, h by the recursiv
 
 Cost: 31 multiplications, 28 additions, 0 divisions, 3 sin_cos pairs.*/
     #[inline]
-    fn mass_matrix_and_bias(
+    fn mass_matrix_and_bias<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
-        __qd: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 3>,
     ) -> (
-        ::planar_arm::nalgebra::SMatrix<f64, 3, 3>,
-        ::planar_arm::nalgebra::SVector<f64, 3>,
+        ::planar_arm::nalgebra::SMatrix<__T, 3, 3>,
+        ::planar_arm::nalgebra::SVector<__T, 3>,
     ) {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
@@ -341,18 +344,18 @@ Cost: 31 multiplications, 28 additions, 0 divisions, 3 sin_cos pairs.*/
             __q2,
             __q3,
         ]);
-        let __t1 = (1.0 / 2.0) * __c3;
-        let __hy2 = (1.0 / 2.0) * __s3;
-        let __m23 = (1.0 / 3.0) + __t1;
+        let __t1 = __T::from_f64(1.0 / 2.0) * __c3;
+        let __hy2 = __T::from_f64(1.0 / 2.0) * __s3;
+        let __m23 = __T::from_f64(1.0 / 3.0) + __t1;
         let __t2 = __s2 * __hy2;
         let __m13 = __m23 + __c2 * __t1 - __t2;
-        let __hx2 = __t1 + (3.0 / 2.0);
-        let __m22 = 2.0 * __t1 + (5.0 / 3.0);
+        let __hx2 = __t1 + __T::from_f64(3.0 / 2.0);
+        let __m22 = __T::from_f64(2.0) * __t1 + __T::from_f64(5.0 / 3.0);
         let __t3 = __c2 * __hx2 - __t2;
         let __m12 = __m22 + __t3;
-        let __m11 = 2.0 * __t3 + __m22 + (7.0 / 3.0);
-        let __ax1 = (981.0 / 100.0) * __s1;
-        let __ay1 = (981.0 / 100.0) * __c1;
+        let __m11 = __T::from_f64(2.0) * __t3 + __m22 + __T::from_f64(7.0 / 3.0);
+        let __ax1 = __T::from_f64(981.0 / 100.0) * __s1;
+        let __ay1 = __T::from_f64(981.0 / 100.0) * __c1;
         let __ex1 = __ax1 - __qd1 * __qd1;
         let __ax2 = __c2 * __ex1 + __s2 * __ay1;
         let __ay2 = __c2 * __ay1 - __s2 * __ex1;
@@ -362,14 +365,15 @@ Cost: 31 multiplications, 28 additions, 0 divisions, 3 sin_cos pairs.*/
         let __ax3 = __c3 * __ex2 + __s3 * __ay2;
         let __ay3 = __c3 * __ay2 - __s3 * __ex2;
         let __w3 = __w2 + __qd3;
-        let __fx3 = __ax3 - (1.0 / 2.0) * __w3 * __w3;
-        let __h3 = (1.0 / 2.0) * __ay3;
+        let __fx3 = __ax3 - __T::from_f64(1.0 / 2.0) * __w3 * __w3;
+        let __h3 = __T::from_f64(1.0 / 2.0) * __ay3;
         let __t5 = __s3 * __fx3 + __c3 * __ay3;
-        let __fx2 = __ax2 - (1.0 / 2.0) * __t4 + __c3 * __fx3 - __s3 * __ay3;
+        let __fx2 = __ax2 - __T::from_f64(1.0 / 2.0) * __t4 + __c3 * __fx3
+            - __s3 * __ay3;
         let __fy2 = __ay2 + __t5;
-        let __h2 = __h3 + (1.0 / 2.0) * __ay2 + __t5;
-        let __h1 = __h2 + (1.0 / 2.0) * __ay1 + __s2 * __fx2 + __c2 * __fy2;
-        let __m33 = (1.0 / 3.0);
+        let __h2 = __h3 + __T::from_f64(1.0 / 2.0) * __ay2 + __t5;
+        let __h1 = __h2 + __T::from_f64(1.0 / 2.0) * __ay1 + __s2 * __fx2 + __c2 * __fy2;
+        let __m33 = __T::from_f64(1.0 / 3.0);
         (
             ::planar_arm::__private::matrix([
                 [__m11, __m12, __m13],
@@ -392,12 +396,12 @@ Evaluated not term by term but by the planar recursive Newton-Euler algorithm un
 
 Cost: 29 multiplications, 28 additions, 0 divisions, 3 sin_cos pairs.*/
     #[inline]
-    fn inverse_dynamics(
+    fn inverse_dynamics<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
-        __qd: &::planar_arm::nalgebra::SVector<f64, 3>,
-        __qdd: &::planar_arm::nalgebra::SVector<f64, 3>,
-    ) -> ::planar_arm::nalgebra::SVector<f64, 3> {
+        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 3>,
+        __qdd: &::planar_arm::nalgebra::SVector<__T, 3>,
+    ) -> ::planar_arm::nalgebra::SVector<__T, 3> {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
         let [__qdd1, __qdd2, __qdd3] = ::planar_arm::__private::unpack(__qdd);
@@ -406,8 +410,8 @@ Cost: 29 multiplications, 28 additions, 0 divisions, 3 sin_cos pairs.*/
             __q2,
             __q3,
         ]);
-        let __ax1 = (981.0 / 100.0) * __s1;
-        let __ay1 = (981.0 / 100.0) * __c1;
+        let __ax1 = __T::from_f64(981.0 / 100.0) * __s1;
+        let __ay1 = __T::from_f64(981.0 / 100.0) * __c1;
         let __ex1 = __ax1 - __qd1 * __qd1;
         let __ey1 = __ay1 + __qdd1;
         let __ax2 = __ex1 * __c2 + __ey1 * __s2;
@@ -421,15 +425,17 @@ Cost: 29 multiplications, 28 additions, 0 divisions, 3 sin_cos pairs.*/
         let __ay3 = __ey2 * __c3 - __ex2 * __s3;
         let __w3 = __w2 + __qd3;
         let __al3 = __al2 + __qdd3;
-        let __fx3 = __ax3 - (1.0 / 2.0) * __w3 * __w3;
-        let __fy3 = __ay3 + (1.0 / 2.0) * __al3;
-        let __tau3 = (1.0 / 3.0) * __al3 + (1.0 / 2.0) * __ay3;
+        let __fx3 = __ax3 - __T::from_f64(1.0 / 2.0) * __w3 * __w3;
+        let __fy3 = __ay3 + __T::from_f64(1.0 / 2.0) * __al3;
+        let __tau3 = __T::from_f64(1.0 / 3.0) * __al3 + __T::from_f64(1.0 / 2.0) * __ay3;
         let __t2 = __s3 * __fx3 + __c3 * __fy3;
-        let __fx2 = __ax2 - (1.0 / 2.0) * __t1 + __c3 * __fx3 - __s3 * __fy3;
-        let __fy2 = __ay2 + (1.0 / 2.0) * __al2 + __t2;
-        let __tau2 = __tau3 + (1.0 / 3.0) * __al2 + (1.0 / 2.0) * __ay2 + __t2;
-        let __tau1 = __tau2 + (1.0 / 3.0) * __qdd1 + (1.0 / 2.0) * __ay1 + __s2 * __fx2
-            + __c2 * __fy2;
+        let __fx2 = __ax2 - __T::from_f64(1.0 / 2.0) * __t1 + __c3 * __fx3
+            - __s3 * __fy3;
+        let __fy2 = __ay2 + __T::from_f64(1.0 / 2.0) * __al2 + __t2;
+        let __tau2 = __tau3 + __T::from_f64(1.0 / 3.0) * __al2
+            + __T::from_f64(1.0 / 2.0) * __ay2 + __t2;
+        let __tau1 = __tau2 + __T::from_f64(1.0 / 3.0) * __qdd1
+            + __T::from_f64(1.0 / 2.0) * __ay1 + __s2 * __fx2 + __c2 * __fy2;
         ::planar_arm::__private::vector([__tau1, __tau2, __tau3])
     }
     /**qdd = M^-1 (tau - c - g - f) by an unrolled L D L^T factorisation of M (no square roots, no allocation).
@@ -438,12 +444,12 @@ M, c and g evaluated as `mass_matrix`, `coriolis` and `gravity` evaluate them: M
 
 Cost: 50 multiplications, 53 additions, 3 divisions, 3 sin_cos pairs.*/
     #[inline]
-    fn forward_dynamics(
+    fn forward_dynamics<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
-        __qd: &::planar_arm::nalgebra::SVector<f64, 3>,
-        __tau: &::planar_arm::nalgebra::SVector<f64, 3>,
-    ) -> ::planar_arm::nalgebra::SVector<f64, 3> {
+        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 3>,
+        __tau: &::planar_arm::nalgebra::SVector<__T, 3>,
+    ) -> ::planar_arm::nalgebra::SVector<__T, 3> {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
         let [__tau1, __tau2, __tau3] = ::planar_arm::__private::unpack(__tau);
@@ -453,10 +459,11 @@ Cost: 50 multiplications, 53 additions, 3 divisions, 3 sin_cos pairs.*/
             __q3,
         ]);
         let __c23 = __c2 * __c3 - __s2 * __s3;
-        let __t1 = (1.0 / 2.0) * __c23;
-        let __t2 = (5.0 / 3.0) + (3.0 / 2.0) * __c2 + __c3 + __t1;
-        let __t3 = (1.0 / 2.0) * __c3;
-        let __t4 = __t3 + __t1 + (1.0 / 3.0);
+        let __t1 = __T::from_f64(1.0 / 2.0) * __c23;
+        let __t2 = __T::from_f64(5.0 / 3.0) + __T::from_f64(3.0 / 2.0) * __c2 + __c3
+            + __t1;
+        let __t3 = __T::from_f64(1.0 / 2.0) * __c3;
+        let __t4 = __t3 + __t1 + __T::from_f64(1.0 / 3.0);
         let __ex1 = -(__qd1 * __qd1);
         let __ax2 = __c2 * __ex1;
         let __t5 = __s2 * __ex1;
@@ -467,32 +474,42 @@ Cost: 50 multiplications, 53 additions, 3 divisions, 3 sin_cos pairs.*/
         let __ax3 = __c3 * __ex2 + __s3 * __ay2;
         let __ay3 = __c3 * __ay2 - __s3 * __ex2;
         let __w3 = __w2 + __qd3;
-        let __fx3 = __ax3 - (1.0 / 2.0) * __w3 * __w3;
-        let __t7 = (1.0 / 2.0) * __ay3;
+        let __fx3 = __ax3 - __T::from_f64(1.0 / 2.0) * __w3 * __w3;
+        let __t7 = __T::from_f64(1.0 / 2.0) * __ay3;
         let __t8 = __s3 * __fx3 + __c3 * __ay3;
-        let __fx2 = __ax2 - (1.0 / 2.0) * __t6 + __c3 * __fx3 - __s3 * __ay3;
+        let __fx2 = __ax2 - __T::from_f64(1.0 / 2.0) * __t6 + __c3 * __fx3
+            - __s3 * __ay3;
         let __fy2 = __t8 - __t5;
-        let __t9 = __t7 + (1.0 / 2.0) * __ay2 + __t8;
+        let __t9 = __t7 + __T::from_f64(1.0 / 2.0) * __ay2 + __t8;
         let __fy1 = __s2 * __fx2 + __c2 * __fy2;
         let __c12 = __c2 * __c1 - __s2 * __s1;
         let __s12 = __c2 * __s1 + __s2 * __c1;
-        let __t10 = (2943.0 / 200.0) * __c12;
+        let __t10 = __T::from_f64(2943.0 / 200.0) * __c12;
         let __c123 = __c3 * __c12 - __s3 * __s12;
-        let __t11 = (981.0 / 200.0) * __c123;
-        let __rhs1 = __tau1 - (__t9 + __fy1) - (__t11 + (981.0 / 40.0) * __c1 + __t10);
+        let __t11 = __T::from_f64(981.0 / 200.0) * __c123;
+        let __rhs1 = __tau1 - (__t9 + __fy1)
+            - (__t11 + __T::from_f64(981.0 / 40.0) * __c1 + __t10);
         let __rhs2 = __tau2 - __t9 - (__t10 + __t11);
         let __rhs3 = __tau3 - __t7 - __t11;
-        let __d1 = (4.0 + 3.0 * __c2 + __c3 + __c23).max((9.0 / 4503599627370496.0));
-        let __inv_d1 = 1.0 / __d1;
+        let __d1 = ::planar_arm::__private::max(
+            __T::from_f64(4.0) + __T::from_f64(3.0) * __c2 + __c3 + __c23,
+            __T::from_f64(9.0 / 4503599627370496.0),
+        );
+        let __inv_d1 = __T::from_f64(1.0) / __d1;
         let __l21 = __t2 * __inv_d1;
-        let __d2 = (__c3 + (5.0 / 3.0) - __t2 * __l21).max((1.0 / 1688849860263936.0));
-        let __inv_d2 = 1.0 / __d2;
+        let __d2 = ::planar_arm::__private::max(
+            __c3 + __T::from_f64(5.0 / 3.0) - __t2 * __l21,
+            __T::from_f64(1.0 / 1688849860263936.0),
+        );
+        let __inv_d2 = __T::from_f64(1.0) / __d2;
         let __l31 = __t4 * __inv_d1;
-        let __t12 = (1.0 / 3.0) + __t3 - __t2 * __l31;
+        let __t12 = __T::from_f64(1.0 / 3.0) + __t3 - __t2 * __l31;
         let __l32 = __inv_d2 * __t12;
-        let __d3 = ((1.0 / 3.0) - __t4 * __l31 - __t12 * __l32)
-            .max(0.00000000000000007401486830834377);
-        let __inv_d3 = 1.0 / __d3;
+        let __d3 = ::planar_arm::__private::max(
+            __T::from_f64(1.0 / 3.0) - __t4 * __l31 - __t12 * __l32,
+            __T::from_f64(0.00000000000000007401486830834377),
+        );
+        let __inv_d3 = __T::from_f64(1.0) / __d3;
         let __t13 = __rhs2 - __rhs1 * __l21;
         let __qdd3 = __inv_d3 * (__rhs3 - __rhs1 * __l31 - __l32 * __t13);
         let __qdd2 = __inv_d2 * __t13 - __l32 * __qdd3;
@@ -508,26 +525,27 @@ T = (2 + 3/2 c2 + 1/2 c23 + 1/2 c3) qd1^2 + (5/3 + 3/2 c2 + 1/2 c23 + c3) qd1 qd
 
 Cost: 17 multiplications, 16 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
-    fn kinetic_energy(
+    fn kinetic_energy<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
-        __qd: &::planar_arm::nalgebra::SVector<f64, 3>,
-    ) -> f64 {
+        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 3>,
+    ) -> __T {
         let [_, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
         let [(__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
             __q2,
             __q3,
         ]);
-        let __t1 = (3.0 / 2.0) * __c2;
+        let __t1 = __T::from_f64(3.0 / 2.0) * __c2;
         let __c23 = __c2 * __c3 - __s2 * __s3;
-        let __t2 = (1.0 / 2.0) * __c23;
-        let __t3 = (1.0 / 2.0) * __c3;
-        let __kinetic = (__t3 + __t2 + (1.0 / 3.0)) * __qd1 * __qd3
-            + (2.0 + __t1 + __t2 + __t3) * __qd1 * __qd1
-            + (__t1 + (5.0 / 3.0) + __c3 + __t2) * __qd1 * __qd2
-            + (1.0 / 6.0) * __qd3 * __qd3 + (__t3 + (5.0 / 6.0)) * __qd2 * __qd2
-            + (__t3 + (1.0 / 3.0)) * __qd2 * __qd3;
+        let __t2 = __T::from_f64(1.0 / 2.0) * __c23;
+        let __t3 = __T::from_f64(1.0 / 2.0) * __c3;
+        let __kinetic = (__t3 + __t2 + __T::from_f64(1.0 / 3.0)) * __qd1 * __qd3
+            + (__T::from_f64(2.0) + __t1 + __t2 + __t3) * __qd1 * __qd1
+            + (__t1 + __T::from_f64(5.0 / 3.0) + __c3 + __t2) * __qd1 * __qd2
+            + __T::from_f64(1.0 / 6.0) * __qd3 * __qd3
+            + (__t3 + __T::from_f64(5.0 / 6.0)) * __qd2 * __qd2
+            + (__t3 + __T::from_f64(1.0 / 3.0)) * __qd2 * __qd3;
         __kinetic
     }
     /**The potential energy (zero at y = 0).
@@ -539,7 +557,10 @@ V = 981/40 s1 + 2943/200 s12 + 981/200 s123
 
 Cost: 9 multiplications, 5 additions, 0 divisions, 3 sin_cos pairs.*/
     #[inline]
-    fn potential_energy(&self, __q: &::planar_arm::nalgebra::SVector<f64, 3>) -> f64 {
+    fn potential_energy<__T: ::planar_arm::Real>(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
+    ) -> __T {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
             __q1,
@@ -549,8 +570,8 @@ Cost: 9 multiplications, 5 additions, 0 divisions, 3 sin_cos pairs.*/
         let __c12 = __c1 * __c2 - __s1 * __s2;
         let __s12 = __s1 * __c2 + __c1 * __s2;
         let __s123 = __s12 * __c3 + __c12 * __s3;
-        let __potential = (981.0 / 200.0) * __s123 + (981.0 / 40.0) * __s1
-            + (2943.0 / 200.0) * __s12;
+        let __potential = __T::from_f64(981.0 / 200.0) * __s123
+            + __T::from_f64(981.0 / 40.0) * __s1 + __T::from_f64(2943.0 / 200.0) * __s12;
         __potential
     }
     /**The tip pose; the orientation is the last link's angle q1 + q2 + q3.
