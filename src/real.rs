@@ -159,3 +159,137 @@ macro_rules! batch {
 batch!(WideF64x4, f64x4, f64, 4);
 batch!(WideF32x4, f32x4, f32, 4);
 batch!(WideF32x8, f32x8, f32, 8);
+
+#[cfg(test)]
+mod tests {
+    use super::Real;
+    use simba::simd::{WideF32x4, WideF32x8, WideF64x4};
+
+    struct Rng(u64);
+    impl Rng {
+        fn unit(&mut self) -> f64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            #[allow(clippy::cast_precision_loss)]
+            let u = (self.0 >> 11) as f64 / (1u64 << 53) as f64;
+            2.0 * u - 1.0
+        }
+    }
+
+    /// Ulps between two `f32` of the same sign (`u32::MAX` across signs).
+    fn ulps32(a: f32, b: f32) -> u32 {
+        if a == b {
+            return 0;
+        }
+        if a.is_sign_negative() != b.is_sign_negative() {
+            return u32::MAX;
+        }
+        a.to_bits().abs_diff(b.to_bits())
+    }
+
+    /// Within 1 ulp of the correctly rounded value (`f64::sin_cos` rounded: its error is far
+    /// below an `f32` ulp), or 2^-40 absolutely where the value is that small.
+    #[allow(clippy::cast_possible_truncation)]
+    fn check32(sin_cos: impl Fn([f32; 3]) -> [(f32, f32); 3], xs: &[f32]) -> usize {
+        let mut identical = 0;
+        for chunk in xs.chunks_exact(3) {
+            let got = sin_cos([chunk[0], chunk[1], chunk[2]]);
+            for (&x, &(s, c)) in chunk.iter().zip(&got) {
+                let (s0, c0) = f64::from(x).sin_cos();
+                let (s0, c0) = (s0 as f32, c0 as f32);
+                let ok = |a: f32, b: f32| ulps32(a, b) <= 1 || (a - b).abs() <= 2f32.powi(-40);
+                assert!(ok(s, s0), "sin {x:e}: {s:e} vs {s0:e}");
+                assert!(ok(c, c0), "cos {x:e}: {c:e} vs {c0:e}");
+                identical += usize::from(s == s0) + usize::from(c == c0);
+            }
+        }
+        identical
+    }
+
+    #[allow(clippy::cast_possible_truncation)]
+    fn angles32() -> Vec<f32> {
+        let mut rng = Rng(0x2545_F491_4F6C_DD1D);
+        let mut xs = Vec::new();
+        for scale in [0.785, 4.0, 100.0, 1e4, 1e6] {
+            xs.extend((0..300_000).map(|_| (scale * rng.unit()) as f32));
+        }
+        // Next to multiples of pi/2, where the result is small and cancellation bites.
+        for k in -20_000_i32..20_000 {
+            let x = (f64::from(k) * core::f64::consts::FRAC_PI_2) as f32;
+            xs.extend([x, x.next_up(), x.next_down()]);
+        }
+        xs.extend([0.0, -0.0, 1e-30, -1e-38, 1e-45, 3e-8, -1e-4]);
+        xs.resize(xs.len() / 3 * 3, 0.0);
+        xs
+    }
+
+    #[test]
+    fn f32_within_one_ulp_of_the_correctly_rounded_value() {
+        let xs = angles32();
+        let identical = check32(<f32 as Real>::sin_cos, &xs);
+        #[allow(clippy::cast_precision_loss)]
+        let share = identical as f64 / (2 * xs.len()) as f64;
+        println!("f32: {:.2} % correctly rounded", 100.0 * share);
+        assert!(share > 0.99, "{share}");
+    }
+
+    #[test]
+    #[should_panic(expected = "sin")]
+    fn the_f32_check_rejects_a_kernel_two_ulp_off() {
+        // Negative control: the check above fails a kernel that is 2 ulp high.
+        let off = |q: [f32; 3]| {
+            <f32 as Real>::sin_cos(q).map(|(s, c)| {
+                let up = |v: f32| if v == 0.0 { v } else { v.next_up().next_up() };
+                (up(s), up(c))
+            })
+        };
+        check32(off, &angles32());
+    }
+
+    /// Every lane of a batch equals the scalar evaluation bit for bit (the same kernel and
+    /// operations lane-wise), out-of-range and NaN lanes included.
+    #[test]
+    fn batch_lanes_equal_scalars_bit_for_bit() {
+        let mut rng = Rng(7);
+        let specials = [1e7, f64::NAN, -3e6, f64::INFINITY];
+        for round in 0..20_000 {
+            let mut x: [f64; 8] = core::array::from_fn(|_| 10.0 * rng.unit());
+            if round % 50 == 0 {
+                x[round % 8] = specials[(round / 50) % 4];
+            }
+            let lanes4: [f64; 4] = [x[0], x[1], x[2], x[3]];
+            let [(s, c)] = <WideF64x4 as Real>::sin_cos([WideF64x4::from(lanes4)]);
+            for (i, &xi) in lanes4.iter().enumerate() {
+                let [(s0, c0)] = <f64 as Real>::sin_cos([xi]);
+                assert_eq!(s.0.to_array()[i].to_bits(), s0.to_bits(), "{xi}");
+                assert_eq!(c.0.to_array()[i].to_bits(), c0.to_bits(), "{xi}");
+            }
+            #[allow(clippy::cast_possible_truncation)]
+            let x32 = x.map(|v| v as f32);
+            let [(s, c)] = <WideF32x8 as Real>::sin_cos([WideF32x8::from(x32)]);
+            let x4: [f32; 4] = [x32[4], x32[5], x32[6], x32[7]];
+            let [(s4, c4)] = <WideF32x4 as Real>::sin_cos([WideF32x4::from(x4)]);
+            for (i, &xi) in x32.iter().enumerate() {
+                let [(s0, c0)] = <f32 as Real>::sin_cos([xi]);
+                assert_eq!(s.0.to_array()[i].to_bits(), s0.to_bits(), "{xi}");
+                assert_eq!(c.0.to_array()[i].to_bits(), c0.to_bits(), "{xi}");
+                if i >= 4 {
+                    assert_eq!(s4.0.to_array()[i - 4].to_bits(), s0.to_bits());
+                    assert_eq!(c4.0.to_array()[i - 4].to_bits(), c0.to_bits());
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn sign_and_max_lane_by_lane() {
+        let x = WideF64x4::from([-2.0, 0.0, 3.0, f64::NAN]);
+        let s = x.sign().0.to_array();
+        assert_eq!(&s[..3], &[-1.0, 0.0, 1.0]);
+        assert!(s[3].is_nan());
+        assert_eq!(<f32 as Real>::sign(-0.0), 0.0);
+        let m = x.max(WideF64x4::from([0.0; 4])).0.to_array();
+        assert_eq!(&m[..3], &[0.0, 0.0, 3.0]);
+    }
+}

@@ -129,6 +129,8 @@ struct Eight {
     h: Revolute,
 }
 
+use planar_arm::simd::{SimdValue, WideF64x4};
+
 fn vector<const N: usize>(offset: f64) -> SVector<f64, N> {
     #[allow(clippy::cast_precision_loss)]
     SVector::from_fn(|i, _| (offset + 0.7 * i as f64).sin() * 1.3)
@@ -248,6 +250,22 @@ fn generated_dynamics_kinematics_and_statics_do_not_allocate() {
     assert_no_allocation("run-time parameters", || {
         every_generated_method(&Parameterised::default());
     });
+    // The other scalars: f32, and four states in SIMD lanes.
+    let arm = Parameterised::default();
+    let q32 = SVector::<f32, 3>::new(0.3, -0.4, 0.9);
+    let qb = SVector::<WideF64x4, 3>::from_fn(|j, _| WideF64x4::splat(0.3 * j as f64 - 0.2));
+    let scalars = || {
+        black_box(arm.inverse_dynamics(black_box(&q32), &q32, &q32));
+        black_box(arm.forward_dynamics(black_box(&q32), &q32, &q32));
+        black_box(arm.mass_matrix_and_bias(black_box(&q32), &q32));
+        black_box(arm.freeze().inverse_dynamics(black_box(&q32), &q32, &q32));
+        black_box(arm.inverse_dynamics(black_box(&qb), &qb, &qb));
+        black_box(arm.forward_dynamics(black_box(&qb), &qb, &qb));
+        black_box(arm.mass_matrix_and_bias(black_box(&qb), &qb));
+        black_box(arm.freeze().inverse_dynamics(black_box(&qb), &qb, &qb));
+    };
+    scalars();
+    assert_no_allocation("f32 and SIMD batches", scalars);
 }
 
 #[test]

@@ -1,0 +1,253 @@
+//! The generated dynamics in other scalars: `f32` against `f64` within a bound derived from
+//! `f32` precision, and every lane of a SIMD batch equal to the scalar evaluation bit for bit,
+//! on arms with run-time parameters, armature, friction and payload, literal arms of 2 to 8
+//! links, and the frozen variants.
+
+mod common;
+
+use common::Rng;
+use planar_arm::nalgebra::{SMatrix, SVector};
+use planar_arm::prelude::*;
+use planar_arm::simd::{SimdValue, WideF32x4, WideF32x8, WideF64x4};
+use planar_arm::Real;
+
+#[derive(PlanarArm, Clone)]
+#[arm(gravity = 9.81, payload = self.load, payload_com = (0.03, -0.01))]
+struct Scara {
+    #[arm(length = 0.35, mass = self.m1, inertia = self.i1, com = self.c1, armature = 0.02, damping = 0.1)]
+    shoulder: Revolute,
+    #[arm(length = 0.25, mass = 1.2, com = (0.11, 0.005), frictionloss = self.f2)]
+    elbow: Revolute,
+    m1: f64,
+    i1: f64,
+    c1: f64,
+    f2: f64,
+    load: f64,
+}
+
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81)]
+struct Paper3 {
+    #[arm(length = 1, mass = 1)]
+    a: Revolute,
+    #[arm(length = 1, mass = 1)]
+    b: Revolute,
+    #[arm(length = 1, mass = 1)]
+    c: Revolute,
+}
+
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.80665)]
+struct Eight {
+    #[arm(length = 9/4, mass = 11/8, inertia = 16/25, com = -9/20)]
+    a: Revolute,
+    #[arm(length = 3/5, mass = 4/5, inertia = 3/5, com = 3/10, damping = 1/5)]
+    b: Revolute,
+    #[arm(length = 9/5, mass = 11/4, inertia = 3/2, com = 54/25)]
+    c: Revolute,
+    #[arm(length = 14/5, mass = 2, inertia = 21/50, com = (0, 1/7))]
+    d: Revolute,
+    #[arm(length = 9/10, mass = 5, inertia = 1/25, com = 27/50, armature = 1/20)]
+    e: Revolute,
+    #[arm(length = 4/5, mass = 6/5, inertia = 2/5, com = 24/25)]
+    f: Revolute,
+    #[arm(length = 3/2, mass = 16/5, inertia = 29/25, com = 0)]
+    g: Revolute,
+    #[arm(length = 16/5, mass = 33/8, inertia = 3/10, com = 96/25, frictionloss = 1/3)]
+    h: Revolute,
+}
+
+#[allow(clippy::cast_possible_truncation)]
+fn to32<const R: usize, const C: usize>(m: &SMatrix<f64, R, C>) -> SMatrix<f32, R, C> {
+    m.map(|x| x as f32)
+}
+
+fn to64<const R: usize, const C: usize>(m: &SMatrix<f32, R, C>) -> SMatrix<f64, R, C> {
+    m.map(f64::from)
+}
+
+/// `f32` inputs (so both evaluations see the same numbers) in [-r, r).
+fn state32<const N: usize>(rng: &mut Rng, r: f64) -> SVector<f64, N> {
+    to64(&to32(&rng.vector::<N>(r)))
+}
+
+/// The largest `|f32 - f64| / scale` over the outputs, `scale` the largest magnitude of the
+/// `f64` terms (so that cancellation is measured against what was cancelled).
+fn worst<A: PlanarArm<N>, const N: usize>(arm: &A, rng: &mut Rng) -> f64 {
+    let mut worst: f64 = 0.0;
+    for _ in 0..200 {
+        let (q, qd, qdd) = (
+            state32::<N>(rng, 3.0),
+            state32::<N>(rng, 3.0),
+            state32::<N>(rng, 5.0),
+        );
+        let (q32, qd32, qdd32) = (to32(&q), to32(&qd), to32(&qdd));
+        let m = arm.mass_matrix(&q);
+        let h = arm.bias(&q, &qd);
+        let tau = arm.inverse_dynamics(&q, &qd, &qdd);
+        let scale = 1.0 + m.amax() * qdd.amax() * N as f64 + h.amax();
+        let rel = |a: f64| a / scale;
+        worst = worst.max(rel((to64(&arm.inverse_dynamics(&q32, &qd32, &qdd32))
+            - tau)
+            .amax()));
+        worst = worst.max(rel((to64(&arm.mass_matrix(&q32)) - m).amax()));
+        worst = worst.max(rel((to64(&arm.bias(&q32, &qd32)) - h).amax()));
+        let (m32, h32) = arm.mass_matrix_and_bias(&q32, &qd32);
+        worst = worst.max(rel((to64(&m32) - m).amax()).max(rel((to64(&h32) - h).amax())));
+        let frozen = arm.freeze();
+        worst = worst.max(rel((to64(&frozen.inverse_dynamics(&q32, &qd32, &qdd32))
+            - tau)
+            .amax()));
+        // Forward dynamics: the torque error of the f32 accelerations, M (qdd32 - qdd).
+        let fd32 = to64(&arm.forward_dynamics(&q32, &qd32, &to32(&tau)));
+        let fd = arm.forward_dynamics(&q, &qd, &to64(&to32(&tau)));
+        worst = worst.max(rel((m * (fd32 - fd)).amax()));
+        let e = arm.kinetic_energy(&q, &qd) + arm.potential_energy(&q).abs();
+        let e32 = f64::from(arm.kinetic_energy(&q32, &qd32));
+        worst = worst.max((e32 - arm.kinetic_energy(&q, &qd)).abs() / (1.0 + e));
+    }
+    worst
+}
+
+#[test]
+fn f32_agrees_with_f64_within_a_bound_from_f32_precision() {
+    let mut rng = Rng(0xf32);
+    let mut all = Vec::new();
+    for _ in 0..5 {
+        let arm = Scara {
+            shoulder: Revolute,
+            elbow: Revolute,
+            m1: rng.range(0.5, 4.0),
+            i1: rng.range(0.01, 0.1),
+            c1: rng.range(0.05, 0.3),
+            f2: rng.range(0.0, 0.5),
+            load: rng.range(0.0, 2.0),
+        };
+        all.push(worst(&arm, &mut rng));
+    }
+    all.push(worst(&Paper3::default(), &mut rng));
+    all.push(worst(&Eight::default(), &mut rng));
+    println!(
+        "worst relative f32 error per arm: {:?}",
+        all.iter().map(|w| format!("{w:.2e}")).collect::<Vec<_>>()
+    );
+    // Measured up to 10 f32 epsilons (1.2e-6, the eight-link arm): the bound leaves a factor
+    // of three.
+    for w in all {
+        assert!(w <= 32.0 * f64::from(f32::EPSILON), "{w:e}");
+    }
+}
+
+/// A batch scalar: its lanes from scalars, and back.
+trait Batch: Real {
+    type Lane: Real + Copy;
+    const LANES: usize;
+    fn gather(lanes: &[Self::Lane]) -> Self;
+    fn lane(self, i: usize) -> Self::Lane;
+}
+
+macro_rules! batch {
+    ($ty:ident, $lane:ty, $n:literal) => {
+        impl Batch for $ty {
+            type Lane = $lane;
+            const LANES: usize = $n;
+            fn gather(lanes: &[$lane]) -> Self {
+                let a: [$lane; $n] = core::array::from_fn(|i| lanes[i]);
+                $ty::from(a)
+            }
+            fn lane(self, i: usize) -> $lane {
+                self.extract(i)
+            }
+        }
+    };
+}
+batch!(WideF64x4, f64, 4);
+batch!(WideF32x4, f32, 4);
+batch!(WideF32x8, f32, 8);
+
+/// Bit-for-bit equality of lane `l` of `batch` with `scalar`.
+fn same<B: Batch, const R: usize, const C: usize>(
+    batch: &SMatrix<B, R, C>,
+    scalar: &SMatrix<B::Lane, R, C>,
+    l: usize,
+    what: &str,
+) where
+    B::Lane: Into<f64>,
+{
+    for (b, s) in batch.iter().zip(scalar.iter()) {
+        let (x, y): (f64, f64) = (b.lane(l).into(), (*s).into());
+        assert!(
+            x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan()),
+            "{what}, lane {l}: {x} vs {y}"
+        );
+    }
+}
+
+fn lanes_equal_scalars<A, B, const N: usize>(arm: &A, rng: &mut Rng)
+where
+    A: PlanarArm<N>,
+    B: Batch,
+    B::Lane: Into<f64> + From<f32>,
+{
+    #[allow(clippy::cast_possible_truncation)]
+    let draw = |rng: &mut Rng, r: f64| -> Vec<SVector<B::Lane, N>> {
+        (0..B::LANES)
+            .map(|_| rng.vector::<N>(r).map(|x| B::Lane::from(x as f32)))
+            .collect()
+    };
+    for _ in 0..50 {
+        let (q, qd, qdd) = (draw(rng, 3.0), draw(rng, 3.0), draw(rng, 5.0));
+        let pack = |v: &[SVector<B::Lane, N>]| -> SVector<B, N> {
+            SVector::from_fn(|j, _| B::gather(&v.iter().map(|x| x[j]).collect::<Vec<_>>()))
+        };
+        let (qb, qdb, qddb) = (pack(&q), pack(&qd), pack(&qdd));
+        let tau = arm.inverse_dynamics(&qb, &qdb, &qddb);
+        let m = arm.mass_matrix(&qb);
+        let h = arm.bias(&qb, &qdb);
+        let (mb, hb) = arm.mass_matrix_and_bias(&qb, &qdb);
+        let fd = arm.forward_dynamics(&qb, &qdb, &qddb);
+        let c = arm.coriolis_matrix(&qb, &qdb);
+        let frozen = arm.freeze();
+        let tau_frozen = frozen.inverse_dynamics(&qb, &qdb, &qddb);
+        let t = arm.kinetic_energy(&qb, &qdb);
+        for l in 0..B::LANES {
+            let (q, qd, qdd) = (&q[l], &qd[l], &qdd[l]);
+            same(&tau, &arm.inverse_dynamics(q, qd, qdd), l, "ID");
+            same(&m, &arm.mass_matrix(q), l, "M");
+            same(&h, &arm.bias(q, qd), l, "h");
+            let (ms, hs) = arm.mass_matrix_and_bias(q, qd);
+            same(&mb, &ms, l, "M of M and h");
+            same(&hb, &hs, l, "h of M and h");
+            same(&fd, &arm.forward_dynamics(q, qd, qdd), l, "FD");
+            same(&c, &arm.coriolis_matrix(q, qd), l, "C");
+            same(
+                &tau_frozen,
+                &frozen.inverse_dynamics(q, qd, qdd),
+                l,
+                "frozen ID",
+            );
+            let ts: f64 = arm.kinetic_energy(q, qd).into();
+            assert_eq!(t.lane(l).into().to_bits(), ts.to_bits(), "T");
+        }
+    }
+}
+
+#[test]
+fn every_lane_of_a_batch_is_the_scalar_result_bit_for_bit() {
+    let mut rng = Rng(0x51_3d);
+    let scara = Scara {
+        shoulder: Revolute,
+        elbow: Revolute,
+        m1: 2.5,
+        i1: 0.04,
+        c1: 0.17,
+        f2: 0.3,
+        load: 0.8,
+    };
+    lanes_equal_scalars::<_, WideF64x4, 2>(&scara, &mut rng);
+    lanes_equal_scalars::<_, WideF32x4, 2>(&scara, &mut rng);
+    lanes_equal_scalars::<_, WideF32x8, 2>(&scara, &mut rng);
+    lanes_equal_scalars::<_, WideF64x4, 3>(&Paper3::default(), &mut rng);
+    lanes_equal_scalars::<_, WideF64x4, 8>(&Eight::default(), &mut rng);
+    lanes_equal_scalars::<_, WideF32x8, 8>(&Eight::default(), &mut rng);
+}
