@@ -23,20 +23,27 @@ mod interleaved;
 use interleaved::interleaved;
 
 #[path = "support/random_arms.rs"]
+#[allow(dead_code)] // the one- and eight-link arms are the dynamics bench's
 mod random_arms;
-#[allow(unused_imports)] // Random1 and Random8 are for the dynamics bench
-use random_arms::{Random1, Random2, Random3, Random4, Random6, Random8};
+use random_arms::{Random2, Random3, Random4, Random6};
 
 #[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation)]
 fn row<A: PlanarArm<N> + Default, const N: usize>() {
     let arm = A::default();
     let state = |phase: f64, lane: usize| {
         SVector::<f64, N>::from_fn(|j, _| {
-            ((j + 1) as f64).mul_add(0.37, phase + 0.11 * lane as f64).sin() * 2.0
+            ((j + 1) as f64)
+                .mul_add(0.37, phase + 0.11 * lane as f64)
+                .sin()
+                * 2.0
         })
     };
     let (q, qd, qdd) = (state(0.1, 0), state(1.3, 0), state(2.9, 0));
-    let (q32, qd32, qdd32) = (q.map(|x| x as f32), qd.map(|x| x as f32), qdd.map(|x| x as f32));
+    let (q32, qd32, qdd32) = (
+        q.map(|x| x as f32),
+        qd.map(|x| x as f32),
+        qdd.map(|x| x as f32),
+    );
     let tau = arm.inverse_dynamics(&q, &qd, &qdd);
     let tau32 = tau.map(|x| x as f32);
 
@@ -103,7 +110,13 @@ fn row<A: PlanarArm<N> + Default, const N: usize>() {
     // Eight f32 states against one call on WideF32x8.
     let states32: Vec<_> = states
         .iter()
-        .map(|(a, b, c)| (a.map(|x| x as f32), b.map(|x| x as f32), c.map(|x| x as f32)))
+        .map(|(a, b, c)| {
+            (
+                a.map(|x| x as f32),
+                b.map(|x| x as f32),
+                c.map(|x| x as f32),
+            )
+        })
         .collect();
     let pack8 = |k: usize| -> SVector<WideF32x8, N> {
         SVector::from_fn(|j, _| {

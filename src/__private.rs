@@ -3,6 +3,8 @@
 
 pub use ::core;
 pub use ::nalgebra;
+#[cfg(not(feature = "std"))]
+use num_traits::Float as _;
 
 use nalgebra::{Isometry2, SMatrix, SVector, Translation2, UnitComplex};
 

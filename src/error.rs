@@ -82,4 +82,4 @@ impl fmt::Display for ArmError {
     }
 }
 
-impl std::error::Error for ArmError {}
+impl core::error::Error for ArmError {}

@@ -33,6 +33,8 @@
 //! emits together (docs/performance.md). The encoding is private; [`Terms`] reads it, in
 //! `const` contexts too ([`constant_term`], [`cos_coefficient`], [`sin_coefficient`]).
 
+#[cfg(not(feature = "std"))]
+use num_traits::Float as _;
 /// An exact fraction with `i128` parts, reduced, denominator positive.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Rational {

@@ -164,6 +164,7 @@
 //! compare every generated method with it for arms of 1 to 8 links with random rational
 //! parameters. Energy is conserved under integration, `Mdot - 2C` is skew-symmetric, and the
 //! paper's hand derivations are reproduced exactly where they are right.
+#![cfg_attr(not(feature = "std"), no_std)]
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -176,6 +177,7 @@ mod link;
 mod model;
 mod real;
 pub mod reference;
+#[cfg(feature = "std")]
 pub mod simd;
 pub mod trig;
 
@@ -193,6 +195,7 @@ pub use identification::Identification;
 pub use link::{Link, Revolute};
 pub use model::{Model, Payload};
 pub use nalgebra;
+#[cfg(feature = "symbolic")]
 pub use planar_arm_core as symbolic;
 pub use planar_arm_derive::PlanarArm;
 pub use real::Real;

@@ -2,12 +2,14 @@
 
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
+#[cfg(feature = "std")]
 use simba::simd::{WideF32x4, WideF32x8, WideF64x4};
 
 use crate::trig;
 
 /// A scalar the generated dynamics can evaluate in: `f64`, `f32`, or a batch of states in SIMD
-/// lanes (simba's [`WideF64x4`], [`WideF32x4`], [`WideF32x8`]: one state per lane).
+/// lanes (simba's `WideF64x4`, `WideF32x4`, `WideF32x8` in [`simd`](crate::simd): one state per
+/// lane; with the `std` feature, as simba 0.9's batch types need the standard library).
 ///
 /// The generated `mass_matrix`, `coriolis`, `coriolis_matrix`, `gravity`, `friction`, `bias`,
 /// `mass_matrix_and_bias`, `inverse_dynamics`, `forward_dynamics`, `kinetic_energy` and
@@ -122,6 +124,7 @@ impl Real for f32 {
 
 /// `Real` for a simba batch type over `wide`: lane-wise through arrays, the trigonometry one
 /// kernel call per joint over all lanes.
+#[cfg(feature = "std")]
 macro_rules! batch {
     ($ty:ident, $wide:ident, $lane:ty, $lanes:literal) => {
         impl Real for $ty {
@@ -156,13 +159,17 @@ macro_rules! batch {
     };
 }
 
+#[cfg(feature = "std")]
 batch!(WideF64x4, f64x4, f64, 4);
+#[cfg(feature = "std")]
 batch!(WideF32x4, f32x4, f32, 4);
+#[cfg(feature = "std")]
 batch!(WideF32x8, f32x8, f32, 8);
 
 #[cfg(test)]
 mod tests {
     use super::Real;
+    #[cfg(feature = "std")]
     use simba::simd::{WideF32x4, WideF32x8, WideF64x4};
 
     struct Rng(u64);

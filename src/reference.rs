@@ -48,6 +48,8 @@
 //! | [`regressor_local`] | the same by Pinocchio's `computeJointTorqueRegressor` algorithm: each body's regressor in its own frame, moved inwards joint by joint | O(N^2) |
 
 use nalgebra::{Matrix3, Point2, SMatrix, SVector, Vector2, Vector3};
+#[cfg(not(feature = "std"))]
+use num_traits::Float as _;
 
 use crate::Model;
 

@@ -46,6 +46,8 @@
 //! `f64::sin_cos` instead (per angle, so the others in the array are unaffected): the result is
 //! then exactly the standard library's, and a NaN or infinite angle gives NaN.
 
+#[cfg(not(feature = "std"))]
+use num_traits::Float as _;
 /// `128 / pi`.
 const INV_H: f64 = f64::from_bits(0x4044_5F30_6DC9_C883);
 /// The first 26 bits of `h = pi/128`.

@@ -1,6 +1,8 @@
 //! Closed-form inverse kinematics of two and three links: both elbow branches.
 
 use core::f64::consts::PI;
+#[cfg(not(feature = "std"))]
+use num_traits::Float as _;
 
 use nalgebra::{Isometry2, Point2, SVector, Vector2};
 

@@ -1,6 +1,8 @@
 //! Manipulability and singularity of the task Jacobian, for any number of links.
 
 use nalgebra::{SMatrix, SVector};
+#[cfg(not(feature = "std"))]
+use num_traits::Float as _;
 
 /// The manipulability `sqrt(det(J J^T))` (Yoshikawa) of the task rows of a 3 x N Jacobian
 /// whose rows are tip x, tip y and the last link's angle: the product of the singular values.

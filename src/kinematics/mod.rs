@@ -57,7 +57,9 @@ fn wrap_angle(a: f64) -> f64 {
     if a > -PI && a <= PI {
         a
     } else {
-        let r = a.rem_euclid(TAU);
+        // `a.rem_euclid(TAU)`, spelled out: the same operations, and in `core`.
+        let r = a % TAU;
+        let r = if r < 0.0 { r + TAU } else { r };
         if r > PI {
             r - TAU
         } else {

@@ -2,6 +2,8 @@
 //! hold in balance.
 
 use nalgebra::{SVector, Vector2};
+#[cfg(not(feature = "std"))]
+use num_traits::Float as _;
 
 use super::{check_lengths, check_vector, wrap_angle};
 use crate::ArmError;

@@ -1,6 +1,8 @@
 //! Work-spaces: the annulus any arm reaches and the dexterous work-space of three links.
 
 use core::f64::consts::PI;
+#[cfg(not(feature = "std"))]
+use num_traits::Float as _;
 
 use nalgebra::Point2;
 

@@ -4,6 +4,8 @@
 //! Pinocchio's `computeJointTorqueRegressor` does ([`regressor_local`]).
 
 use nalgebra::{SMatrix, SVector, Vector2, Vector4};
+#[cfg(not(feature = "std"))]
+use num_traits::Float as _;
 
 use super::{cross, link_directions, perp, sign};
 use crate::{Link, Model, Payload};

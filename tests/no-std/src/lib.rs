@@ -1,0 +1,46 @@
+//! A `#![no_std]` crate with no allocator that derives an arm and calls its generated methods
+//! in `f64` and `f32`. CI builds it alone (so no other crate's features leak
+//! in) for the host and, where rustup can install it, for `thumbv7em-none-eabihf`, a
+//! Cortex-M4F microcontroller target that has no `std` at all.
+#![no_std]
+#![deny(warnings)]
+
+use planar_arm::nalgebra::{SVector, Vector2};
+use planar_arm::{ArmError, PlanarArm, Revolute};
+
+/// A two-link arm with a run-time payload mass, friction and gravity.
+#[derive(PlanarArm)]
+#[arm(gravity = 9.81, payload = self.load)]
+pub struct Arm {
+    #[arm(length = 0.3, mass = 1.2, damping = 0.05)]
+    pub upper: Revolute,
+    #[arm(length = 0.25, mass = 0.8, frictionloss = 0.1)]
+    pub fore: Revolute,
+    pub load: f64,
+}
+
+/// One control step on an f32 microcontroller: the computed torque for a desired acceleration.
+#[must_use]
+pub fn computed_torque(
+    arm: &Arm,
+    q: &Vector2<f32>,
+    qd: &Vector2<f32>,
+    qdd: &Vector2<f32>,
+) -> Vector2<f32> {
+    arm.inverse_dynamics(q, qd, qdd)
+}
+
+/// The f64 path with its checked variant and the kinematics.
+///
+/// # Errors
+/// `ArmError::NonFinite` for NaN input.
+pub fn checked(
+    arm: &Arm,
+    q: &SVector<f64, 2>,
+    qd: &SVector<f64, 2>,
+    tau: &SVector<f64, 2>,
+) -> Result<(SVector<f64, 2>, f64), ArmError> {
+    let qdd = arm.try_forward_dynamics(q, qd, tau)?;
+    let tip = arm.tip_pose(q);
+    Ok((qdd, tip.translation.x + arm.kinetic_energy(q, qd)))
+}
