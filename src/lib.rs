@@ -149,6 +149,14 @@
 //! the origin; the tip is the end of the last link; the tip orientation is the last link's
 //! absolute angle.
 //!
+//! # Scalars, batches and `no_std`
+//!
+//! The generated dynamics are generic over [`Real`]: `f64`, `f32`, SIMD batches with one
+//! state per lane ([`simd`]), or your own number type (a dual number gives derivatives). An
+//! `SVector<f32, N>` in gives an `SVector<f32, N>` out; `f64` calls compile and run as before.
+//! Without its default features the crate is `#![no_std]` and needs no allocator; the
+//! symbolic engine ([`symbolic`]) is then not linked.
+//!
 //! # Seeing what was generated
 //!
 //! Each generated method's rustdoc shows the exact formulas it evaluates and its operation
