@@ -309,9 +309,9 @@ pub trait PlanarArm<const N: usize> {
     /// Tip position and the orientation of the last link.
     fn tip_pose(&self, q: &SVector<f64, N>) -> Isometry2<f64>;
     /// The 3 x N Jacobian: rows are d/dt of tip x, tip y and the last link's angle.
-    fn jacobian(&self, q: &SVector<f64, N>) -> SMatrix<f64, 3, N>;
+    fn jacobian<T: Real>(&self, q: &SVector<T, N>) -> SMatrix<T, 3, N>;
     /// Position of each joint, joint 1 at the origin.
-    fn joint_positions(&self, q: &SVector<f64, N>) -> [Point2<f64>; N];
+    fn joint_positions<T: Real>(&self, q: &SVector<T, N>) -> [Point2<T>; N];
     /// The tip in polar form (r, theta); r depends on q2..qN only.
     fn tip_polar(&self, q: &SVector<f64, N>) -> (f64, f64);
     /// Motor torques that make the tip exert force `force` and torque `torque` on what it

@@ -12,8 +12,8 @@ use crate::trig;
 /// lane; with the `std` feature, as simba 0.9's batch types need the standard library).
 ///
 /// The generated `mass_matrix`, `coriolis`, `coriolis_matrix`, `gravity`, `friction`, `bias`,
-/// `mass_matrix_and_bias`, `inverse_dynamics`, `forward_dynamics`, `kinetic_energy` and
-/// `potential_energy` are generic over it: an `SVector<f32, N>` in gives an `SVector<f32, N>`
+/// `mass_matrix_and_bias`, `inverse_dynamics`, `forward_dynamics`, `kinetic_energy`,
+/// `potential_energy`, `jacobian` and `joint_positions` are generic over it: an `SVector<f32, N>` in gives an `SVector<f32, N>`
 /// out, an `SVector<WideF64x4, N>` evaluates four states at once. The arm's exact constants
 /// and its run-time parameters (`f64` fields) enter through [`from_f64`](Self::from_f64):
 /// rounded to `f32`, or the same value in every lane.

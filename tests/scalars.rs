@@ -1,4 +1,4 @@
-//! The generated dynamics in other scalars: `f32` against `f64` within a bound derived from
+//! The generated dynamics (and Jacobian and joint positions) in other scalars: `f32` against `f64` within a bound derived from
 //! `f32` precision, and every lane of a SIMD batch equal to the scalar evaluation bit for bit,
 //! on arms with run-time parameters, armature, friction and payload, literal arms of 2 to 8
 //! links, and the frozen variants.
@@ -210,6 +210,8 @@ where
         let frozen = arm.freeze();
         let tau_frozen = frozen.inverse_dynamics(&qb, &qdb, &qddb);
         let t = arm.kinetic_energy(&qb, &qdb);
+        let jac = arm.jacobian(&qb);
+        let joints = arm.joint_positions(&qb);
         for l in 0..B::LANES {
             let (q, qd, qdd) = (&q[l], &qd[l], &qdd[l]);
             same(&tau, &arm.inverse_dynamics(q, qd, qdd), l, "ID");

@@ -477,9 +477,9 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     }
     specs.push(Fn {
         name: "jacobian",
-        generic: false,
+        generic: true,
         params: vec![q],
-        ret: quote!(::planar_arm::nalgebra::SMatrix<f64, 3, #nn>),
+        ret: quote!(::planar_arm::nalgebra::SMatrix<__T, 3, #nn>),
         doc: formula_doc("The Jacobian d(x, y, phi)/dq.", &j_rows),
         method: d.jacobian_method(),
         touch: TokenStream::new(),
@@ -487,9 +487,9 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     });
     specs.push(Fn {
         name: "joint_positions",
-        generic: false,
+        generic: true,
         params: vec![q],
-        ret: quote!([::planar_arm::nalgebra::Point2<f64>; #nn]),
+        ret: quote!([::planar_arm::nalgebra::Point2<__T>; #nn]),
         doc: "The position of each joint, joint 1 at the origin.".to_string(),
         method: d.joint_positions_method(),
         touch: TokenStream::new(),
@@ -761,8 +761,8 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
             fn kinetic_energy #g(&self, _: #vt, _: #vt) -> __T #body
             fn potential_energy #g(&self, _: #vt) -> __T #body
             fn tip_pose(&self, _: #v) -> ::planar_arm::nalgebra::Isometry2<f64> #body
-            fn jacobian(&self, _: #v) -> ::planar_arm::nalgebra::SMatrix<f64, 3, #nn> #body
-            fn joint_positions(&self, _: #v) -> [::planar_arm::nalgebra::Point2<f64>; #nn] #body
+            fn jacobian #g(&self, _: #vt) -> ::planar_arm::nalgebra::SMatrix<__T, 3, #nn> #body
+            fn joint_positions #g(&self, _: #vt) -> [::planar_arm::nalgebra::Point2<__T>; #nn] #body
             fn tip_polar(&self, _: #v) -> (f64, f64) #body
             fn joint_torques(&self, _: #v, _: &::planar_arm::nalgebra::Vector2<f64>, _: f64) -> #sv #body
         }

@@ -377,10 +377,10 @@ J32 = 1
 
 Cost: 4 multiplications, 6 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
-    fn jacobian(
+    fn jacobian<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
-    ) -> ::planar_arm::nalgebra::SMatrix<f64, 3, 2> {
+        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
+    ) -> ::planar_arm::nalgebra::SMatrix<__T, 3, 2> {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
         let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
             __q1,
@@ -391,20 +391,20 @@ Cost: 4 multiplications, 6 additions, 0 divisions, 2 sin_cos pairs.*/
         let __j11 = -__s1 - __s12;
         let __j12 = -__s12;
         let __j21 = __c1 + __j22;
-        let __j31 = 1.0;
+        let __j31 = __T::from_f64(1.0);
         ::planar_arm::__private::matrix([[__j11, __j12], [__j21, __j22], [__j31, __j31]])
     }
     /**The position of each joint, joint 1 at the origin.
 
 Cost: 0 multiplications, 0 additions, 0 divisions, 1 sin_cos pairs.*/
     #[inline]
-    fn joint_positions(
+    fn joint_positions<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
-    ) -> [::planar_arm::nalgebra::Point2<f64>; 2] {
+        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
+    ) -> [::planar_arm::nalgebra::Point2<__T>; 2] {
         let [__q1, _] = ::planar_arm::__private::unpack(__q);
         let [(__s1, __c1)] = ::planar_arm::__private::sin_cos([__q1]);
-        let __x1 = 0.0;
+        let __x1 = __T::from_f64(0.0);
         [
             ::planar_arm::nalgebra::Point2::new(__x1, __x1),
             ::planar_arm::nalgebra::Point2::new(__c1, __s1),

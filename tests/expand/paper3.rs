@@ -619,10 +619,10 @@ J33 = 1
 
 Cost: 8 multiplications, 13 additions, 0 divisions, 3 sin_cos pairs.*/
     #[inline]
-    fn jacobian(
+    fn jacobian<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
-    ) -> ::planar_arm::nalgebra::SMatrix<f64, 3, 3> {
+        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
+    ) -> ::planar_arm::nalgebra::SMatrix<__T, 3, 3> {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
             __q1,
@@ -638,7 +638,7 @@ Cost: 8 multiplications, 13 additions, 0 divisions, 3 sin_cos pairs.*/
         let __j13 = -__s123;
         let __j21 = __j23 + __c1 + __c12;
         let __j22 = __c12 + __j23;
-        let __j31 = 1.0;
+        let __j31 = __T::from_f64(1.0);
         ::planar_arm::__private::matrix([
             [__j11, __j12, __j13],
             [__j21, __j22, __j23],
@@ -649,10 +649,10 @@ Cost: 8 multiplications, 13 additions, 0 divisions, 3 sin_cos pairs.*/
 
 Cost: 4 multiplications, 4 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
-    fn joint_positions(
+    fn joint_positions<__T: ::planar_arm::Real>(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
-    ) -> [::planar_arm::nalgebra::Point2<f64>; 3] {
+        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
+    ) -> [::planar_arm::nalgebra::Point2<__T>; 3] {
         let [__q1, __q2, _] = ::planar_arm::__private::unpack(__q);
         let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
             __q1,
@@ -662,7 +662,7 @@ Cost: 4 multiplications, 4 additions, 0 divisions, 2 sin_cos pairs.*/
         let __s12 = __s1 * __c2 + __c1 * __s2;
         let __x3 = __c1 + __c12;
         let __y3 = __s1 + __s12;
-        let __x1 = 0.0;
+        let __x1 = __T::from_f64(0.0);
         [
             ::planar_arm::nalgebra::Point2::new(__x1, __x1),
             ::planar_arm::nalgebra::Point2::new(__c1, __s1),
