@@ -228,6 +228,10 @@ where
                 l,
                 "frozen ID",
             );
+            same(&jac, &arm.jacobian(q), l, "J");
+            for (pb, ps) in joints.iter().zip(arm.joint_positions(q)) {
+                same(&pb.coords, &ps.coords, l, "joint positions");
+            }
             let ts: f64 = arm.kinetic_energy(q, qd).into();
             assert_eq!(t.lane(l).into().to_bits(), ts.to_bits(), "T");
         }
