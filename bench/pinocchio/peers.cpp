@@ -1,0 +1,341 @@
+// Peer benchmark: Pinocchio (pip wheel `pin`) on the planar arms of benches/dynamics.rs.
+//
+// Not run in CI. Build and run with bench/pinocchio/run.sh, which compiles this file three times:
+//   - "hdr-native" / "hdr-generic": header-only, every Pinocchio template instantiated in this
+//            file with our flags (with / without -march=native);
+//   - "lib": -DPINOCCHIO_ENABLE_TEMPLATE_INSTANTIATION, so all six ops call the instances
+//            precompiled in the wheel's libpinocchio_default.so (the way a CMake project
+//            linking pinocchio::pinocchio uses it; check with nm -DC --undefined-only).
+// VARIANT (a string) names the build in the output.
+//
+// Per call timed: computeJointTorqueRegressor, rnea, crba, aba, computeRNEADerivatives,
+// computeABADerivatives, each over 64 fixed pseudo-random states (q, v, a in [-1, 1]; aba and
+// its derivatives take a as tau) cycled through; CALLS calls per round (default 200000,
+// argv[1] overrides), ROUNDS = 21 rounds after one warm-up round; reported: the median ns/call
+// of the rounds by the wall clock (std::chrono::steady_clock) and by the thread's CPU time.
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include <time.h>
+
+#include <pinocchio/multibody.hpp>
+#include <pinocchio/algorithm/rnea.hpp>
+#include <pinocchio/algorithm/aba.hpp>
+#include <pinocchio/algorithm/crba.hpp>
+#include <pinocchio/algorithm/regressor.hpp>
+#include <pinocchio/algorithm/rnea-derivatives.hpp>
+#include <pinocchio/algorithm/aba-derivatives.hpp>
+
+#ifndef VARIANT
+#define VARIANT "unnamed"
+#endif
+
+namespace pin = pinocchio;
+
+static constexpr double GRAVITY = 9.80665;
+static constexpr int NSTATES = 64;
+static constexpr int ROUNDS = 21;
+
+// One link as in the #[arm(...)] attributes of benches/dynamics.rs:
+// length, mass, inertia about the COM, COM distance along the link (x of the link frame).
+struct Link
+{
+  double length, mass, inertia, com;
+};
+
+struct Arm
+{
+  const char * name;
+  std::vector<Link> links;
+};
+
+// Exactly the RandomN structs of benches/dynamics.rs (fractions written as there).
+static std::vector<Arm> arms()
+{
+  return {
+    {"Random2",
+     {
+       {6. / 1, 3. / 1, 6. / 25, 12. / 5},
+       {4. / 1, 38. / 5, 1. / 25, 4. / 1},
+     }},
+    {"Random3",
+     {
+       {12. / 5, 26. / 5, 5. / 4, 6. / 25},
+       {23. / 10, 2. / 1, 1. / 20, 69. / 100},
+       {2. / 1, 3. / 2, 11. / 25, 3. / 5},
+     }},
+    {"Random4",
+     {
+       {9. / 5, 13. / 4, 1. / 40, 9. / 5},
+       {9. / 5, 9. / 2, 11. / 40, -27. / 50},
+       {23. / 8, 3. / 4, 3. / 10, 69. / 20},
+       {14. / 5, 16. / 5, 23. / 25, -14. / 25},
+     }},
+    {"Random6",
+     {
+       {3. / 1, 12. / 5, 1. / 50, 12. / 5},
+       {4. / 1, 15. / 2, 23. / 25, 6. / 5},
+       {7. / 5, 31. / 8, 17. / 40, 7. / 10},
+       {9. / 2, 39. / 8, 7. / 10, -9. / 10},
+       {17. / 4, 15. / 8, 17. / 40, 17. / 40},
+       {7. / 4, 9. / 1, 1. / 4, 21. / 20},
+     }},
+    {"Random8",
+     {
+       {9. / 4, 11. / 8, 16. / 25, -9. / 20},
+       {3. / 5, 4. / 5, 3. / 5, 3. / 10},
+       {9. / 5, 11. / 4, 3. / 2, 54. / 25},
+       {14. / 5, 2. / 1, 21. / 50, 0. / 1},
+       {9. / 10, 5. / 1, 1. / 25, 27. / 50},
+       {4. / 5, 6. / 5, 2. / 5, 24. / 25},
+       {3. / 2, 16. / 5, 29. / 25, 0. / 1},
+       {16. / 5, 33. / 8, 3. / 10, 96. / 25},
+     }},
+  };
+}
+
+// Planar serial chain: joint i revolute about z (JointModelRZ), placed at (l_{i-1}, 0, 0) in the
+// previous link's frame (the first at the origin); link i's COM at (c_i, 0, 0) with rotational
+// inertia diag(Izz, Izz, Izz) about the COM (Ixx = Iyy = Izz as in the URDF of the dynibo bench:
+// any positive values do, planar motion sees Izz alone). Gravity along -y.
+static pin::Model build(const Arm & arm)
+{
+  pin::Model model;
+  model.gravity.linear(Eigen::Vector3d(0., -GRAVITY, 0.));
+  pin::JointIndex parent = 0;
+  double offset = 0.;
+  int k = 0;
+  for (const Link & l : arm.links)
+  {
+    ++k;
+    pin::SE3 placement(Eigen::Matrix3d::Identity(), Eigen::Vector3d(offset, 0., 0.));
+    pin::JointIndex j =
+      model.addJoint(parent, pin::JointModelRZ(), placement, "joint" + std::to_string(k));
+    const double i3 = std::max(l.inertia, 1e-9);
+    // Symmetric3(xx, xy, yy, xz, yz, zz), about the COM.
+    pin::Inertia body(
+      l.mass, Eigen::Vector3d(l.com, 0., 0.), pin::Symmetric3(i3, 0., i3, 0., 0., l.inertia));
+    model.appendBodyToJoint(j, body, pin::SE3::Identity());
+    parent = j;
+    offset = l.length;
+  }
+  return model;
+}
+
+// The xorshift of benches/dynamics.rs `state`: deterministic vector in [-range, range].
+static Eigen::VectorXd state(int n, std::uint64_t seed, double range)
+{
+  std::uint64_t s = seed * 0x9E3779B97F4A7C15ull + 1;
+  Eigen::VectorXd x(n);
+  for (int i = 0; i < n; ++i)
+  {
+    s ^= s << 13;
+    s ^= s >> 7;
+    s ^= s << 17;
+    const double u = double(s >> 11) / double(std::uint64_t(1) << 53);
+    x[i] = (2. * u - 1.) * range;
+  }
+  return x;
+}
+
+struct States
+{
+  std::vector<Eigen::VectorXd> q, v, a;
+};
+
+static States states(int n)
+{
+  States st;
+  for (int k = 0; k < NSTATES; ++k)
+  {
+    st.q.push_back(state(n, 1000 + 3 * k, 1.));
+    st.v.push_back(state(n, 1001 + 3 * k, 1.));
+    st.a.push_back(state(n, 1002 + 3 * k, 1.));
+  }
+  return st;
+}
+
+// The precompiled instances of crba and aba in the wheel's library (lib build) take their
+// vectors as Eigen::Ref<const VectorXd> (rnea and the derivatives convert to Ref themselves;
+// computeJointTorqueRegressor's instance takes VectorXd). Wrapping costs nothing.
+using Ref = Eigen::Ref<const Eigen::VectorXd>;
+
+static double checksum = 0.;
+
+static double thread_cpu_ns()
+{
+  timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) * 1e9 + double(ts.tv_nsec);
+}
+
+struct Timing
+{
+  double wall, cpu; // median ns/call over the rounds: std::chrono::steady_clock, thread CPU time
+};
+
+static double median(std::vector<double> x)
+{
+  std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
+  return x[x.size() / 2];
+}
+
+// ROUNDS rounds of `calls` calls (after one warm-up round), timed by the wall clock
+// (std::chrono::steady_clock) and by this thread's CPU time; the medians per call.
+// The CPU time leaves out the time the thread was descheduled, so it is the robust number on a
+// loaded machine. `f(k)` runs the op on state k and returns one entry of its output (summed
+// into a checksum that is printed, so that no call can be optimised away).
+template<typename F>
+static Timing time_op(F && f, long calls)
+{
+  std::vector<double> wall, cpu;
+  for (int r = -1; r < ROUNDS; ++r)
+  {
+    double acc = 0.;
+    int k = 0;
+    const double c0 = thread_cpu_ns();
+    const auto t0 = std::chrono::steady_clock::now();
+    for (long i = 0; i < calls; ++i)
+    {
+      acc += f(k);
+      if (++k == NSTATES)
+        k = 0;
+    }
+    const auto t1 = std::chrono::steady_clock::now();
+    const double c1 = thread_cpu_ns();
+    checksum += acc;
+    if (r >= 0)
+    {
+      wall.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() / double(calls));
+      cpu.push_back((c1 - c0) / double(calls));
+    }
+  }
+  return {median(wall), median(cpu)};
+}
+
+// Closed-form inverse dynamics of a two-link planar arm (angles from +x, gravity along -y),
+// independent of Pinocchio, to check the model built above.
+static Eigen::Vector2d two_link_tau(
+  const Arm & arm, const Eigen::Vector2d & q, const Eigen::Vector2d & v, const Eigen::Vector2d & a)
+{
+  const Link &L1 = arm.links[0], &L2 = arm.links[1];
+  const double m1 = L1.mass, c1 = L1.com, I1 = L1.inertia, l1 = L1.length;
+  const double m2 = L2.mass, c2 = L2.com, I2 = L2.inertia;
+  const double c = std::cos(q[1]), s = std::sin(q[1]);
+  const double M11 = I1 + m1 * c1 * c1 + I2 + m2 * (l1 * l1 + c2 * c2 + 2 * l1 * c2 * c);
+  const double M12 = I2 + m2 * (c2 * c2 + l1 * c2 * c);
+  const double M22 = I2 + m2 * c2 * c2;
+  const double h = -m2 * l1 * c2 * s;
+  const double g2 = m2 * c2 * GRAVITY * std::cos(q[0] + q[1]);
+  const double g1 = (m1 * c1 + m2 * l1) * GRAVITY * std::cos(q[0]) + g2;
+  return Eigen::Vector2d(
+    M11 * a[0] + M12 * a[1] + h * (2 * v[0] * v[1] + v[1] * v[1]) + g1,
+    M12 * a[0] + M22 * a[1] - h * v[0] * v[0] + g2);
+}
+
+static void checks(const std::vector<Arm> & all)
+{
+  std::printf("# checks (%s)\n", VARIANT);
+  const Arm & arm2 = all[0];
+  pin::Model model = build(arm2);
+  pin::Data data(model);
+
+  const Eigen::Vector2d q(0.3, -0.8), v(1.0, 0.5), a(-2.0, 1.0);
+  const Eigen::VectorXd tau = pin::rnea(model, data, q, v, a);
+  const Eigen::Vector2d ref = two_link_tau(arm2, q, v, a);
+  std::printf(
+    "# N=2 rnea tau at q=(0.3,-0.8) v=(1.0,0.5) a=(-2.0,1.0): [%.17g, %.17g]\n", tau[0], tau[1]);
+  std::printf(
+    "# N=2 closed-form tau at that state:                  [%.17g, %.17g]  (max |diff| %.3g)\n",
+    ref[0], ref[1], (tau - ref).cwiseAbs().maxCoeff());
+
+  States st = states(2);
+  const Eigen::VectorXd tau0 = pin::rnea(model, data, st.q[0], st.v[0], st.a[0]);
+  const Eigen::Vector2d ref0 = two_link_tau(arm2, st.q[0], st.v[0], st.a[0]);
+  std::printf(
+    "# N=2 bench state 0: q=(%.17g, %.17g) v=(%.17g, %.17g) a=(%.17g, %.17g)\n", st.q[0][0],
+    st.q[0][1], st.v[0][0], st.v[0][1], st.a[0][0], st.a[0][1]);
+  std::printf(
+    "# N=2 rnea tau at bench state 0: [%.17g, %.17g]  (closed form max |diff| %.3g)\n", tau0[0],
+    tau0[1], (tau0 - ref0).cwiseAbs().maxCoeff());
+
+  // Per arm: regressor * dynamic parameters == rnea, crba (upper triangle) * a + nle == rnea.
+  for (const Arm & arm : all)
+  {
+    pin::Model m = build(arm);
+    pin::Data d(m);
+    const int n = int(arm.links.size());
+    States s = states(n);
+    Eigen::VectorXd pi(10 * n);
+    for (int j = 0; j < n; ++j)
+      pi.segment<10>(10 * j) = m.inertias[j + 1].toDynamicParameters();
+    const Eigen::VectorXd t = pin::rnea(m, d, s.q[0], s.v[0], s.a[0]);
+    const Eigen::MatrixXd Y = pin::computeJointTorqueRegressor(m, d, s.q[0], s.v[0], s.a[0]);
+    Eigen::MatrixXd M = pin::crba(m, d, s.q[0]);
+    M.triangularView<Eigen::StrictlyLower>() = M.transpose().triangularView<Eigen::StrictlyLower>();
+    const Eigen::VectorXd nle = pin::nonLinearEffects(m, d, s.q[0], s.v[0]);
+    std::printf(
+      "# N=%d regressor %ldx%ld, |Y pi - tau| = %.3g, |M a + nle - tau| = %.3g\n", n, Y.rows(),
+      Y.cols(), (Y * pi - t).cwiseAbs().maxCoeff(), (M * s.a[0] + nle - t).cwiseAbs().maxCoeff());
+  }
+}
+
+int main(int argc, char ** argv)
+{
+  const long calls = argc > 1 ? std::atol(argv[1]) : 200000;
+  const std::vector<Arm> all = arms();
+  checks(all);
+
+  std::printf("# variant=%s pinocchio=%s calls/round=%ld rounds=%d states=%d\n", VARIANT,
+              PINOCCHIO_VERSION, calls, ROUNDS, NSTATES);
+  std::printf("variant, N, op, wall ns/call, cpu ns/call\n");
+  for (const Arm & arm : all)
+  {
+    const int n = int(arm.links.size());
+    pin::Model model = build(arm);
+    pin::Data data(model);
+    const States s = states(n);
+    auto report = [&](const char * op, Timing t) {
+      std::printf("%s, %d, %s, %.1f, %.1f\n", VARIANT, n, op, t.wall, t.cpu);
+      std::fflush(stdout);
+    };
+
+    report("regressor", time_op(
+                          [&](int k) {
+                            return pin::computeJointTorqueRegressor(
+                              model, data, s.q[k], s.v[k], s.a[k])(n - 1, 10 * n - 1);
+                          },
+                          calls));
+    report("rnea", time_op(
+                     [&](int k) { return pin::rnea(model, data, s.q[k], s.v[k], s.a[k])[0]; },
+                     calls));
+    report("crba", time_op(
+                     [&](int k) { return pin::crba(model, data, Ref(s.q[k]))(0, n - 1); }, calls));
+    report("aba", time_op(
+                    [&](int k) {
+                      return pin::aba(model, data, Ref(s.q[k]), Ref(s.v[k]), Ref(s.a[k]))[n - 1];
+                    },
+                    calls));
+    report("rnea_derivatives", time_op(
+                                 [&](int k) {
+                                   pin::computeRNEADerivatives(model, data, s.q[k], s.v[k], s.a[k]);
+                                   return data.dtau_dq(0, n - 1) + data.dtau_dv(0, 0);
+                                 },
+                                 calls));
+    report("aba_derivatives", time_op(
+                                [&](int k) {
+                                  pin::computeABADerivatives(model, data, s.q[k], s.v[k], s.a[k]);
+                                  return data.ddq_dq(n - 1, 0) + data.ddq_dv(0, 0);
+                                },
+                                calls));
+  }
+  std::printf("# checksum %.17g\n", checksum);
+  return 0;
+}

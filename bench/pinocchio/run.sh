@@ -1,0 +1,116 @@
+#!/usr/bin/env bash
+# Peer benchmark against Pinocchio from pip's `pin` wheel (by hand, not run in CI).
+#
+#   bash bench/pinocchio/run.sh            # 200000 calls per round
+#   CALLS=20000 bash bench/pinocchio/run.sh
+#
+# Environment:
+#   WORK        work dir (default /tmp/pinocchio_bench): venv, binaries, outputs
+#   PIN_VERSION pin wheel version (default 4.1.0)
+#   CALLS       calls per timing round (default 200000; 21 rounds, median reported)
+#   VARIANTS    subset of "hdr-native hdr-generic lib" (default: all three)
+#   CXX         compiler (default g++)
+#
+# Builds (all -O3 -DNDEBUG -std=c++17 plus the compile definitions that the wheel's
+# pinocchio::pinocchio_headers CMake target exports):
+#   hdr-native  header-only, -march=native: every algorithm instantiated and optimised in
+#               peers.cpp for this CPU;
+#   hdr-generic header-only, no -march (x86-64 baseline), to see what -march=native buys;
+#   lib         -DPINOCCHIO_ENABLE_TEMPLATE_INSTANTIATION, linked to the wheel's
+#               libpinocchio_default.so: all six ops run the wheel's precompiled instances
+#               (as a CMake project using pinocchio::pinocchio does).
+#               No -march here: the wheel is built for the x86-64 baseline and Eigen's
+#               alignment (so the layout of pinocchio::Data) must match it.
+# Each header-only build takes about 6 minutes here; the three build in parallel.
+set -euo pipefail
+
+HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+WORK="${WORK:-/tmp/pinocchio_bench}"
+PIN_VERSION="${PIN_VERSION:-4.1.0}"
+CALLS="${CALLS:-200000}"
+VARIANTS="${VARIANTS:-hdr-native hdr-generic lib}"
+CXX="${CXX:-g++}"
+mkdir -p "$WORK"
+
+# 1. pin (+ its cmeel dependencies: boost, urdfdom, coal, ...) and Eigen's headers.
+if [ ! -x "$WORK/venv/bin/python" ]; then
+  python3 -m venv "$WORK/venv"
+fi
+PY="$WORK/venv/bin/python"
+"$PY" -m pip install -q "pin==$PIN_VERSION" cmeel-eigen
+
+# 2. The wheel's prefix (include/, lib/) from cmeel itself.
+PREFIX="$("$PY" -m cmeel cmake 2>/dev/null | tr ':' '\n' | head -n1)"
+[ -f "$PREFIX/include/pinocchio/config.hpp" ] || { echo "no pinocchio headers under $PREFIX" >&2; exit 1; }
+[ -f "$PREFIX/include/eigen3/Eigen/Core" ] || { echo "no Eigen headers under $PREFIX" >&2; exit 1; }
+echo "# prefix: $PREFIX"
+echo "# pin $("$PY" -c 'import pinocchio; print(pinocchio.__version__)'), $("$CXX" --version | head -n1)"
+echo "# cpu: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2-)"
+
+# From lib/cmake/pinocchio/pinocchioTargets.cmake (pinocchio_headers): the JointModel variant
+# is sized with these, so they must match the wheel's library.
+DEFS="-DBOOST_MPL_LIMIT_LIST_SIZE=30 -DBOOST_MPL_LIMIT_VECTOR_SIZE=30 \
+-DBOOST_MPL_CFG_NO_PREPROCESSED_HEADERS -DBOOST_FUSION_INVOKE_MAX_ARITY=12"
+BASE="-O3 -DNDEBUG -std=c++17 $DEFS -I$PREFIX/include -I$PREFIX/include/eigen3"
+# GCC 12 warns (-Wstringop-overread) inside Eigen's AVX-512 code; harmless, and noisy.
+QUIET="-Wno-stringop-overread -Wno-array-bounds"
+
+flags_of() {
+  case "$1" in
+    hdr-native) echo "$BASE -march=native" ;;
+    hdr-generic) echo "$BASE" ;;
+    lib) echo "$BASE -DPINOCCHIO_ENABLE_TEMPLATE_INSTANTIATION" ;;
+    *) echo "unknown variant $1" >&2; exit 1 ;;
+  esac
+}
+libs_of() {
+  case "$1" in
+    lib) echo "-L$PREFIX/lib -Wl,-rpath,$PREFIX/lib -lpinocchio_default" ;;
+    *) echo "" ;;
+  esac
+}
+
+# 3. Build (in parallel), then run one after the other.
+pids=()
+for v in $VARIANTS; do
+  echo "# build $v: $CXX $(flags_of "$v" | sed "s#$PREFIX#\$PREFIX#g") $(libs_of "$v" | sed "s#$PREFIX#\$PREFIX#g")"
+  # shellcheck disable=SC2046
+  "$CXX" $(flags_of "$v") $QUIET -DVARIANT="\"$v\"" "$HERE/peers.cpp" -o "$WORK/peers_$v" \
+    $(libs_of "$v") >"$WORK/build_$v.log" 2>&1 &
+  pids+=("$!")
+done
+status=0
+for p in "${pids[@]}"; do wait "$p" || status=1; done
+if [ "$status" != 0 ]; then
+  for v in $VARIANTS; do [ -x "$WORK/peers_$v" ] || { echo "build $v failed:" >&2; tail -n 30 "$WORK/build_$v.log" >&2; }; done
+  exit 1
+fi
+
+for v in $VARIANTS; do
+  echo "# run $v (load: $(cut -d' ' -f1-3 /proc/loadavg))"
+  "$WORK/peers_$v" "$CALLS" | tee "$WORK/out_$v.txt"
+done
+
+# 4. Tables: N, op, ns/call per build, by thread CPU time (robust when the machine is shared)
+#    and by the wall clock (std::chrono::steady_clock).
+"$PY" - "$WORK" $VARIANTS <<'EOF'
+import sys
+work, variants = sys.argv[1], sys.argv[2:]
+rows, order = {}, []
+for v in variants:
+    for line in open(f"{work}/out_{v}.txt"):
+        if line.startswith("#") or line.startswith("variant"):
+            continue
+        _, n, op, wall, cpu = [x.strip() for x in line.split(",")]
+        key = (int(n), op)
+        if key not in rows:
+            order.append(key)
+        rows.setdefault(key, {})[v] = (float(cpu), float(wall))
+for idx, what in ((0, "thread CPU time"), (1, "wall clock")):
+    print(f"\nmedian ns/call, {what}\n")
+    print("| N | op | " + " | ".join(variants) + " |")
+    print("|---|---|" + "---:|" * len(variants))
+    for key in order:
+        print(f"| {key[0]} | {key[1]} | " + " | ".join(
+            f"{rows[key][v][idx]:.0f}" if v in rows[key] else "-" for v in variants) + " |")
+EOF
