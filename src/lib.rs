@@ -180,6 +180,7 @@ mod error;
 pub mod exact;
 mod frozen;
 mod identification;
+mod jet;
 pub mod kinematics;
 mod link;
 mod model;
@@ -200,6 +201,7 @@ pub struct ReadmeDoctests;
 pub use error::ArmError;
 pub use frozen::Frozen;
 pub use identification::Identification;
+pub use jet::Jet;
 pub use link::{Link, Revolute};
 pub use model::{Model, Payload};
 pub use nalgebra;
@@ -302,6 +304,60 @@ pub trait PlanarArm<const N: usize> {
         qd: &SVector<T, N>,
         tau: &SVector<T, N>,
     ) -> SVector<T, N>;
+    /// The partial derivatives of [`inverse_dynamics`](Self::inverse_dynamics),
+    /// `(dtau/dq, dtau/dqd)`, N x N each (`dtau/dqdd` is [`mass_matrix`](Self::mass_matrix)),
+    /// as Pinocchio's `computeRNEADerivatives`.
+    ///
+    /// Exact to rounding: the generated inverse dynamics evaluated once in [`Jet<N>`](Jet)
+    /// seeded along the angles, once along the rates (forward-mode differentiation of the
+    /// same straight-line code; no finite differences). Run-time parameters, armature,
+    /// damping and payload are included. Coulomb friction `frictionloss sign(qd_i)` jumps at
+    /// `qd_i = 0` and has no derivative there; it contributes 0 to `dtau/dqd` everywhere (its
+    /// derivative away from the jump).
+    fn inverse_dynamics_derivatives(
+        &self,
+        q: &SVector<f64, N>,
+        qd: &SVector<f64, N>,
+        qdd: &SVector<f64, N>,
+    ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
+        let seeded =
+            |x: &SVector<f64, N>| SVector::<Jet<N>, N>::from_fn(|j, _| Jet::variable(x[j], j));
+        let fixed = |x: &SVector<f64, N>| x.map(Jet::<N>::constant);
+        let along_q = self.inverse_dynamics(&seeded(q), &fixed(qd), &fixed(qdd));
+        let along_qd = self.inverse_dynamics(&fixed(q), &seeded(qd), &fixed(qdd));
+        (
+            SMatrix::from_fn(|i, j| along_q[i].eps[j]),
+            SMatrix::from_fn(|i, j| along_qd[i].eps[j]),
+        )
+    }
+
+    /// The partial derivatives of [`forward_dynamics`](Self::forward_dynamics),
+    /// `(dqdd/dq, dqdd/dqd, dqdd/dtau)`, N x N each, as Pinocchio's `computeABADerivatives`:
+    /// with `qdd = forward_dynamics(q, qd, tau)`, `dqdd/dq = -M^-1 dtau/dq`,
+    /// `dqdd/dqd = -M^-1 dtau/dqd` (from [`inverse_dynamics_derivatives`](Self::inverse_dynamics_derivatives)
+    /// at `qdd`) and `dqdd/dtau = M^-1` (a Cholesky factorisation of M, no allocation).
+    /// Coulomb friction as there. NaN everywhere if M is not positive definite (only with
+    /// NaN or infinite input).
+    fn forward_dynamics_derivatives(
+        &self,
+        q: &SVector<f64, N>,
+        qd: &SVector<f64, N>,
+        tau: &SVector<f64, N>,
+    ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
+        let qdd = self.forward_dynamics(q, qd, tau);
+        let (dq, dqd) = self.inverse_dynamics_derivatives(q, qd, &qdd);
+        match self.mass_matrix(q).cholesky() {
+            Some(chol) => {
+                let minv = chol.inverse();
+                (-(minv * dq), -(minv * dqd), minv)
+            }
+            None => {
+                let nan = SMatrix::from_element(f64::NAN);
+                (nan, nan, nan)
+            }
+        }
+    }
+
     /// Kinetic energy, J: the links, the payload and the rotors (`armature qd_i^2 / 2`).
     fn kinetic_energy<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> T;
     /// Potential energy, J, measured from y = 0 at the base.

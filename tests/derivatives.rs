@@ -1,0 +1,185 @@
+//! `inverse_dynamics_derivatives` and `forward_dynamics_derivatives` against central
+//! differences of the generated dynamics and of the numeric reference (independent of the
+//! derive), on arms with run-time parameters, armature, damping, Coulomb friction and a
+//! payload, 1 to 8 links; and the identities between them.
+
+mod common;
+
+use common::Rng;
+use planar_arm::nalgebra::{SMatrix, SVector};
+use planar_arm::prelude::*;
+use planar_arm::reference;
+
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81)]
+struct One {
+    #[arm(length = 0.7, mass = 2, com = (0.3, 0.05), armature = 0.1, damping = 0.2)]
+    a: Revolute,
+}
+
+#[derive(PlanarArm, Clone)]
+#[arm(gravity = 9.81, payload = self.load, payload_com = (0.03, -0.01))]
+struct Scara {
+    #[arm(length = 0.35, mass = self.m1, inertia = self.i1, com = self.c1, armature = 0.02, damping = 0.1)]
+    shoulder: Revolute,
+    #[arm(length = 0.25, mass = 1.2, com = (0.11, 0.005), frictionloss = self.f2)]
+    elbow: Revolute,
+    m1: f64,
+    i1: f64,
+    c1: f64,
+    f2: f64,
+    load: f64,
+}
+
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.80665)]
+struct Eight {
+    #[arm(length = 9/4, mass = 11/8, inertia = 16/25, com = -9/20)]
+    a: Revolute,
+    #[arm(length = 3/5, mass = 4/5, inertia = 3/5, com = 3/10, damping = 1/5)]
+    b: Revolute,
+    #[arm(length = 9/5, mass = 11/4, inertia = 3/2, com = 54/25)]
+    c: Revolute,
+    #[arm(length = 14/5, mass = 2, inertia = 21/50, com = (0, 1/7))]
+    d: Revolute,
+    #[arm(length = 9/10, mass = 5, inertia = 1/25, com = 27/50, armature = 1/20)]
+    e: Revolute,
+    #[arm(length = 4/5, mass = 6/5, inertia = 2/5, com = 24/25)]
+    f: Revolute,
+    #[arm(length = 3/2, mass = 16/5, inertia = 29/25, com = 0)]
+    g: Revolute,
+    #[arm(length = 16/5, mass = 33/8, inertia = 3/10, com = 96/25, frictionloss = 1/3)]
+    h: Revolute,
+}
+
+/// Central differences of `f` along each unit direction, step `h`.
+fn central<const N: usize>(
+    f: impl Fn(&SVector<f64, N>) -> SVector<f64, N>,
+    x: &SVector<f64, N>,
+) -> SMatrix<f64, N, N> {
+    let h = 1e-6;
+    let mut out = SMatrix::<f64, N, N>::zeros();
+    for j in 0..N {
+        let mut e = SVector::<f64, N>::zeros();
+        e[j] = h;
+        out.set_column(j, &((f(&(x + e)) - f(&(x - e))) / (2.0 * h)));
+    }
+    out
+}
+
+fn close<const N: usize>(a: &SMatrix<f64, N, N>, b: &SMatrix<f64, N, N>, what: &str) {
+    let d = (a - b).amax();
+    assert!(
+        d <= 1e-6 * (1.0 + b.amax()),
+        "{what}: {d:e} (scale {:e})",
+        b.amax()
+    );
+}
+
+fn check<A: PlanarArm<N>, const N: usize>(arm: &A, rng: &mut Rng) {
+    let model = arm.model();
+    for _ in 0..30 {
+        let (q, qdd) = (rng.vector::<N>(3.0), rng.vector::<N>(5.0));
+        // Rates away from zero: Coulomb friction jumps there.
+        let qd = rng
+            .vector::<N>(3.0)
+            .map(|w| if w.abs() < 0.05 { w + 0.1 } else { w });
+        let (dq, dqd) = arm.inverse_dynamics_derivatives(&q, &qd, &qdd);
+        close(
+            &dq,
+            &central(|x| arm.inverse_dynamics(x, &qd, &qdd), &q),
+            "dtau/dq, generated",
+        );
+        close(
+            &dqd,
+            &central(|x| arm.inverse_dynamics(&q, x, &qdd), &qd),
+            "dtau/dqd, generated",
+        );
+        let r = |q: &SVector<f64, N>, qd: &SVector<f64, N>| {
+            reference::inverse_dynamics(&model, q, qd, &qdd)
+        };
+        close(&dq, &central(|x| r(x, &qd), &q), "dtau/dq, reference");
+        close(&dqd, &central(|x| r(&q, x), &qd), "dtau/dqd, reference");
+
+        let tau = arm.inverse_dynamics(&q, &qd, &qdd);
+        let (ddq, ddqd, ddtau) = arm.forward_dynamics_derivatives(&q, &qd, &tau);
+        close(
+            &ddq,
+            &central(|x| arm.forward_dynamics(x, &qd, &tau), &q),
+            "dqdd/dq",
+        );
+        close(
+            &ddqd,
+            &central(|x| arm.forward_dynamics(&q, x, &tau), &qd),
+            "dqdd/dqd",
+        );
+        close(
+            &ddtau,
+            &central(|x| arm.forward_dynamics(&q, &qd, x), &tau),
+            "dqdd/dtau",
+        );
+        // The identities: M dqdd/dtau = I and M dqdd/dq = -dtau/dq at qdd = FD(q, qd, tau).
+        let m = arm.mass_matrix(&q);
+        close(&(m * ddtau), &SMatrix::identity(), "M M^-1");
+        close(&(m * ddq), &(-dq), "M dqdd/dq");
+        close(&(m * ddqd), &(-dqd), "M dqdd/dqd");
+    }
+}
+
+#[test]
+fn derivatives_match_central_differences_and_the_reference() {
+    let mut rng = Rng(0xde71);
+    check(&One::default(), &mut rng);
+    for _ in 0..3 {
+        let scara = Scara {
+            shoulder: Revolute,
+            elbow: Revolute,
+            m1: rng.range(0.5, 4.0),
+            i1: rng.range(0.01, 0.1),
+            c1: rng.range(0.05, 0.3),
+            f2: rng.range(0.0, 0.5),
+            load: rng.range(0.0, 2.0),
+        };
+        check(&scara, &mut rng);
+    }
+    check(&Eight::default(), &mut rng);
+}
+
+#[test]
+fn coulomb_friction_contributes_no_rate_derivative_at_rest() {
+    // At qd_2 = 0 the jump of frictionloss sign(qd_2) is not differentiated: dtau/dqd is the
+    // derivative of everything else (the same arm without Coulomb friction).
+    let with = Scara {
+        shoulder: Revolute,
+        elbow: Revolute,
+        m1: 2.0,
+        i1: 0.05,
+        c1: 0.2,
+        f2: 0.4,
+        load: 0.5,
+    };
+    let without = Scara {
+        f2: 0.0,
+        ..with.clone()
+    };
+    let (q, qd, qdd) = (
+        Vector2::new(0.3, -0.2),
+        Vector2::new(0.7, 0.0),
+        Vector2::new(1.0, 2.0),
+    );
+    let (a, b) = (
+        with.inverse_dynamics_derivatives(&q, &qd, &qdd),
+        without.inverse_dynamics_derivatives(&q, &qd, &qdd),
+    );
+    assert_eq!(a, b);
+    assert!(a.1.iter().all(|x| x.is_finite()));
+}
+
+#[test]
+fn bad_input_gives_nan_not_a_panic() {
+    let arm = Eight::default();
+    let mut q = SVector::<f64, 8>::zeros();
+    q[3] = f64::NAN;
+    let (a, b, c) = arm.forward_dynamics_derivatives(&q, &q, &q);
+    assert!(a.iter().chain(b.iter()).chain(c.iter()).any(|x| x.is_nan()));
+}
