@@ -28,7 +28,7 @@ use crate::Real;
 /// }
 ///
 /// // dM/dq2 at q2 = 0.5: M11 = 5/3 + cos q2, so dM11/dq2 = -sin q2.
-/// let q = Vector2::new(Jet::constant(0.1), Jet::variable(0.5, 0));
+/// let q = Vector2::new(Jet::<1>::constant(0.1), Jet::variable(0.5, 0));
 /// let m = Two::default().mass_matrix(&q);
 /// assert!((m[(0, 0)].eps[0] + 0.5_f64.sin()).abs() < 1e-15);
 /// ```
