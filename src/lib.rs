@@ -182,6 +182,7 @@ mod frozen;
 mod identification;
 mod jet;
 pub mod kinematics;
+mod linear;
 mod link;
 mod model;
 mod real;
@@ -202,6 +203,7 @@ pub use error::ArmError;
 pub use frozen::Frozen;
 pub use identification::Identification;
 pub use jet::Jet;
+pub use linear::Linearize;
 pub use link::{Link, Revolute};
 pub use model::{Model, Payload};
 pub use nalgebra;
@@ -219,7 +221,8 @@ pub mod prelude {
         ClosedFormIk, DexterousWorkspace, DlsOptions, IkTarget, TipForce, TipWrench, Workspace,
     };
     pub use crate::{
-        ArmError, Frozen, Identification, Link, Model, Payload, PlanarArm, Real, Revolute,
+        ArmError, Frozen, Identification, Linearize, Link, Model, Payload, PlanarArm, Real,
+        Revolute,
     };
     pub use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2};
 }

@@ -183,3 +183,131 @@ fn bad_input_gives_nan_not_a_panic() {
     let (a, b, c) = arm.forward_dynamics_derivatives(&q, &q, &q);
     assert!(a.iter().chain(b.iter()).chain(c.iter()).any(|x| x.is_nan()));
 }
+
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81)]
+struct Rods {
+    #[arm(length = 1, mass = 1)]
+    a: Revolute,
+    #[arm(length = 1, mass = 1)]
+    b: Revolute,
+}
+
+#[test]
+fn linearize_is_the_jacobian_of_the_state_derivative() {
+    let mut rng = Rng(0x11_4ea7);
+    let arm = Scara {
+        shoulder: Revolute,
+        elbow: Revolute,
+        m1: 2.0,
+        i1: 0.05,
+        c1: 0.2,
+        f2: 0.3,
+        load: 0.5,
+    };
+    for _ in 0..20 {
+        let (q, tau) = (rng.vector::<2>(3.0), rng.vector::<2>(5.0));
+        let qd = rng
+            .vector::<2>(3.0)
+            .map(|w| if w.abs() < 0.05 { w + 0.1 } else { w });
+        let (a, b) = arm.linearize(&q, &qd, &tau);
+        // f(x, u) = (qd, FD(q, qd, tau)), differenced along each state and input direction.
+        let f = |x: &SVector<f64, 4>, u: &SVector<f64, 2>| -> SVector<f64, 4> {
+            let (q, qd) = (Vector2::new(x[0], x[1]), Vector2::new(x[2], x[3]));
+            let qdd = arm.forward_dynamics(&q, &qd, u);
+            SVector::<f64, 4>::new(qd[0], qd[1], qdd[0], qdd[1])
+        };
+        let x = SVector::<f64, 4>::new(q[0], q[1], qd[0], qd[1]);
+        let h = 1e-6;
+        for j in 0..4 {
+            let mut e = SVector::<f64, 4>::zeros();
+            e[j] = h;
+            let col = (f(&(x + e), &tau) - f(&(x - e), &tau)) / (2.0 * h);
+            assert!(
+                (a.column(j) - col).amax() <= 1e-6 * (1.0 + col.amax()),
+                "A column {j}"
+            );
+        }
+        for j in 0..2 {
+            let mut e = SVector::<f64, 2>::zeros();
+            e[j] = h;
+            let col = (f(&x, &(tau + e)) - f(&x, &(tau - e))) / (2.0 * h);
+            assert!(
+                (b.column(j) - col).amax() <= 1e-6 * (1.0 + col.amax()),
+                "B column {j}"
+            );
+        }
+    }
+}
+
+#[test]
+fn discretize_is_the_zero_order_hold_of_the_linear_system() {
+    // Against RK4 on xd = A x + B u with u held, 1000 substeps over dt.
+    let arm = Eight::default();
+    let mut rng = Rng(0xd15c);
+    let (q, qd, tau) = (
+        rng.vector::<8>(2.0),
+        rng.vector::<8>(2.0),
+        rng.vector::<8>(20.0),
+    );
+    let (a, b) = arm.linearize(&q, &qd, &tau);
+    for dt in [1e-3, 1e-2, 5e-2] {
+        let (ad, bd) = arm.discretize(&q, &qd, &tau, dt);
+        let (x0, u) = (rng.vector::<16>(1.0), rng.vector::<8>(1.0));
+        let g = |x: &SVector<f64, 16>| a * x + b * u;
+        let (mut x, k) = (x0, 1000);
+        let h = dt / f64::from(k);
+        for _ in 0..k {
+            let k1 = g(&x);
+            let k2 = g(&(x + k1 * (h / 2.0)));
+            let k3 = g(&(x + k2 * (h / 2.0)));
+            let k4 = g(&(x + k3 * h));
+            x += (k1 + k2 * 2.0 + k3 * 2.0 + k4) * (h / 6.0);
+        }
+        let d = (ad * x0 + bd * u - x).amax();
+        assert!(d <= 1e-9 * (1.0 + x.amax()), "dt = {dt}: {d:e}");
+    }
+}
+
+#[test]
+fn upright_rods_have_the_textbook_eigenvalues() {
+    // Two uniform unit rods balanced straight up (q1 = pi/2, q2 = 0), both joints actuated
+    // and holding gravity. By hand from the paper's closed forms (m = l = 1):
+    // M = [[5/3 + c2, 1/3 + c2/2], [1/3 + c2/2, 1/3]] = [[8/3, 5/6], [5/6, 1/3]] at q2 = 0,
+    // g = g (3/2 c1 + 1/2 c12, 1/2 c12), so -dg/dq = g [[2, 1/2], [1/2, 1/2]] there, and the
+    // linearised motion is M dqdd = K dq with K = g [[2, 1/2], [1/2, 1/2]]. The eigenvalues
+    // are +- sqrt of those of M^-1 K: two unstable, two stable real pairs.
+    let g: f64 = 9.81;
+    let (m11, m12, m22): (f64, f64, f64) = (8.0 / 3.0, 5.0 / 6.0, 1.0 / 3.0);
+    let (k11, k12, k22): (f64, f64, f64) = (2.0 * g, 0.5 * g, 0.5 * g);
+    let det = m11 * m22 - m12 * m12;
+    // M^-1 K, entry by entry.
+    let p11 = (m22 * k11 - m12 * k12) / det;
+    let p12 = (m22 * k12 - m12 * k22) / det;
+    let p21 = (m11 * k12 - m12 * k11) / det;
+    let p22 = (m11 * k22 - m12 * k12) / det;
+    let (tr, dt) = (p11 + p22, p11 * p22 - p12 * p21);
+    let disc = (tr * tr / 4.0 - dt).sqrt();
+    let mut want = vec![];
+    for mu in [tr / 2.0 + disc, tr / 2.0 - disc] {
+        want.extend([mu.sqrt(), -mu.sqrt()]);
+    }
+    want.sort_by(f64::total_cmp);
+
+    let arm = Rods::default();
+    let q = Vector2::new(core::f64::consts::FRAC_PI_2, 0.0);
+    let (a, _) = arm.linearize(&q, &Vector2::zeros(), &arm.gravity(&q));
+    let eig = a.complex_eigenvalues();
+    let mut got: Vec<f64> = eig
+        .iter()
+        .map(|z| {
+            assert!(z.im.abs() < 1e-9, "{z}");
+            z.re
+        })
+        .collect();
+    got.sort_by(f64::total_cmp);
+    for (g, w) in got.iter().zip(&want) {
+        assert!((g - w).abs() < 1e-9, "{got:?} vs {want:?}");
+    }
+    assert!(want[3] > 0.0, "upright is unstable");
+}
