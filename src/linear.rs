@@ -62,7 +62,8 @@ pub trait Linearize<const N: usize, const S: usize>: PlanarArm<N> {
     /// (zero-order hold): `Ad = exp(A dt)`, `Bd = integral_0^dt exp(A s) ds B`, from the
     /// exponential of the augmented matrix `[[A, B], [0, 0]] dt` (nalgebra's Pade
     /// approximant with scaling and squaring). `x_{k+1} - x* = Ad (x_k - x*) + Bd (u_k - u*)`
-    /// to first order.
+    /// to first order. With the `std` feature (nalgebra's matrix exponential needs it).
+    #[cfg(feature = "std")]
     fn discretize(
         &self,
         q: &SVector<f64, N>,
@@ -76,6 +77,7 @@ pub trait Linearize<const N: usize, const S: usize>: PlanarArm<N> {
 macro_rules! linearize {
     ($($n:literal $s:literal $t:literal),*) => {$(
         impl<A: PlanarArm<$n> + ?Sized> Linearize<$n, $s> for A {
+            #[cfg(feature = "std")]
             fn discretize(
                 &self,
                 q: &SVector<f64, $n>,
