@@ -5,6 +5,10 @@
 
 mod common;
 
+#[path = "common/arms.rs"]
+mod arms;
+
+use arms::{Eight, Scara};
 use common::Rng;
 use planar_arm::nalgebra::{SMatrix, SVector};
 use planar_arm::prelude::*;
@@ -15,41 +19,6 @@ use planar_arm::reference;
 struct One {
     #[arm(length = 0.7, mass = 2, com = (0.3, 0.05), armature = 0.1, damping = 0.2)]
     a: Revolute,
-}
-
-#[derive(PlanarArm, Clone)]
-#[arm(gravity = 9.81, payload = self.load, payload_com = (0.03, -0.01))]
-struct Scara {
-    #[arm(length = 0.35, mass = self.m1, inertia = self.i1, com = self.c1, armature = 0.02, damping = 0.1)]
-    shoulder: Revolute,
-    #[arm(length = 0.25, mass = 1.2, com = (0.11, 0.005), frictionloss = self.f2)]
-    elbow: Revolute,
-    m1: f64,
-    i1: f64,
-    c1: f64,
-    f2: f64,
-    load: f64,
-}
-
-#[derive(PlanarArm, Default)]
-#[arm(gravity = 9.80665)]
-struct Eight {
-    #[arm(length = 9/4, mass = 11/8, inertia = 16/25, com = -9/20)]
-    a: Revolute,
-    #[arm(length = 3/5, mass = 4/5, inertia = 3/5, com = 3/10, damping = 1/5)]
-    b: Revolute,
-    #[arm(length = 9/5, mass = 11/4, inertia = 3/2, com = 54/25)]
-    c: Revolute,
-    #[arm(length = 14/5, mass = 2, inertia = 21/50, com = (0, 1/7))]
-    d: Revolute,
-    #[arm(length = 9/10, mass = 5, inertia = 1/25, com = 27/50, armature = 1/20)]
-    e: Revolute,
-    #[arm(length = 4/5, mass = 6/5, inertia = 2/5, com = 24/25)]
-    f: Revolute,
-    #[arm(length = 3/2, mass = 16/5, inertia = 29/25, com = 0)]
-    g: Revolute,
-    #[arm(length = 16/5, mass = 33/8, inertia = 3/10, com = 96/25, frictionloss = 1/3)]
-    h: Revolute,
 }
 
 /// Central differences of `f` along each unit direction, step `h`.
@@ -131,15 +100,7 @@ fn derivatives_match_central_differences_and_the_reference() {
     let mut rng = Rng(0xde71);
     check(&One::default(), &mut rng);
     for _ in 0..3 {
-        let scara = Scara {
-            shoulder: Revolute,
-            elbow: Revolute,
-            m1: rng.range(0.5, 4.0),
-            i1: rng.range(0.01, 0.1),
-            c1: rng.range(0.05, 0.3),
-            f2: rng.range(0.0, 0.5),
-            load: rng.range(0.0, 2.0),
-        };
+        let scara = Scara::random(&mut rng);
         check(&scara, &mut rng);
     }
     check(&Eight::default(), &mut rng);

@@ -6,25 +6,15 @@
 
 mod common;
 
+#[path = "common/arms.rs"]
+mod arms;
+
+use arms::Scara;
 use common::Rng;
 
 use planar_arm::nalgebra::{DMatrix, DVector, SVector};
 use planar_arm::prelude::*;
 use planar_arm::reference;
-
-#[derive(PlanarArm, Clone)]
-#[arm(gravity = 9.81, payload = self.load, payload_com = (0.03, -0.01))]
-struct Scara {
-    #[arm(length = 0.35, mass = self.m1, inertia = self.i1, com = self.c1, armature = 0.02, damping = 0.1)]
-    shoulder: Revolute,
-    #[arm(length = 0.25, mass = 1.2, com = (0.11, 0.005), frictionloss = self.f2)]
-    elbow: Revolute,
-    m1: f64,
-    i1: f64,
-    c1: f64,
-    f2: f64,
-    load: f64,
-}
 
 #[derive(PlanarArm, Default)]
 #[arm(gravity = 0)]
@@ -135,15 +125,7 @@ fn standard_block(block: &planar_arm::nalgebra::Vector4<f64>, kind: &str) -> f64
 fn regressor_and_base_regressor_give_the_inverse_dynamics() {
     let mut rng = Rng(0x1d_e471_f1ca);
     for _ in 0..10 {
-        let arm = Scara {
-            shoulder: Revolute,
-            elbow: Revolute,
-            m1: rng.range(0.5, 4.0),
-            i1: rng.range(0.01, 0.1),
-            c1: rng.range(0.05, 0.3),
-            f2: rng.range(0.0, 0.5),
-            load: rng.range(0.0, 2.0),
-        };
+        let arm = Scara::random(&mut rng);
         check(&arm, &mut rng);
     }
     check(&Flat::default(), &mut rng);

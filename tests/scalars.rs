@@ -5,25 +5,15 @@
 
 mod common;
 
+#[path = "common/arms.rs"]
+mod arms;
+
+use arms::{Eight, Scara};
 use common::Rng;
 use planar_arm::nalgebra::{SMatrix, SVector};
 use planar_arm::prelude::*;
 use planar_arm::simd::{SimdValue, WideF32x4, WideF32x8, WideF64x4};
 use planar_arm::Real;
-
-#[derive(PlanarArm, Clone)]
-#[arm(gravity = 9.81, payload = self.load, payload_com = (0.03, -0.01))]
-struct Scara {
-    #[arm(length = 0.35, mass = self.m1, inertia = self.i1, com = self.c1, armature = 0.02, damping = 0.1)]
-    shoulder: Revolute,
-    #[arm(length = 0.25, mass = 1.2, com = (0.11, 0.005), frictionloss = self.f2)]
-    elbow: Revolute,
-    m1: f64,
-    i1: f64,
-    c1: f64,
-    f2: f64,
-    load: f64,
-}
 
 #[derive(PlanarArm, Default)]
 #[arm(gravity = 9.81)]
@@ -34,27 +24,6 @@ struct Paper3 {
     b: Revolute,
     #[arm(length = 1, mass = 1)]
     c: Revolute,
-}
-
-#[derive(PlanarArm, Default)]
-#[arm(gravity = 9.80665)]
-struct Eight {
-    #[arm(length = 9/4, mass = 11/8, inertia = 16/25, com = -9/20)]
-    a: Revolute,
-    #[arm(length = 3/5, mass = 4/5, inertia = 3/5, com = 3/10, damping = 1/5)]
-    b: Revolute,
-    #[arm(length = 9/5, mass = 11/4, inertia = 3/2, com = 54/25)]
-    c: Revolute,
-    #[arm(length = 14/5, mass = 2, inertia = 21/50, com = (0, 1/7))]
-    d: Revolute,
-    #[arm(length = 9/10, mass = 5, inertia = 1/25, com = 27/50, armature = 1/20)]
-    e: Revolute,
-    #[arm(length = 4/5, mass = 6/5, inertia = 2/5, com = 24/25)]
-    f: Revolute,
-    #[arm(length = 3/2, mass = 16/5, inertia = 29/25, com = 0)]
-    g: Revolute,
-    #[arm(length = 16/5, mass = 33/8, inertia = 3/10, com = 96/25, frictionloss = 1/3)]
-    h: Revolute,
 }
 
 #[allow(clippy::cast_possible_truncation)]
@@ -114,15 +83,7 @@ fn f32_agrees_with_f64_within_a_bound_from_f32_precision() {
     let mut rng = Rng(0xf32);
     let mut all = Vec::new();
     for _ in 0..5 {
-        let arm = Scara {
-            shoulder: Revolute,
-            elbow: Revolute,
-            m1: rng.range(0.5, 4.0),
-            i1: rng.range(0.01, 0.1),
-            c1: rng.range(0.05, 0.3),
-            f2: rng.range(0.0, 0.5),
-            load: rng.range(0.0, 2.0),
-        };
+        let arm = Scara::random(&mut rng);
         all.push(worst(&arm, &mut rng));
     }
     all.push(worst(&Paper3::default(), &mut rng));
@@ -241,15 +202,7 @@ where
 #[test]
 fn every_lane_of_a_batch_is_the_scalar_result_bit_for_bit() {
     let mut rng = Rng(0x51_3d);
-    let scara = Scara {
-        shoulder: Revolute,
-        elbow: Revolute,
-        m1: 2.5,
-        i1: 0.04,
-        c1: 0.17,
-        f2: 0.3,
-        load: 0.8,
-    };
+    let scara = Scara::sample();
     lanes_equal_scalars::<_, WideF64x4, 2>(&scara, &mut rng);
     lanes_equal_scalars::<_, WideF32x4, 2>(&scara, &mut rng);
     lanes_equal_scalars::<_, WideF32x8, 2>(&scara, &mut rng);
@@ -377,15 +330,7 @@ fn dual_numbers_give_the_derivatives_finite_differences_give() {
         }
     }
     let mut rng = Rng(0xd0a1);
-    let scara = Scara {
-        shoulder: Revolute,
-        elbow: Revolute,
-        m1: 2.5,
-        i1: 0.04,
-        c1: 0.17,
-        f2: 0.3,
-        load: 0.8,
-    };
+    let scara = Scara::sample();
     check(&scara, &mut rng);
     check(&Paper3::default(), &mut rng);
     check(&Eight::default(), &mut rng);
