@@ -137,7 +137,21 @@ macro_rules! batch {
             #[inline(always)]
             fn sin_cos<const N: usize>(q: [Self; N]) -> [(Self, Self); N] {
                 q.map(|x| {
-                    let (s, c) = trig::sin_cos_lanes::<$lanes>(x.0.to_array().map(f64::from));
+                    // The f64 kernel four lanes at a time, rounded back.
+                    let lanes = x.0.to_array().map(f64::from);
+                    let mut s = [0.0; $lanes];
+                    let mut c = [0.0; $lanes];
+                    for k in 0..$lanes / 4 {
+                        let four = wide::f64x4::from([
+                            lanes[4 * k],
+                            lanes[4 * k + 1],
+                            lanes[4 * k + 2],
+                            lanes[4 * k + 3],
+                        ]);
+                        let (s4, c4) = trig::sin_cos_x4(four);
+                        s[4 * k..4 * k + 4].copy_from_slice(&s4.to_array());
+                        c[4 * k..4 * k + 4].copy_from_slice(&c4.to_array());
+                    }
                     (
                         $ty(wide::$wide::from(s.map(|v| v as $lane))),
                         $ty(wide::$wide::from(c.map(|v| v as $lane))),
@@ -160,7 +174,27 @@ macro_rules! batch {
 }
 
 #[cfg(feature = "std")]
-batch!(WideF64x4, f64x4, f64, 4);
+impl Real for WideF64x4 {
+    #[inline(always)]
+    fn from_f64(x: f64) -> Self {
+        WideF64x4(wide::f64x4::splat(x))
+    }
+    #[inline(always)]
+    fn sin_cos<const N: usize>(q: [Self; N]) -> [(Self, Self); N] {
+        q.map(|x| {
+            let (s, c) = trig::sin_cos_x4(x.0);
+            (WideF64x4(s), WideF64x4(c))
+        })
+    }
+    #[inline(always)]
+    fn sign(self) -> Self {
+        WideF64x4(wide::f64x4::from(self.0.to_array().map(sign64)))
+    }
+    #[inline(always)]
+    fn max(self, other: Self) -> Self {
+        WideF64x4(self.0.max(other.0))
+    }
+}
 #[cfg(feature = "std")]
 batch!(WideF32x4, f32x4, f32, 4);
 #[cfg(feature = "std")]
