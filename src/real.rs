@@ -137,21 +137,7 @@ macro_rules! batch {
             #[inline(always)]
             fn sin_cos<const N: usize>(q: [Self; N]) -> [(Self, Self); N] {
                 q.map(|x| {
-                    // The f64 kernel four lanes at a time, rounded back.
-                    let lanes = x.0.to_array().map(f64::from);
-                    let mut s = [0.0; $lanes];
-                    let mut c = [0.0; $lanes];
-                    for k in 0..$lanes / 4 {
-                        let four = wide::f64x4::from([
-                            lanes[4 * k],
-                            lanes[4 * k + 1],
-                            lanes[4 * k + 2],
-                            lanes[4 * k + 3],
-                        ]);
-                        let (s4, c4) = trig::sin_cos_x4(four);
-                        s[4 * k..4 * k + 4].copy_from_slice(&s4.to_array());
-                        c[4 * k..4 * k + 4].copy_from_slice(&c4.to_array());
-                    }
+                    let (s, c) = trig::sin_cos_lanes::<$lanes>(x.0.to_array().map(f64::from));
                     (
                         $ty(wide::$wide::from(s.map(|v| v as $lane))),
                         $ty(wide::$wide::from(c.map(|v| v as $lane))),
