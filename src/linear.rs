@@ -62,7 +62,8 @@ pub trait Linearize<const N: usize, const S: usize>: PlanarArm<N> {
     /// (zero-order hold): `Ad = exp(A dt)`, `Bd = integral_0^dt exp(A s) ds B`, from the
     /// exponential of the augmented matrix `[[A, B], [0, 0]] dt` (nalgebra's Pade
     /// approximant with scaling and squaring). `x_{k+1} - x* = Ad (x_k - x*) + Bd (u_k - u*)`
-    /// to first order. With the `std` feature (nalgebra's matrix exponential needs it).
+    /// to first order. With the `std` feature (nalgebra's matrix exponential needs it). NaN or
+    /// infinite input (or `dt`) gives non-finite matrices, never a panic (tested).
     #[cfg(feature = "std")]
     fn discretize(
         &self,

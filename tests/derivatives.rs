@@ -272,3 +272,18 @@ fn upright_rods_have_the_textbook_eigenvalues() {
     }
     assert!(want[3] > 0.0, "upright is unstable");
 }
+
+#[test]
+fn linearize_and_discretize_with_bad_input_give_nan_not_a_panic() {
+    let arm = Rods::default();
+    let q = Vector2::new(f64::NAN, 0.0);
+    let (a, b) = arm.linearize(&q, &Vector2::zeros(), &Vector2::zeros());
+    assert!(a.iter().chain(b.iter()).any(|x| x.is_nan()));
+    let ok = Vector2::new(0.3, 0.2);
+    for dt in [f64::NAN, f64::INFINITY] {
+        let (ad, _) = arm.discretize(&ok, &ok, &ok, dt);
+        assert!(ad.iter().any(|x| !x.is_finite()), "dt = {dt}");
+    }
+    let (ad, _) = arm.discretize(&q, &ok, &ok, 0.01);
+    assert!(ad.iter().any(|x| x.is_nan()));
+}
