@@ -1,0 +1,643 @@
+//! Balances the paper's two-link arm (two uniform rods, 1 m and 1 kg each) straight up, the
+//! double inverted pendulum, with a linear-quadratic regulator designed from the derived
+//! linearisation ([`Linearize`]) and run on the full nonlinear dynamics:
+//!
+//! 1. a check of the linearisation against numbers that do not come from the crate: the
+//!    open-loop eigenvalues of `A` at upright against the textbook double pendulum's, from `M`
+//!    and the gravity stiffness worked out by hand;
+//! 2. a discrete-time LQR for a 10 ms control period: the zero-order-hold pair from
+//!    `discretize` at upright, the discrete algebraic Riccati equation solved by value
+//!    iteration, checked by its residual and by the closed-loop eigenvalues (inside the unit
+//!    circle);
+//! 3. the controller `tau = u* - K (x - x*)`, held for 10 ms at a time, on the nonlinear
+//!    dynamics (`forward_dynamics`, RK4 at 1 ms) from 0.15 rad and -0.2 rad off upright, 5 s;
+//! 4. the acrobot: the same arm with only the elbow driven. One input, but controllable at
+//!    upright (the rank of its controllability matrix), and balanced by the same recipe from
+//!    0.02 rad off at the shoulder. Not from 0.05 rad: the passive shoulder is moved only by
+//!    swinging the elbow, about 35 times as far as the shoulder is off, and past about a
+//!    radian the linear model no longer describes the arm. The example measures how far off
+//!    it can start along three directions: about 0.02 rad at the shoulder alone, 0.08 rad at
+//!    the elbow alone, and more than 0.5 rad where the centre of mass starts over the base.
+//!
+//! It asserts that both runs end within 1e-3 of upright, and draws `docs/balance-two-link.svg`
+//! and `docs/balance-acrobot.svg`: angle errors and torques against time, and a strobe picture
+//! of the arm.
+//!
+//! ```text
+//! cargo run --example balance
+//! ```
+
+use std::error::Error;
+use std::f64::consts::{FRAC_PI_2, PI, TAU};
+use std::path::{Path, PathBuf};
+
+use planar_arm::nalgebra::{Matrix2, Matrix4, SMatrix, Vector4};
+use planar_arm::prelude::*;
+use plotters::coord::types::RangedCoordf64;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+/// The paper's two equal links: uniform rods, 1 m and 1 kg.
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81)]
+struct Rods {
+    #[arm(length = 1, mass = 1)]
+    upper: Revolute,
+    #[arm(length = 1, mass = 1)]
+    fore: Revolute,
+}
+
+/// The arm's gravity, m/s^2, for the hand computation.
+const G: f64 = 9.81;
+/// Control period, s: the controller samples the state and holds its torque this long.
+const PERIOD: f64 = 0.01;
+/// RK4 steps per control period: 1 ms, fine enough that the integrator's error is far below
+/// what is being checked.
+const SUBSTEPS: u32 = 10;
+/// Control periods simulated: 5 s.
+const STEPS: u32 = 500;
+/// Riccati iteration: stop when P changes by less than this, relative to its largest entry.
+const TOLERANCE: f64 = 1e-13;
+const MAX_ITERATIONS: u32 = 100_000;
+
+type V2 = Vector2<f64>;
+type X = Vector4<f64>;
+
+fn upright() -> V2 {
+    V2::new(FRAC_PI_2, 0.0)
+}
+
+/// An angle in [-pi, pi): the arm a full turn away is the same arm.
+fn wrap(a: f64) -> f64 {
+    (a + PI).rem_euclid(TAU) - PI
+}
+
+/// `x - x*` with the angles wrapped.
+fn state_error(q: &V2, qd: &V2) -> X {
+    let e = q - upright();
+    X::new(wrap(e[0]), wrap(e[1]), qd[0], qd[1])
+}
+
+/// Step 1: the eigenvalues of `A` at upright against the textbook's. Returns the largest
+/// difference.
+fn textbook_check(arm: &Rods) -> f64 {
+    println!("== 1. the linearisation against the textbook double pendulum ==");
+    // By hand, from the rods' energies (docs of the crate): at q2 = 0 the mass matrix is
+    // M = [[5/3 + 1, 1/3 + 1/2], [1/3 + 1/2, 1/3]], and with c1 = 0, s1 = 1 at q1 = pi/2,
+    // g(q) = g (3/2 c1 + 1/2 c12, 1/2 c12) has -dg/dq = g [[3/2 + 1/2, 1/2], [1/2, 1/2]].
+    // Small motions obey M dqdd = K dq, so A's eigenvalues are +-sqrt(mu), mu those of
+    // M^-1 K, from its trace and determinant.
+    let m = Matrix2::new(8.0 / 3.0, 5.0 / 6.0, 5.0 / 6.0, 1.0 / 3.0);
+    let k = Matrix2::new(2.0, 0.5, 0.5, 0.5) * G;
+    // trace(M^-1 K) = trace(adj(M) K) / det M.
+    let trace = (m[(1, 1)] * k[(0, 0)] - 2.0 * m[(0, 1)] * k[(0, 1)] + m[(0, 0)] * k[(1, 1)])
+        / m.determinant();
+    let det = k.determinant() / m.determinant();
+    let disc = (trace * trace / 4.0 - det).sqrt();
+    let mu = [trace / 2.0 + disc, trace / 2.0 - disc];
+    let mut by_hand: Vec<f64> = mu.iter().flat_map(|m| [m.sqrt(), -m.sqrt()]).collect();
+    by_hand.sort_by(f64::total_cmp);
+    println!("M = [[8/3, 5/6], [5/6, 1/3]] kg m^2, K = -dg/dq = g [[2, 1/2], [1/2, 1/2]] N m/rad");
+    println!(
+        "M^-1 K: trace {trace:.6}, determinant {det:.6}; eigenvalues mu = {:.6}, {:.6} 1/s^2",
+        mu[0], mu[1]
+    );
+
+    let q = upright();
+    let (a, _) = arm.linearize(&q, &V2::zeros(), &arm.gravity(&q));
+    let eig = a.complex_eigenvalues();
+    let largest_imaginary = eig.iter().map(|z| z.im.abs()).fold(0.0, f64::max);
+    let mut derived: Vec<f64> = eig.iter().map(|z| z.re).collect();
+    derived.sort_by(f64::total_cmp);
+    println!("eigenvalues of A (1/s):  by hand +-sqrt(mu)   from linearize   difference");
+    let mut worst = largest_imaginary;
+    for (h, d) in by_hand.iter().zip(&derived) {
+        println!("{:24}{h:>16.12} {d:>16.12} {:>12.1e}", "", d - h);
+        worst = worst.max((d - h).abs());
+    }
+    println!(
+        "(largest imaginary part {largest_imaginary:.1e}); two real unstable modes: upright falls with time constants {:.3} s and {:.3} s",
+        1.0 / by_hand[3],
+        1.0 / by_hand[2]
+    );
+    worst
+}
+
+/// The discrete LQR for `x+ = Ad x + Bd u`, cost `sum x^T Q x + u^T R u`, by value iteration
+/// on the Riccati equation: `P <- Q + Ad^T P Ad - Ad^T P Bd (R + Bd^T P Bd)^-1 Bd^T P Ad`
+/// from `P = Q`, the cost-to-go of ever longer horizons, which converges to the stabilising
+/// solution when (Ad, Bd) is stabilisable and Q > 0. Slower than a Schur or doubling method
+/// but a few lines and obviously right; the rate is the square of the slowest closed-loop pole.
+/// Returns the gain K, the iterations taken and the relative residual of the equation.
+fn dlqr<const M: usize>(
+    ad: &Matrix4<f64>,
+    bd: &SMatrix<f64, 4, M>,
+    q: &Matrix4<f64>,
+    r: &SMatrix<f64, M, M>,
+) -> Result<(SMatrix<f64, M, 4>, u32, f64), Box<dyn Error>> {
+    let gain = |p: &Matrix4<f64>| -> Result<SMatrix<f64, M, 4>, Box<dyn Error>> {
+        let s = r + bd.transpose() * p * bd;
+        let s = s
+            .cholesky()
+            .ok_or("R + Bd^T P Bd is not positive definite")?;
+        Ok(s.solve(&(bd.transpose() * p * ad)))
+    };
+    let mut p = *q;
+    for iterations in 1..=MAX_ITERATIONS {
+        let k = gain(&p)?;
+        // Ad^T P Ad - Ad^T P Bd K = Ad^T P (Ad - Bd K); symmetrised, as rounding would
+        // otherwise let P drift from symmetric over thousands of steps.
+        let next = q + ad.transpose() * p * (ad - bd * k);
+        let next = (next + next.transpose()) * 0.5;
+        let change = (next - p).amax() / next.amax();
+        p = next;
+        if change < TOLERANCE {
+            let k = gain(&p)?;
+            let riccati = q + ad.transpose() * p * (ad - bd * k) - p;
+            return Ok((k, iterations, riccati.amax() / p.amax()));
+        }
+    }
+    Err(format!("Riccati iteration: no convergence in {MAX_ITERATIONS} steps").into())
+}
+
+/// Designs the controller for the inputs `drive` (torque = drive * u) and prints its checks.
+fn design<const M: usize>(
+    arm: &Rods,
+    drive: &SMatrix<f64, 2, M>,
+    q_cost: &Matrix4<f64>,
+    r_cost: &SMatrix<f64, M, M>,
+) -> Result<SMatrix<f64, M, 4>, Box<dyn Error>> {
+    let q = upright();
+    let tau = arm.gravity(&q);
+    let (ad, bd) = arm.discretize(&q, &V2::zeros(), &tau, PERIOD);
+    let bd = bd * drive;
+    let (k, iterations, residual) = dlqr(&ad, &bd, q_cost, r_cost)?;
+    println!(
+        "Riccati value iteration: converged in {} iterations (relative change < {TOLERANCE:.0e}); residual |Q + Ad^T P Ad - Ad^T P Bd (R + Bd^T P Bd)^-1 Bd^T P Ad - P| / |P| = {:.1e}",
+        iterations, residual
+    );
+    assert!(residual < 1e-10, "Riccati residual too large");
+    println!("K (columns q1, q2, qd1, qd2; N m per rad, N m s per rad):");
+    for row in k.row_iter() {
+        println!("    {:9.3?}", row.iter().collect::<Vec<_>>());
+    }
+    let closed = (ad - bd * k).complex_eigenvalues();
+    println!("closed-loop eigenvalues z of Ad - Bd K (s = ln z / dt):");
+    let mut slowest = 0.0_f64;
+    for z in closed.iter() {
+        let s = z.ln() / PERIOD;
+        println!("    z = {z:.6}   |z| = {:.6}   s = {s:.3} 1/s", z.norm());
+        slowest = slowest.max(z.norm());
+    }
+    assert!(slowest < 1.0, "unstable: a closed-loop |z| = {slowest}");
+    println!("all inside the unit circle: largest modulus {slowest:.6}");
+    Ok(k)
+}
+
+/// `(qd, qdd)` of the nonlinear arm.
+fn rates(arm: &Rods, q: &V2, qd: &V2, tau: &V2) -> (V2, V2) {
+    (*qd, arm.forward_dynamics(q, qd, tau))
+}
+
+/// One classical Runge-Kutta step with the torque held.
+fn rk4(arm: &Rods, q: V2, qd: V2, tau: &V2, h: f64) -> (V2, V2) {
+    let (k1q, k1v) = rates(arm, &q, &qd, tau);
+    let (k2q, k2v) = rates(arm, &(q + k1q * (h / 2.0)), &(qd + k1v * (h / 2.0)), tau);
+    let (k3q, k3v) = rates(arm, &(q + k2q * (h / 2.0)), &(qd + k2v * (h / 2.0)), tau);
+    let (k4q, k4v) = rates(arm, &(q + k3q * h), &(qd + k3v * h), tau);
+    (
+        q + (k1q + k2q * 2.0 + k3q * 2.0 + k4q) * (h / 6.0),
+        qd + (k1v + k2v * 2.0 + k3v * 2.0 + k4v) * (h / 6.0),
+    )
+}
+
+/// A closed-loop run sampled at the control instants.
+#[derive(Default)]
+struct Run {
+    t: Vec<f64>,
+    q: Vec<V2>,
+    error: Vec<X>,
+    tau: Vec<V2>,
+}
+
+/// The nonlinear arm under `tau = drive (u* - K (x - x*))`, sampled and held every period.
+fn simulate<const M: usize>(
+    arm: &Rods,
+    k: &SMatrix<f64, M, 4>,
+    drive: &SMatrix<f64, 2, M>,
+    q0: V2,
+) -> Run {
+    let u_star = drive.transpose() * arm.gravity(&upright());
+    let (mut q, mut qd) = (q0, V2::zeros());
+    let mut run = Run::default();
+    let h = PERIOD / f64::from(SUBSTEPS);
+    for step in 0..=STEPS {
+        let x = state_error(&q, &qd);
+        let tau = drive * (u_star - k * x);
+        run.t.push(f64::from(step) * PERIOD);
+        run.q.push(q);
+        run.error.push(x);
+        run.tau.push(tau);
+        for _ in 0..SUBSTEPS {
+            (q, qd) = rk4(arm, q, qd, &tau, h);
+        }
+    }
+    run
+}
+
+/// Prints a run's summary and fails if it did not come back to upright. Returns the peak
+/// torques, the time from which it stays within 0.01 rad, and the final `|x - x*|`.
+fn report(run: &Run) -> (V2, f64, f64) {
+    let peak = run.tau.iter().fold(V2::zeros(), |m, t| m.sup(&t.abs()));
+    let swing = run
+        .error
+        .iter()
+        .fold(V2::zeros(), |m, e| m.sup(&e.fixed_rows::<2>(0).abs()));
+    // The end of the last control period with an angle more than 0.01 rad off.
+    let settled = run
+        .t
+        .iter()
+        .zip(&run.error)
+        .filter(|(_, e)| e.fixed_rows::<2>(0).amax() > 0.01)
+        .map(|(t, _)| *t + PERIOD)
+        .fold(0.0, f64::max);
+    let last = run.error.last().copied().unwrap_or_default();
+    println!(
+        "largest angle errors {:.4} rad, {:.4} rad; within 0.01 rad of upright from t = {settled:.2} s on",
+        swing[0], swing[1]
+    );
+    println!("peak torques {:.3} N m, {:.3} N m", peak[0], peak[1]);
+    println!("at t = 5 s: |x - x*| = {:.2e}", last.norm());
+    assert!(
+        last.norm() < 1e-3,
+        "not balanced: |x - x*| = {:e}",
+        last.norm()
+    );
+    (peak, settled, last.norm())
+}
+
+/// The largest start `q* + d direction` (d to 2 mrad, up to 0.5 rad) from which the
+/// controller balances the arm, by bisection (along a ray the region that it catches is an
+/// interval in practice), and the largest elbow swing on the way back from there.
+fn reach<const M: usize>(
+    arm: &Rods,
+    k: &SMatrix<f64, M, 4>,
+    drive: &SMatrix<f64, 2, M>,
+    direction: V2,
+) -> (f64, f64) {
+    let run = |d: f64| simulate(arm, k, drive, upright() + direction.normalize() * d);
+    let balances = |d: f64| run(d).error.last().is_some_and(|e| e.norm() < 1e-3);
+    let swing = |d: f64| run(d).error.iter().fold(0.0, |m: f64, e| m.max(e[1].abs()));
+    let (mut lo, mut hi) = (0.0, 0.5);
+    if balances(hi) {
+        return (hi, swing(hi));
+    }
+    while hi - lo > 0.002 {
+        let mid = 0.5 * (lo + hi);
+        if balances(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    (lo, swing(lo))
+}
+
+const JOINT: [RGBColor; 2] = [RGBColor(70, 110, 190), RGBColor(200, 80, 40)];
+const ARM: RGBColor = RGBColor(35, 40, 60);
+const EARLY: RGBColor = RGBColor(235, 140, 60);
+const TIP: RGBColor = RGBColor(40, 150, 90);
+
+fn font(size: u32) -> TextStyle<'static> {
+    ("sans-serif", size).into_font().into()
+}
+
+type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// A key entry's sample: a short line.
+fn swatch(style: ShapeStyle) -> impl Fn((i32, i32)) -> PathElement<(i32, i32)> {
+    move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style)
+}
+
+/// The chart's key, in its upper right corner.
+fn key<'a, 'b: 'a>(chart: &mut Chart<'a, 'b>) -> Result<(), Box<dyn Error>> {
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.9))
+        .border_style(BLACK.mix(0.3))
+        .label_font(font(13))
+        .draw()?;
+    Ok(())
+}
+
+/// One quantity per joint against time; `steps` draws it held between samples.
+fn time_panel(
+    area: &Area<'_>,
+    caption: &str,
+    y_desc: &str,
+    t: &[f64],
+    values: [(&str, Vec<f64>); 2],
+    steps: bool,
+) -> Result<(), Box<dyn Error>> {
+    let (lo, hi) = values
+        .iter()
+        .flat_map(|(_, v)| v.iter())
+        .fold((0.0_f64, 0.0_f64), |(lo, hi), v| (lo.min(*v), hi.max(*v)));
+    let pad = 0.08 * (hi - lo).max(1e-9);
+    let end = t.last().copied().unwrap_or(1.0);
+    let mut chart = ChartBuilder::on(area)
+        .margin(10)
+        .margin_right(20)
+        .caption(caption, font(16))
+        .x_label_area_size(40)
+        .y_label_area_size(64)
+        .build_cartesian_2d(0.0..end, (lo - pad)..(hi + pad))?;
+    chart
+        .configure_mesh()
+        .light_line_style(TRANSPARENT)
+        .bold_line_style(BLACK.mix(0.08))
+        .x_desc("time (s)")
+        .y_desc(y_desc)
+        .y_label_formatter(&|v| tick(*v))
+        .label_style(font(13))
+        .axis_desc_style(font(13))
+        .draw()?;
+    for ((name, v), color) in values.iter().zip(JOINT) {
+        let points: Vec<(f64, f64)> = if steps {
+            // Zero-order hold: each torque lasts until the next sample.
+            t.windows(2)
+                .zip(v)
+                .flat_map(|(w, &v)| [(w[0], v), (w[1], v)])
+                .collect()
+        } else {
+            t.iter().copied().zip(v.iter().copied()).collect()
+        };
+        chart
+            .draw_series(LineSeries::new(points, color.stroke_width(2)))?
+            .label(*name)
+            .legend(swatch(color.stroke_width(2)));
+    }
+    key(&mut chart)
+}
+
+/// The arm as drawn: base, elbow, tip.
+fn pose(arm: &Rods, q: &V2) -> Vec<(f64, f64)> {
+    let mut points: Vec<(f64, f64)> = arm.joint_positions(q).iter().map(|p| (p.x, p.y)).collect();
+    let tip = arm.tip_pose(q).translation.vector;
+    points.push((tip.x, tip.y));
+    points
+}
+
+/// A frame's colour: from `EARLY` at the first frame to `ARM` at the last.
+fn shade(f: f64) -> RGBColor {
+    // Between two u8 values, so in 0..=255.
+    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+    let mix = |a: u8, b: u8| (f64::from(a) + f * (f64::from(b) - f64::from(a))).round() as u8;
+    RGBColor(
+        mix(EARLY.0, ARM.0),
+        mix(EARLY.1, ARM.1),
+        mix(EARLY.2, ARM.2),
+    )
+}
+
+/// The arm at the `strobe` times, from orange (start) to dark (end), with the tip's path
+/// and the upright pose, on axes of equal units.
+fn strobe_panel(
+    area: &Area<'_>,
+    arm: &Rods,
+    run: &Run,
+    strobe: &[f64],
+) -> Result<(), Box<dyn Error>> {
+    let frames: Vec<(f64, Vec<(f64, f64)>)> = strobe
+        .iter()
+        .filter_map(|&t| {
+            let i = run.t.iter().position(|s| (s - t).abs() < 0.5 * PERIOD)?;
+            Some((t, pose(arm, &run.q[i])))
+        })
+        .collect();
+    let path: Vec<(f64, f64)> = run.q.iter().filter_map(|q| pose(arm, q).pop()).collect();
+    let half = path
+        .iter()
+        .chain(frames.iter().flat_map(|(_, p)| p))
+        .fold(0.4_f64, |m, p| m.max(p.0.abs()))
+        + 0.15;
+    let (bottom, top) = (-0.2, 2.2);
+    let (margin, x_labels, y_labels, caption) = (10_u32, 40_u32, 52_u32, 30_u32);
+    let (w, h) = area.dim_in_pixel();
+    let plot_w = f64::from(w - y_labels - 2 * margin);
+    let plot_h = f64::from(h - x_labels - 2 * margin - caption);
+    // Equal units: widen whichever axis has pixels to spare.
+    let (half, bottom, top) = if half * 2.0 / plot_w > (top - bottom) / plot_h {
+        let extra = half * 2.0 * plot_h / plot_w - (top - bottom);
+        (half, bottom - 0.5 * extra, top + 0.5 * extra)
+    } else {
+        (0.5 * (top - bottom) * plot_w / plot_h, bottom, top)
+    };
+    let mut chart = ChartBuilder::on(area)
+        .margin(margin)
+        .caption("the arm in motion (axes in equal units)", font(16))
+        .x_label_area_size(x_labels)
+        .y_label_area_size(y_labels)
+        .build_cartesian_2d(-half..half, bottom..top)?;
+    chart
+        .configure_mesh()
+        .light_line_style(TRANSPARENT)
+        .bold_line_style(BLACK.mix(0.08))
+        .x_desc("x (m)")
+        .y_desc("y (m)")
+        .y_label_formatter(&|v| tick(*v))
+        .x_label_formatter(&|v| tick(*v))
+        .label_style(font(13))
+        .axis_desc_style(font(13))
+        .draw()?;
+    chart.draw_series(std::iter::once(Rectangle::new(
+        [(-0.12, -0.05), (0.12, 0.0)],
+        BLACK.mix(0.25).filled(),
+    )))?;
+    chart
+        .draw_series(DashedLineSeries::new(
+            pose(arm, &upright()),
+            8,
+            6,
+            BLACK.mix(0.45).stroke_width(2),
+        ))?
+        .label("upright, q* = (pi/2, 0)")
+        .legend(swatch(BLACK.mix(0.45).stroke_width(2)));
+    // In the key here, drawn over the arms below, where it can be seen.
+    chart
+        .draw_series(std::iter::empty::<Circle<(f64, f64), u32>>())?
+        .label("tip path, 0 to 5 s")
+        .legend(swatch(TIP.stroke_width(2)));
+    // The time of each frame by its colour in the key: labels by the poses would collide
+    // where the arm comes back over itself.
+    let n = frames.len().max(2) - 1;
+    for (i, (t, points)) in frames.iter().enumerate() {
+        #[allow(clippy::cast_precision_loss)]
+        let color = shade(i as f64 / n as f64);
+        chart
+            .draw_series(LineSeries::new(
+                points.clone(),
+                color.mix(0.8).stroke_width(4),
+            ))?
+            .label(format!("the arm at t = {t} s"))
+            .legend(swatch(color.stroke_width(4)));
+        chart.draw_series(points.iter().map(|&p| Circle::new(p, 4, color.filled())))?;
+    }
+    chart.draw_series(LineSeries::new(path, TIP.stroke_width(2)))?;
+    key(&mut chart)
+}
+
+/// A tick label without "-0" and without rounding noise.
+fn tick(v: f64) -> String {
+    // Adding 0.0 turns -0.0 into 0.0.
+    format!("{}", (v * 1e6).round() / 1e6 + 0.0)
+}
+
+/// Angle errors and torques against time (left), the strobe picture (right).
+fn draw(
+    path: &Path,
+    arm: &Rods,
+    run: &Run,
+    titles: [&str; 2],
+    torques: [&str; 2],
+    strobe: &[f64],
+) -> Result<(), Box<dyn Error>> {
+    let root = SVGBackend::new(path, (1200, 900)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let (head, body) = root.split_vertically(70);
+    head.draw(&Text::new(titles[0], (16, 10), font(21)))?;
+    head.draw(&Text::new(titles[1], (16, 42), font(14)))?;
+    let (left, right) = body.split_horizontally(730);
+    let panels = left.split_evenly((2, 1));
+    let angle = |j: usize| run.error.iter().map(|e| e[j]).collect::<Vec<_>>();
+    let torque = |j: usize| run.tau.iter().map(|t| t[j]).collect::<Vec<_>>();
+    time_panel(
+        &panels[0],
+        "joint angle errors q - q* (wrapped to [-pi, pi))",
+        "angle error (rad)",
+        &run.t,
+        [
+            ("joint 1 (shoulder)", angle(0)),
+            ("joint 2 (elbow)", angle(1)),
+        ],
+        false,
+    )?;
+    time_panel(
+        &panels[1],
+        "joint torques, held for each 10 ms control period",
+        "torque (N m)",
+        &run.t,
+        [(torques[0], torque(0)), (torques[1], torque(1))],
+        true,
+    )?;
+    strobe_panel(&right, arm, run, strobe)?;
+    root.present()?;
+    Ok(())
+}
+
+fn docs() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("docs")
+}
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let arm = Rods::default();
+    let worst = textbook_check(&arm);
+    assert!(worst < 1e-9, "A differs from the textbook by {worst:.1e}");
+
+    println!("\n== 2. LQR with both joints driven ==");
+    // Angles weigh ten times the rates; torque costs 1 per (N m)^2.
+    let q_cost = Matrix4::from_diagonal(&X::new(10.0, 10.0, 1.0, 1.0));
+    let both = Matrix2::identity();
+    let k = design(&arm, &both, &q_cost, &Matrix2::identity())?;
+
+    let start = V2::new(0.15, -0.2);
+    println!(
+        "\n== 3. the nonlinear arm under it, from q* + ({}, {}) rad at rest ==",
+        start[0], start[1]
+    );
+    let run = simulate(&arm, &k, &both, upright() + start);
+    let (peak, settled, last) = report(&run);
+    let file = docs().join("balance-two-link.svg");
+    draw(
+        &file,
+        &arm,
+        &run,
+        [
+            "Balancing two 1 m, 1 kg rods upright: discrete LQR from the derived linearisation",
+            &format!(
+                "nonlinear dynamics (RK4, 1 ms) from q* + ({}, {}) rad; both joints driven, 10 ms period; peak torques {:.2} and {:.2} N m; within 0.01 rad after {:.2} s; |x - x*| = {:.0e} at 5 s",
+                start[0], start[1], peak[0], peak[1], settled, last
+            ),
+        ],
+        ["joint 1 (shoulder)", "joint 2 (elbow)"],
+        &[0.0, 0.1, 0.2, 0.3, 0.4, 0.6, 0.8, 1.0, 1.5, 5.0],
+    )?;
+    println!("{}", file.display());
+
+    println!("\n== 4. the acrobot: only the elbow driven ==");
+    let elbow = SMatrix::<f64, 2, 1>::new(0.0, 1.0);
+    let q = upright();
+    let (a, b) = arm.linearize(&q, &V2::zeros(), &arm.gravity(&q));
+    let b = b * elbow;
+    let mut c = Matrix4::zeros();
+    let mut column = b;
+    for i in 0..4 {
+        c.set_column(i, &column);
+        column = a * column;
+    }
+    let sv = c.singular_values();
+    let rank = sv.iter().filter(|s| **s > 1e-9 * sv.max()).count();
+    println!(
+        "controllability matrix [b, Ab, A^2 b, A^3 b] (b: B's elbow column): singular values {:.4?}, rank {rank}",
+        sv.as_slice()
+    );
+    assert_eq!(rank, 4, "the acrobot is not controllable at upright");
+    let k = design(&arm, &elbow, &q_cost, &SMatrix::<f64, 1, 1>::new(1.0))?;
+
+    // The passive shoulder is moved only through the coupling: to bring the centre of mass
+    // back over the base the elbow swings far, and past about 1 rad the linear model no
+    // longer holds. A start that keeps the centre of mass over the base (dq2 = -4 dq1 to
+    // first order, where gravity's torque on the shoulder vanishes) needs little swing.
+    println!(
+        "largest start from rest that it balances, along three directions (bisection, 2 mrad):"
+    );
+    for (name, direction) in [
+        ("shoulder only, (1, 0)", V2::new(1.0, 0.0)),
+        ("elbow only, (0, 1)", V2::new(0.0, 1.0)),
+        ("centre of mass over the base, (1, -4)", V2::new(1.0, -4.0)),
+    ] {
+        let (d, swing) = reach(&arm, &k, &elbow, direction);
+        let bound = if d >= 0.5 { ">=" } else { "" };
+        println!("    {name:38} |dq| {bound}{d:.3} rad, the elbow then swings {swing:.2} rad");
+    }
+    println!(
+        "so 0.05 rad at the shoulder is out of reach: the passive shoulder is moved only by \
+         swinging the elbow, and a swing of about a radian leaves the linear model behind"
+    );
+    let start = V2::new(0.02, 0.0);
+    println!(
+        "the nonlinear acrobot under it, from q* + ({}, {}) rad at rest:",
+        start[0], start[1]
+    );
+    let acro = simulate(&arm, &k, &elbow, upright() + start);
+    let (peak, _, last) = report(&acro);
+    let file = docs().join("balance-acrobot.svg");
+    draw(
+        &file,
+        &arm,
+        &acro,
+        [
+            "The acrobot: the same rods balanced with the elbow motor alone (shoulder passive)",
+            &format!(
+                "from q* + ({}, {}) rad: the elbow swings {:.2} rad to carry the centre of mass back over the base; peak elbow torque {:.2} N m; |x - x*| = {:.0e} at 5 s",
+                start[0], start[1], acro.error.iter().map(|e| e[1].abs()).fold(0.0, f64::max), peak[1], last
+            ),
+        ],
+        ["joint 1 (passive, 0)", "joint 2 (elbow, driven)"],
+        &[0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.2, 5.0],
+    )?;
+    println!("{}", file.display());
+    Ok(())
+}
