@@ -38,6 +38,17 @@ pub struct Regressor<const N: usize> {
 }
 
 impl<const N: usize> Regressor<N> {
+    /// The joints' own columns at these rates and accelerations, the bodies' still zero.
+    fn with_joint_columns(qd: &SVector<f64, N>, qdd: &SVector<f64, N>) -> Self {
+        Self {
+            links: [SMatrix::zeros(); N],
+            payload: SMatrix::zeros(),
+            armature: *qdd,
+            damping: *qd,
+            coulomb: qd.map(sign),
+        }
+    }
+
     /// The column of the standard parameter called `name` (`zz2`, `mx1`, `myp`, `m3`, `ia1`,
     /// `fv2`, `fc1`; links count from 1, `p` is the payload), or `None` for a name that is not
     /// one of them.
@@ -130,13 +141,7 @@ pub fn regressor<const N: usize>(
 ) -> Regressor<N> {
     let dirs = link_directions(q);
     let mut joints = [Vector2::zeros(); N];
-    let mut out = Regressor {
-        links: [SMatrix::zeros(); N],
-        payload: SMatrix::zeros(),
-        armature: *qdd,
-        damping: *qd,
-        coulomb: qd.map(sign),
-    };
+    let mut out = Regressor::with_joint_columns(qd, qdd);
     let mut p = Vector2::zeros();
     let mut a = Vector2::new(0.0, model.gravity);
     let (mut omega, mut alpha) = (0.0, 0.0);
@@ -176,13 +181,7 @@ pub fn regressor_local<const N: usize>(
     qdd: &SVector<f64, N>,
 ) -> Regressor<N> {
     let rot: [(f64, f64); N] = core::array::from_fn(|i| q[i].sin_cos());
-    let mut out = Regressor {
-        links: [SMatrix::zeros(); N],
-        payload: SMatrix::zeros(),
-        armature: *qdd,
-        damping: *qd,
-        coulomb: qd.map(sign),
-    };
+    let mut out = Regressor::with_joint_columns(qd, qdd);
     // The acceleration of joint j in the frame of link j-1 (the base's for j = 0).
     let mut a = Vector2::new(0.0, model.gravity);
     let (mut omega, mut alpha) = (0.0, 0.0);
