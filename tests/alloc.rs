@@ -266,6 +266,16 @@ fn generated_dynamics_kinematics_and_statics_do_not_allocate() {
     };
     scalars();
     assert_no_allocation("f32 and SIMD batches", scalars);
+    // Derivatives and linearisation, what an MPC or iLQR loop calls every step.
+    let q = vector::<3>(0.3);
+    let derivatives = || {
+        black_box(arm.inverse_dynamics_derivatives(black_box(&q), &q, &q));
+        black_box(arm.forward_dynamics_derivatives(black_box(&q), &q, &q));
+        black_box(arm.linearize(black_box(&q), &q, &q));
+        black_box(arm.discretize(black_box(&q), &q, &q, 0.01));
+    };
+    derivatives();
+    assert_no_allocation("derivatives and linearisation", derivatives);
 }
 
 #[test]
