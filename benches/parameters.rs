@@ -26,14 +26,14 @@ use planar_arm::prelude::*;
 mod interleaved;
 use interleaved::interleaved;
 
-#[derive(PlanarArm, Default, Debug)]
-#[arm(gravity = 9.80665)]
-struct Literal2 {
-    #[arm(length = 6/1, mass = 3/1, inertia = 6/25, com = 12/5)]
-    a: Revolute,
-    #[arm(length = 4/1, mass = 38/5, inertia = 1/25, com = 4/1)]
-    b: Revolute,
-}
+// The literal arms are the dynamics bench's random arms; the parameterised ones below hold
+// the same values in fields.
+#[path = "support/random_arms.rs"]
+#[allow(dead_code)] // the one- and eight-link arms are the dynamics bench's
+mod random_arms;
+use random_arms::{
+    Random2 as Literal2, Random3 as Literal3, Random4 as Literal4, Random6 as Literal6,
+};
 
 #[derive(PlanarArm, Debug)]
 #[arm(gravity = 9.80665)]
@@ -63,17 +63,6 @@ impl Default for Params2 {
             com_b: 4.0 / 1.0,
         }
     }
-}
-
-#[derive(PlanarArm, Default, Debug)]
-#[arm(gravity = 9.80665)]
-struct Literal3 {
-    #[arm(length = 12/5, mass = 26/5, inertia = 5/4, com = 6/25)]
-    a: Revolute,
-    #[arm(length = 23/10, mass = 2/1, inertia = 1/20, com = 69/100)]
-    b: Revolute,
-    #[arm(length = 2/1, mass = 3/2, inertia = 11/25, com = 3/5)]
-    c: Revolute,
 }
 
 #[derive(PlanarArm, Debug)]
@@ -113,19 +102,6 @@ impl Default for Params3 {
             com_c: 3.0 / 5.0,
         }
     }
-}
-
-#[derive(PlanarArm, Default, Debug)]
-#[arm(gravity = 9.80665)]
-struct Literal4 {
-    #[arm(length = 9/5, mass = 13/4, inertia = 1/40, com = 9/5)]
-    a: Revolute,
-    #[arm(length = 9/5, mass = 9/2, inertia = 11/40, com = -27/50)]
-    b: Revolute,
-    #[arm(length = 23/8, mass = 3/4, inertia = 3/10, com = 69/20)]
-    c: Revolute,
-    #[arm(length = 14/5, mass = 16/5, inertia = 23/25, com = -14/25)]
-    d: Revolute,
 }
 
 #[derive(PlanarArm, Debug)]
@@ -174,23 +150,6 @@ impl Default for Params4 {
             com_d: -14.0 / 25.0,
         }
     }
-}
-
-#[derive(PlanarArm, Default, Debug)]
-#[arm(gravity = 9.80665)]
-struct Literal6 {
-    #[arm(length = 3/1, mass = 12/5, inertia = 1/50, com = 12/5)]
-    a: Revolute,
-    #[arm(length = 4/1, mass = 15/2, inertia = 23/25, com = 6/5)]
-    b: Revolute,
-    #[arm(length = 7/5, mass = 31/8, inertia = 17/40, com = 7/10)]
-    c: Revolute,
-    #[arm(length = 9/2, mass = 39/8, inertia = 7/10, com = -9/10)]
-    d: Revolute,
-    #[arm(length = 17/4, mass = 15/8, inertia = 17/40, com = 17/40)]
-    e: Revolute,
-    #[arm(length = 7/4, mass = 9/1, inertia = 1/4, com = 21/20)]
-    f: Revolute,
 }
 
 #[derive(PlanarArm, Debug)]
