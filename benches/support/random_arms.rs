@@ -1,7 +1,6 @@
 //! Arms with random rational parameters (drawn once with a fixed seed and written here), the
 //! ones the dynamics, parameters, identification, scalars, derivatives and Pinocchio benchmarks
-//! time (`bench/pinocchio` builds
-//! the same arms).
+//! time (`bench/pinocchio` builds the same arms).
 
 use planar_arm::prelude::*;
 
