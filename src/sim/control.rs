@@ -214,5 +214,5 @@ pub fn fastest_rate<A: PlanarArm<N> + ?Sized, const N: usize>(
         }
         value.max(0.0)
     };
-    Ok(largest(kd) + largest(kp).sqrt())
+    Ok(largest(kd) + num_traits::Float::sqrt(largest(kp)))
 }

@@ -9,7 +9,7 @@
 //!
 //! ```
 //! use planar_arm::prelude::*;
-//! use planar_arm::sim::{ComputedTorque, Quintic, Rk4, Simulator};
+//! use planar_arm::sim::{ComputedTorque, Quintic, Rk4, Simulator, Trajectory};
 //!
 //! #[derive(PlanarArm, Default)]
 //! #[arm(gravity = 9.81)]

@@ -124,9 +124,9 @@ impl<I: Integrator> Simulator<I> {
             value: period,
         };
         positive(period, "control period")?;
-        let steps = (period / self.dt).round();
+        let steps = num_traits::Float::round(period / self.dt);
         if !(1.0..=f64::from(u32::MAX)).contains(&steps)
-            || (steps * self.dt - period).abs() > 1e-9 * period
+            || num_traits::Float::abs(steps * self.dt - period) > 1e-9 * period
         {
             return Err(bad);
         }
@@ -176,7 +176,7 @@ impl<I: Integrator> Simulator<I> {
         }
         finite(&q0, "q0").map_err(|e| e.at(0.0))?;
         finite(&qd0, "qd0").map_err(|e| e.at(0.0))?;
-        let samples = (duration / self.control_period()).round();
+        let samples = num_traits::Float::round(duration / self.control_period());
         // Bounded by the check below; more than 2^53 samples would not finish anyway.
         #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
         let samples = samples.min(9e15) as u64;

@@ -43,6 +43,15 @@ pub trait Trajectory<const N: usize> {
     fn duration(&self) -> f64;
 }
 
+impl<T: Trajectory<N> + ?Sized, const N: usize> Trajectory<N> for &T {
+    fn sample(&self, t: f64) -> Sample<N> {
+        (**self).sample(t)
+    }
+    fn duration(&self) -> f64 {
+        (**self).duration()
+    }
+}
+
 /// A quintic polynomial in time per joint: position, velocity and acceleration given at both
 /// ends, so that a chain of them is continuous in all three. Rest to rest, it is the
 /// minimum-jerk motion `q0 + (q1 - q0) (10 s^3 - 15 s^4 + 6 s^5)`, `s = t / T`.
