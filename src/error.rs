@@ -3,17 +3,51 @@ use core::fmt;
 /// What went wrong in a method that can fail: inverse kinematics, inverse statics, checked dynamics.
 ///
 /// The enum is `#[non_exhaustive]`: match on the variants you handle and keep a `_` arm.
+///
+/// Its `Display` rounds every number to six significant digits, so that a distance computed as
+/// `0.0009999999999998899` reads `0.001`; the fields keep the exact values.
+///
+/// # Example
+/// ```
+/// use planar_arm::ArmError;
+///
+/// let e = ArmError::Unreachable {
+///     target: [2.0, 0.0],
+///     orientation: None,
+///     radius: 2.0,
+///     inner: 0.0,
+///     outer: 1.9990000000000001,
+///     distance: 0.0009999999999998899,
+/// };
+/// assert_eq!(
+///     e.to_string(),
+///     "target (2, 0) is 0.001 beyond the reachable annulus 0 ..= 1.999 (it lies 2 from the base)"
+/// );
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
 pub enum ArmError {
-    /// An input held NaN or an infinity.
+    /// An input held NaN or an infinity, or (argument `"result"`) finite input gave a result
+    /// that overflowed.
     NonFinite {
-        /// Which argument: `"q"`, `"target"`, `"tau"`, ...
+        /// Which argument: `"q"`, `"target"`, `"tau"`, ..., or `"result"`.
         argument: &'static str,
     },
     /// The target lies outside the work-space.
+    ///
+    /// For a position target, `radius` is the target's distance from the base and the annulus
+    /// is the arm's [`Workspace`](crate::kinematics::Workspace). For a pose target (the tip at
+    /// a point with the last link at an angle), the point that must lie in an annulus is the
+    /// wrist, the last joint, at `target - l_N (cos phi, sin phi)`: `radius` is the wrist's
+    /// distance from the base and the annulus the one the links before the last reach.
     Unreachable {
-        /// Distance from the base (or from the wrist-circle centre) to the point that must be reached.
+        /// The tip position the caller asked for, `[x, y]`.
+        target: [f64; 2],
+        /// The absolute angle of the last link the caller asked for (radians), `None` for a
+        /// position target.
+        orientation: Option<f64>,
+        /// Distance from the base to the point that must be reached: the target, or for a pose
+        /// target the wrist point.
         radius: f64,
         /// Inner radius of the annulus that can be reached.
         inner: f64,
@@ -29,12 +63,12 @@ pub enum ArmError {
         /// The documented threshold below which `|measure|` counts as singular.
         threshold: f64,
     },
-    /// A parameter of the arm is outside its physical range (see
+    /// A parameter of the arm, or an option, is outside its range (see
     /// [`Model::check`](crate::Model::check)).
     OutOfRange {
-        /// Which value: `"mass"`, `"length"`, `"payload mass"`, ...
+        /// Which value: `"mass"`, `"length"`, `"payload mass"`, `"joint limits"`, ...
         what: &'static str,
-        /// The link it belongs to (0-based), or `None` for the payload and gravity.
+        /// The link or joint it belongs to (0-based), or `None` for the payload and gravity.
         link: Option<usize>,
         /// The value found.
         value: f64,
@@ -46,40 +80,219 @@ pub enum ArmError {
         /// Residual norm at the end.
         residual: f64,
     },
+    /// No tip wrench balances the joint torques: for an arm of more than three links, `J^T w =
+    /// tau` has more equations than unknowns, and the part of `tau` outside the range of `J^T`
+    /// (torques that move the arm's joints without moving its tip) is too large.
+    Unbalanced {
+        /// The norm of the torques no tip wrench balances, N m.
+        residual: f64,
+        /// The tolerance it exceeds, N m.
+        tolerance: f64,
+    },
+}
+
+/// A number to six significant digits, trailing zeros dropped: `0.001`, `1.5`, `2.5e-12`.
+struct Rounded(f64);
+
+impl fmt::Display for Rounded {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let x = self.0;
+        if !x.is_finite() || x == 0.0 {
+            // `0` rather than `-0`, `inf` and `NaN` as Rust spells them.
+            return write!(f, "{}", if x == 0.0 { 0.0 } else { x });
+        }
+        let mut buffer = Buffer::default();
+        let magnitude = x.abs();
+        if (1e-4..1e15).contains(&magnitude) {
+            // Decimal places that leave six significant digits.
+            let mut decimals = 5_usize;
+            let mut p = 1.0;
+            while magnitude < p && decimals < 9 {
+                p /= 10.0;
+                decimals += 1;
+            }
+            let mut p = 10.0;
+            while magnitude >= p && decimals > 0 {
+                p *= 10.0;
+                decimals -= 1;
+            }
+            fmt::write(&mut buffer, format_args!("{x:.decimals$}"))?;
+            f.write_str(trim_fraction(buffer.as_str()))
+        } else {
+            fmt::write(&mut buffer, format_args!("{x:.5e}"))?;
+            let text = buffer.as_str();
+            let (mantissa, exponent) = text.split_at(text.find('e').unwrap_or(text.len()));
+            f.write_str(trim_fraction(mantissa))?;
+            f.write_str(exponent)
+        }
+    }
+}
+
+/// `1.500000` to `1.5`, `2.000` to `2`; text without a point is left alone.
+fn trim_fraction(text: &str) -> &str {
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        text
+    }
+}
+
+/// Room for one number formatted by [`Rounded`] (at most 24 characters).
+struct Buffer {
+    bytes: [u8; 40],
+    len: usize,
+}
+
+impl Default for Buffer {
+    fn default() -> Self {
+        Self {
+            bytes: [0; 40],
+            len: 0,
+        }
+    }
+}
+
+impl Buffer {
+    fn as_str(&self) -> &str {
+        // Only `fmt::Write::write_str` fills it, with whole `str`s.
+        core::str::from_utf8(&self.bytes[..self.len]).unwrap_or("")
+    }
+}
+
+impl fmt::Write for Buffer {
+    fn write_str(&mut self, s: &str) -> fmt::Result {
+        let end = self.len + s.len();
+        if end > self.bytes.len() {
+            return Err(fmt::Error);
+        }
+        self.bytes[self.len..end].copy_from_slice(s.as_bytes());
+        self.len = end;
+        Ok(())
+    }
 }
 
 impl fmt::Display for ArmError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
+        let r = Rounded;
+        match *self {
+            Self::NonFinite { argument: "result" } => {
+                write!(f, "the result overflowed to an infinity (or NaN) for finite input")
+            }
             Self::NonFinite { argument } => {
                 write!(f, "argument `{argument}` holds NaN or an infinity")
             }
             Self::Unreachable {
+                target: [x, y],
+                orientation,
                 radius,
                 inner,
                 outer,
                 distance,
-            } => write!(
-                f,
-                "target at radius {radius} is {distance} outside the reachable annulus {inner} ..= {outer}"
-            ),
+            } => {
+                let side = if radius > outer { "beyond" } else { "inside the hole of" };
+                match orientation {
+                    None => write!(
+                        f,
+                        "target ({}, {}) is {} {side} the reachable annulus {} ..= {} (it lies {} from the base)",
+                        r(x), r(y), r(distance), r(inner), r(outer), r(radius)
+                    ),
+                    Some(phi) => write!(
+                        f,
+                        "target ({}, {}) with the last link at {} rad is unreachable: its wrist point lies {} \
+                         from the base, {} {side} the annulus {} ..= {} the links before the last reach",
+                        r(x), r(y), r(phi), r(radius), r(distance), r(inner), r(outer)
+                    ),
+                }
+            }
             Self::Singular { measure, threshold } => write!(
                 f,
-                "singular configuration: |{measure}| is below the threshold {threshold}"
+                "singular configuration: |{}| is below the threshold {}",
+                r(measure),
+                r(threshold)
             ),
             Self::OutOfRange { what, link, value } => match link {
-                Some(i) => write!(f, "link {}: {what} = {value} is out of range", i + 1),
-                None => write!(f, "{what} = {value} is out of range"),
+                Some(i) => write!(f, "link {}: {what} = {} is out of range", i + 1, r(value)),
+                None => write!(f, "{what} = {} is out of range", r(value)),
             },
             Self::NoConvergence {
                 iterations,
                 residual,
             } => write!(
                 f,
-                "no convergence after {iterations} iterations (residual {residual})"
+                "no convergence after {iterations} iterations (residual {})",
+                r(residual)
+            ),
+            Self::Unbalanced {
+                residual,
+                tolerance,
+            } => write!(
+                f,
+                "no tip wrench balances these joint torques: {} N m of them move the joints but not \
+                 the tip (tolerance {})",
+                r(residual),
+                r(tolerance)
             ),
         }
     }
 }
 
 impl core::error::Error for ArmError {}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_print_to_six_significant_digits() {
+        let cases = [
+            (0.0009999999999998899, "0.001"),
+            (1.5, "1.5"),
+            (2.0, "2"),
+            (-0.25, "-0.25"),
+            (123456.789, "123457"),
+            (1.0 / 3.0, "0.333333"),
+            (2.5e-12, "2.5e-12"),
+            (-3.0e20, "-3e20"),
+            (1e-4, "0.0001"),
+            (0.0, "0"),
+            (-0.0, "0"),
+            (f64::INFINITY, "inf"),
+            (f64::NAN, "NaN"),
+            (f64::MAX, "1.79769e308"),
+            (f64::MIN_POSITIVE * 1e-10, "2.22507e-318"),
+        ];
+        for (x, text) in cases {
+            assert_eq!(Rounded(x).to_string(), text, "{x:e}");
+        }
+    }
+
+    #[test]
+    fn messages_name_the_target() {
+        let e = ArmError::Unreachable {
+            target: [1.2, 0.4],
+            orientation: Some(0.3),
+            radius: 2.0000000000000004,
+            inner: 0.2,
+            outer: 1.8,
+            distance: 0.20000000000000018,
+        };
+        assert_eq!(
+            e.to_string(),
+            "target (1.2, 0.4) with the last link at 0.3 rad is unreachable: its wrist point lies 2 \
+             from the base, 0.2 beyond the annulus 0.2 ..= 1.8 the links before the last reach"
+        );
+        let hole = ArmError::Unreachable {
+            target: [0.1, 0.0],
+            orientation: None,
+            radius: 0.1,
+            inner: 0.7,
+            outer: 2.3,
+            distance: 0.6,
+        };
+        assert!(hole
+            .to_string()
+            .contains("0.6 inside the hole of the reachable annulus 0.7"));
+        let overflow = ArmError::NonFinite { argument: "result" };
+        assert!(overflow.to_string().contains("overflowed"));
+    }
+}

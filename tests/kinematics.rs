@@ -836,30 +836,49 @@ fn dls_converges<A: PlanarArm<N>, const N: usize>(arm: &A, rng: &mut Rng) {
             );
         }
     }
-    // Beyond reach: the best is the stretched arm, 0.5 short.
+    // Beyond reach: refused before iterating, 0.5 beyond the outer circle.
     let outer = arm.workspace().outer_radius();
     let far = IkTarget::Position(Point2::new(0.0, outer + 0.5));
     let seed = SVector::<f64, N>::from_fn(|i, _| if i == 0 { 1.2 } else { 0.1 });
     match arm.inverse_kinematics_near(&far, &seed, &options) {
-        Err(ArmError::NoConvergence {
-            iterations,
-            residual,
+        Err(ArmError::Unreachable {
+            target,
+            distance,
+            orientation: None,
+            ..
         }) => {
-            assert!(iterations <= options.max_iterations);
-            assert!((residual - 0.5).abs() < 1e-6, "residual {residual}");
+            assert_eq!(target, [0.0, outer + 0.5]);
+            assert!((distance - 0.5).abs() < 1e-12, "distance {distance}");
         }
-        other => panic!("N = {N}: expected NoConvergence, got {other:?}"),
+        other => panic!("N = {N}: expected Unreachable, got {other:?}"),
     }
-    // Inside the hole of an annulus: no configuration comes closer than the inner circle.
+    // Inside the hole of an annulus: refused, by the distance to the inner circle.
     let inner = arm.workspace().inner_radius();
     if inner > 0.0 {
         let hole = IkTarget::Position(Point2::new(0.5 * inner, 0.0));
         match arm.inverse_kinematics_near(&hole, &seed, &options) {
-            Err(ArmError::NoConvergence { residual, .. }) => {
-                assert!(residual >= 0.5 * inner - 1e-9);
+            Err(ArmError::Unreachable { distance, .. }) => {
+                assert!((distance - 0.5 * inner).abs() < 1e-12);
             }
-            other => panic!("N = {N}: expected NoConvergence, got {other:?}"),
+            other => panic!("N = {N}: expected Unreachable, got {other:?}"),
         }
+    }
+    // A pose whose position is in reach but whose wrist (the last joint) is not.
+    let l = lengths(arm);
+    let wrist_reach = outer - l[N - 1];
+    let pose = IkTarget::Pose(Isometry2::new(Vector2::new(wrist_reach + 0.1, 0.0), PI));
+    match arm.inverse_kinematics_near(&pose, &seed, &options) {
+        Err(ArmError::Unreachable {
+            target,
+            orientation: Some(phi),
+            radius,
+            ..
+        }) => {
+            assert_eq!(target, [wrist_reach + 0.1, 0.0]);
+            assert!(angle_gap(phi, PI) < 1e-15);
+            assert!((radius - (wrist_reach + 0.1 + l[N - 1])).abs() < 1e-12);
+        }
+        other => panic!("N = {N}: expected Unreachable, got {other:?}"),
     }
 }
 
@@ -868,6 +887,300 @@ fn damped_least_squares_for_four_and_six_links() {
     let mut rng = Rng(11);
     dls_converges(&Four::default(), &mut rng);
     dls_converges(&Six::default(), &mut rng);
+}
+
+/// The issue's case: a six-link target at full reach (the arm stretched, the Jacobian singular
+/// at the solution) stopped at a residual of 1.3e-10 against the default tolerance 1e-10.
+fn dls_on_the_boundary<A: PlanarArm<N>, const N: usize>(arm: &A, rng: &mut Rng) -> usize {
+    let options = DlsOptions::default();
+    let outer = arm.workspace().outer_radius();
+    let mut worst_iterations = 0;
+    for k in 0..40 {
+        let theta = rng.angle();
+        // On the circle, and just outside it within the reach tolerance.
+        let r = if k % 2 == 0 {
+            outer
+        } else {
+            outer * (1.0 + 0.5 * REACH_TOLERANCE)
+        };
+        let goal = Point2::new(r * theta.cos(), r * theta.sin());
+        let seed = SVector::<f64, N>::from_fn(|i, _| if i == 0 { theta } else { 0.0 })
+            + rng.config::<N>() * 0.1;
+        let q = arm
+            .inverse_kinematics_near(&IkTarget::Position(goal), &seed, &options)
+            .unwrap_or_else(|e| panic!("N = {N}, r = {r}: {e}"));
+        let (tip, _) = fk(&lengths(arm), &q);
+        let on_circle = goal.coords * (outer / r);
+        assert!(
+            (tip - on_circle).norm() <= 1e-10,
+            "{}",
+            (tip - on_circle).norm()
+        );
+        // Stretched: every relative angle a multiple of 2 pi, to within sqrt of the tolerance.
+        assert!(q.iter().skip(1).all(|a| angle_gap(*a, 0.0) < 1e-4), "{q}");
+        let mut counted = DlsOptions {
+            max_iterations: 0,
+            ..options
+        };
+        while arm
+            .inverse_kinematics_near(&IkTarget::Position(goal), &seed, &counted)
+            .is_err()
+        {
+            counted.max_iterations += 1;
+        }
+        worst_iterations = worst_iterations.max(counted.max_iterations);
+        // A pose at full reach: the orientation must point along the radius.
+        let pose = IkTarget::Pose(Isometry2::new(on_circle, theta));
+        let q = arm
+            .inverse_kinematics_near(&pose, &seed, &options)
+            .unwrap_or_else(|e| panic!("N = {N}, pose: {e}"));
+        let (tip, phi) = fk(&lengths(arm), &q);
+        assert!((tip - on_circle).norm() <= 1e-10 && angle_gap(phi, theta) <= 1e-10);
+    }
+    worst_iterations
+}
+
+#[test]
+fn damped_least_squares_converges_at_full_reach() {
+    let mut rng = Rng(31);
+    let four = dls_on_the_boundary(&Four::default(), &mut rng);
+    let six = dls_on_the_boundary(&Six::default(), &mut rng);
+    assert!(four <= 100 && six <= 100, "{four} {six}");
+    println!("iterations at full reach, at most: four links {four}, six links {six}");
+}
+
+#[test]
+fn damped_least_squares_respects_joint_limits() {
+    let arm = Six::default();
+    let l = lengths(&arm);
+    let mut rng = Rng(32);
+    let limits: [(f64, f64); 6] =
+        core::array::from_fn(|i| if i == 0 { (-PI, PI) } else { (-0.1, 1.2) });
+    let options = DlsOptions {
+        limits: Some(limits),
+        ..DlsOptions::default()
+    };
+    let inside = |q: &SVector<f64, 6>| {
+        q.iter()
+            .zip(&limits)
+            .all(|(a, (lo, hi))| lo <= a && a <= hi)
+    };
+    let (mut solved, mut blocked) = (0, 0);
+    for _ in 0..200 {
+        // A target reached by some configuration within the limits.
+        let truth = SVector::<f64, 6>::from_fn(|i, _| {
+            let (lo, hi) = limits[i];
+            rng.range(lo.max(-3.0), hi.min(3.0))
+        });
+        let goal = arm.tip_pose(&truth);
+        let seed = SVector::<f64, 6>::from_fn(|i, _| if i == 0 { truth[0] } else { 0.5 });
+        match arm.inverse_kinematics_near(
+            &IkTarget::Position(Point2::from(goal.translation.vector)),
+            &seed,
+            &options,
+        ) {
+            Ok(q) => {
+                solved += 1;
+                assert!(inside(&q), "{q} outside the limits");
+                let (tip, _) = fk(&l, &q);
+                assert!((tip - goal.translation.vector).norm() <= 1e-10);
+            }
+            Err(ArmError::NoConvergence { .. }) => blocked += 1,
+            Err(e) => panic!("{e}"),
+        }
+    }
+    assert!(solved > 150, "{solved} solved, {blocked} blocked");
+    // The seed is clamped into the limits, and a target reachable only by bending a joint
+    // beyond its limit is not reached: the arm folded back on itself needs q2 = pi.
+    let folded = IkTarget::Position(Point2::new(l[0] - l[1] - l[2] + 0.05, 0.0));
+    let free = arm.inverse_kinematics_near(&folded, &SVector::repeat(0.5), &DlsOptions::default());
+    assert!(free.is_ok());
+    let limited = arm.inverse_kinematics_near(&folded, &SVector::repeat(2.0), &options);
+    match limited {
+        Err(ArmError::NoConvergence { .. }) => {}
+        Ok(q) => assert!(inside(&q), "{q}"),
+        other => panic!("{other:?}"),
+    }
+    // A joint held at a limit: only q1 free, the others pinned to [0.2, 0.2].
+    let pinned: [(f64, f64); 6] =
+        core::array::from_fn(|i| if i == 0 { (-10.0, 10.0) } else { (0.2, 0.2) });
+    let q_pinned = SVector::<f64, 6>::from_fn(|i, _| if i == 0 { 1.0 } else { 0.2 });
+    let goal = Point2::from(arm.tip_pose(&q_pinned).translation.vector);
+    let q = arm
+        .inverse_kinematics_near(
+            &IkTarget::Position(goal),
+            &SVector::zeros(),
+            &DlsOptions {
+                limits: Some(pinned),
+                ..DlsOptions::default()
+            },
+        )
+        .unwrap();
+    assert!(
+        q.iter().skip(1).all(|a| *a == 0.2) && angle_gap(q[0], 1.0) < 1e-9,
+        "{q}"
+    );
+    // Bad limits are errors.
+    let mut reversed = limits;
+    reversed[2] = (1.0, -1.0);
+    assert_eq!(
+        arm.inverse_kinematics_near(
+            &folded,
+            &SVector::zeros(),
+            &DlsOptions {
+                limits: Some(reversed),
+                ..DlsOptions::default()
+            }
+        ),
+        Err(ArmError::OutOfRange {
+            what: "joint limits",
+            link: Some(2),
+            value: 1.0
+        })
+    );
+    let mut nan = limits;
+    nan[4].1 = f64::NAN;
+    assert_eq!(
+        arm.inverse_kinematics_near(
+            &folded,
+            &SVector::zeros(),
+            &DlsOptions {
+                limits: Some(nan),
+                ..DlsOptions::default()
+            }
+        ),
+        Err(ArmError::NonFinite {
+            argument: "options"
+        })
+    );
+}
+
+#[test]
+fn dexterous_workspace_of_derived_arms() {
+    use planar_arm::kinematics::DexterousWorkspaceExt;
+    let mut rng = Rng(33);
+    fn check<A>(arm: &A, rng: &mut Rng)
+    where
+        A: PlanarArm<3> + ClosedFormIk<3, Target = Isometry2<f64>>,
+    {
+        // The method agrees with the brute-force sampling over orientations.
+        assert_eq!(
+            arm.dexterous_workspace(),
+            dexterous_by_brute_force(arm, rng)
+        );
+    }
+    check(&Paper3::default(), &mut rng);
+    check(&Unequal3::default(), &mut rng);
+    check(&Mixed3::default(), &mut rng);
+}
+
+fn skeleton_chain<A: PlanarArm<N>, const N: usize>(arm: &A, rng: &mut Rng) {
+    let l = lengths(arm);
+    for _ in 0..100 {
+        let q = rng.config::<N>();
+        let skeleton = planar_arm::kinematics::Skeleton::of(arm, &q);
+        let points: Vec<Point2<f64>> = skeleton.points().collect();
+        assert_eq!(points.len(), N + 1);
+        assert_eq!(skeleton.points().len(), N + 1);
+        assert_eq!(points[0], Point2::origin());
+        assert_eq!(&points[..N], &arm.joint_positions(&q)[..]);
+        // The last point is the tip of the independent forward kinematics; each segment is a link.
+        let (tip, _) = fk(&l, &q);
+        assert!((points[N].coords - tip).norm() <= 1e-12);
+        let mut phi = 0.0;
+        for (k, (start, end)) in skeleton.links().enumerate() {
+            phi += q[k];
+            assert!(((end - start) - Vector2::new(phi.cos(), phi.sin()) * l[k]).norm() <= 1e-12);
+            assert_eq!(
+                (Some(start), Some(end)),
+                (skeleton.get(k), skeleton.get(k + 1))
+            );
+        }
+        assert_eq!(skeleton.get(N + 1), None);
+        assert_eq!(skeleton.points().next_back(), Some(skeleton.tip));
+    }
+}
+
+#[test]
+fn skeleton_gives_every_joint_and_the_tip() {
+    let mut rng = Rng(34);
+    every_arm!(skeleton_chain, rng);
+}
+
+#[test]
+fn arms_of_one_size_share_a_vec_of_trait_objects() {
+    use planar_arm::kinematics::DynArm;
+    let arms: Vec<Box<dyn DynArm<2>>> =
+        vec![Box::new(Paper2::default()), Box::new(Unequal2::default())];
+    let mut rng = Rng(35);
+    let (paper, unequal) = (Paper2::default(), Unequal2::default());
+    for _ in 0..50 {
+        let (q, qd, qdd) = (rng.config::<2>(), rng.config::<2>(), rng.config::<2>());
+        // Through the box: the same numbers as the concrete arm's own methods.
+        assert_eq!(
+            arms[0].inverse_dynamics(&q, &qd, &qdd),
+            paper.inverse_dynamics(&q, &qd, &qdd)
+        );
+        assert_eq!(
+            arms[1].inverse_dynamics(&q, &qd, &qdd),
+            unequal.inverse_dynamics(&q, &qd, &qdd)
+        );
+        assert_eq!(arms[1].mass_matrix(&q), unequal.mass_matrix(&q));
+        assert_eq!(arms[1].tip_pose(&q), unequal.tip_pose(&q));
+        assert_eq!(arms[1].jacobian(&q), unequal.jacobian(&q));
+        for arm in &arms {
+            let tau = arm.inverse_dynamics(&q, &qd, &qdd);
+            assert!((arm.forward_dynamics(&q, &qd, &tau) - qdd).norm() < 1e-9);
+            let (tip, _) = fk(&arm.links().map(|l| l.length), &q);
+            assert!((arm.tip_pose(&q).translation.vector - tip).norm() < 1e-12);
+            assert_eq!(
+                arm.skeleton(&q).tip,
+                Point2::from(arm.tip_pose(&q).translation.vector)
+            );
+        }
+    }
+    assert_eq!(arms[1].workspace(), unequal.workspace());
+    // Send + Sync arms box as such, for threads.
+    let shared: Box<dyn DynArm<2> + Send + Sync> = Box::new(Paper2::default());
+    assert_eq!(
+        shared.gravity(&Vector2::zeros()),
+        paper.gravity(&Vector2::zeros())
+    );
+}
+
+#[test]
+fn error_messages_name_the_target_with_rounded_numbers() {
+    // Two links, 0.001 beyond the outer circle 2.3 (computed, so not exactly 0.001).
+    let arm = Unequal2::default();
+    let e = arm
+        .inverse_kinematics(&Point2::new(2.301, 0.0))
+        .unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "target (2.301, 0) is 0.001 beyond the reachable annulus 0.7 ..= 2.3 (it lies 2.301 from the base)"
+    );
+    // Three links: the message names the tip pose asked for, then the wrist it implies.
+    let arm = Unequal3::default();
+    let e = arm
+        .inverse_kinematics(&Isometry2::new(Vector2::new(1.9, 0.0), 0.0))
+        .unwrap_err();
+    match e {
+        ArmError::Unreachable {
+            target,
+            orientation,
+            radius,
+            ..
+        } => {
+            assert_eq!((target, orientation), ([1.9, 0.0], Some(0.0)));
+            assert!((radius - 1.65).abs() < 1e-12);
+        }
+        ref other => panic!("{other:?}"),
+    }
+    assert_eq!(
+        e.to_string(),
+        "target (1.9, 0) with the last link at 0 rad is unreachable: its wrist point lies 1.65 from \
+         the base, 0.05 beyond the annulus 0.4 ..= 1.6 the links before the last reach"
+    );
 }
 
 // ---------------------------------------------------------------------------------------------

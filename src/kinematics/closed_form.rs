@@ -122,7 +122,7 @@ pub fn ik2(l1: f64, l2: f64, target: &Point2<f64>) -> Result<[SVector<f64, 2>; 2
     check_lengths(&[l1, l2])?;
     let (x, y) = target_coordinates(target)?;
     let (a1, a2) = (l1.abs(), l2.abs());
-    annulus_check(x.hypot(y), (a1 - a2).abs(), a1 + a2)?;
+    annulus_check(x.hypot(y), (a1 - a2).abs(), a1 + a2, [x, y])?;
     Ok(ik2_signed(l1, l2, ik2_unsigned(a1, a2, x, y)))
 }
 
@@ -152,7 +152,7 @@ pub fn ik2_equal(l: f64, target: &Point2<f64>) -> Result<[SVector<f64, 2>; 2], A
     check_lengths(&[l])?;
     let (x, y) = target_coordinates(target)?;
     let a = l.abs();
-    annulus_check(x.hypot(y), 0.0, 2.0 * a)?;
+    annulus_check(x.hypot(y), 0.0, 2.0 * a, [x, y])?;
     let solutions = if a == 0.0 {
         [(0.0, 0.0); 2]
     } else {
@@ -179,8 +179,9 @@ pub fn ik2_equal(l: f64, target: &Point2<f64>) -> Result<[SVector<f64, 2>; 2], A
 ///
 /// # Errors
 /// [`ArmError::NonFinite`] for NaN or infinite arguments; [`ArmError::Unreachable`] when the
-/// wrist point lies outside the two-link annulus, with `radius` the wrist's distance from the
-/// base and `inner`, `outer` the two-link radii.
+/// wrist point lies outside the two-link annulus, with `target` and `orientation` the pose
+/// asked for, `radius` the wrist's distance from the base and `inner`, `outer` the two-link
+/// radii.
 ///
 /// # Example
 /// ```
@@ -210,6 +211,8 @@ pub fn ik3(
     if !(wrist.x.is_finite() && wrist.y.is_finite()) {
         let (a1, a2) = (l1.abs(), l2.abs());
         return Err(ArmError::Unreachable {
+            target: [t.x, t.y],
+            orientation: Some(phi),
             radius: f64::INFINITY,
             inner: (a1 - a2).abs(),
             outer: a1 + a2,
@@ -217,10 +220,28 @@ pub fn ik3(
         });
     }
     let solutions = if l1 == l2 {
-        ik2_equal(l1, &wrist)?
+        ik2_equal(l1, &wrist)
     } else {
-        ik2(l1, l2, &wrist)?
+        ik2(l1, l2, &wrist)
     };
+    // The caller asked for the tip, not the wrist: name the tip pose in the error.
+    let solutions = solutions.map_err(|e| match e {
+        ArmError::Unreachable {
+            radius,
+            inner,
+            outer,
+            distance,
+            ..
+        } => ArmError::Unreachable {
+            target: [t.x, t.y],
+            orientation: Some(phi),
+            radius,
+            inner,
+            outer,
+            distance,
+        },
+        other => other,
+    })?;
     Ok(solutions.map(|q| SVector::<f64, 3>::new(q[0], q[1], wrap_angle(phi - q[0] - q[1]))))
 }
 
@@ -362,11 +383,14 @@ mod tests {
                 let r = outer * (1.0 + d);
                 match ik2(l1, l2, &Point2::new(0.0, -r)) {
                     Err(ArmError::Unreachable {
+                        target,
+                        orientation,
                         radius,
                         inner: i,
                         outer: o,
                         distance,
                     }) => {
+                        assert_eq!((target, orientation), ([0.0, -r], None));
                         assert_eq!((radius, i, o), (r, inner, outer));
                         assert!((distance - (r - outer)).abs() <= 1e-15 * r && distance > 0.0);
                     }
@@ -386,6 +410,8 @@ mod tests {
                 assert_eq!(
                     ik2(l1, l2, &Point2::origin()),
                     Err(ArmError::Unreachable {
+                        target: [0.0, 0.0],
+                        orientation: None,
                         radius: 0.0,
                         inner,
                         outer,
@@ -452,12 +478,17 @@ mod tests {
                         }
                     }
                     Err(ArmError::Unreachable {
+                        target: asked,
+                        orientation,
                         radius,
                         inner: i,
                         outer: o,
                         distance,
                     }) => {
                         refused += 1;
+                        // The error names the tip pose asked for, not the wrist.
+                        assert_eq!(asked, [x, y]);
+                        assert!(angle_gap(orientation.unwrap(), phi) < 1e-15);
                         assert!(wrist < inner || wrist > outer);
                         assert!((radius - wrist).abs() < 1e-12 * reach);
                         assert_eq!((i, o), (inner, outer));

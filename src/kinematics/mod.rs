@@ -25,18 +25,27 @@
 //! turned by pi); the derive macro only passes positive ones.
 
 mod closed_form;
+mod dyn_arm;
 mod manipulability;
 mod numeric;
+mod skeleton;
 mod statics;
 #[cfg(test)]
 mod test_support;
 mod workspace;
 
 pub use closed_form::{ik2, ik2_equal, ik3, ClosedFormIk};
+pub use dyn_arm::DynArm;
 pub use manipulability::{is_singular, manipulability};
-pub use numeric::{solve_dls, DlsOptions, IkTarget, DLS_MAX_STEP};
-pub use statics::{tip_force2, tip_wrench3, TipForce, TipWrench, SINGULAR_THRESHOLD};
-pub use workspace::{DexterousWorkspace, Workspace};
+pub use numeric::{
+    inverse_kinematics_near, reachable_target, solve_dls, DlsOptions, IkTarget, DLS_MAX_STEP,
+};
+pub use skeleton::Skeleton;
+pub use statics::{
+    inverse_statics, tip_force2, tip_wrench3, InverseStatics, RedundantTipWrench, StaticWrench,
+    TipForce, TipWrench, SINGULAR_THRESHOLD, UNBALANCED_TOLERANCE,
+};
+pub use workspace::{DexterousWorkspace, DexterousWorkspaceExt, Workspace};
 
 use core::f64::consts::{PI, TAU};
 
@@ -91,14 +100,30 @@ fn check_vector<const N: usize>(
     }
 }
 
-/// `Ok` when `radius` lies in `inner ..= outer` up to `REACH_TOLERANCE * outer`.
+/// `Ok` when `radius` lies in `inner ..= outer` up to `REACH_TOLERANCE * outer`; the error
+/// names `target`, the point the caller asked for, which is the point at `radius` unless the
+/// caller replaces it.
 #[inline]
-fn annulus_check(radius: f64, inner: f64, outer: f64) -> Result<(), ArmError> {
+fn annulus_check(radius: f64, inner: f64, outer: f64, target: [f64; 2]) -> Result<(), ArmError> {
+    annulus_check_with_slack(radius, inner, outer, REACH_TOLERANCE * outer, target, None)
+}
+
+#[inline]
+fn annulus_check_with_slack(
+    radius: f64,
+    inner: f64,
+    outer: f64,
+    slack: f64,
+    target: [f64; 2],
+    orientation: Option<f64>,
+) -> Result<(), ArmError> {
     // How far outside the annulus, beyond the outer circle or inside the hole (at most one
     // of the two is positive).
     let distance = (radius - outer).max(inner - radius);
-    if distance > REACH_TOLERANCE * outer {
+    if distance > slack {
         return Err(ArmError::Unreachable {
+            target,
+            orientation,
             radius,
             inner,
             outer,
@@ -169,7 +194,7 @@ mod tests {
 
             let l = [1.0, 1.0, 1.0, 1.0];
             let seed = SVector::<f64, 4>::repeat(0.3);
-            let solve = |target: IkTarget, seed: &SVector<f64, 4>, options: &DlsOptions| {
+            let solve = |target: IkTarget, seed: &SVector<f64, 4>, options: &DlsOptions<4>| {
                 solve_dls(
                     |q| pose_of(&l, q),
                     |q| jacobian(&l, q),
@@ -246,6 +271,19 @@ mod tests {
             prop_assert!(clean(&r));
             if let Ok((f, torque)) = r {
                 prop_assert!(!f.iter().any(|v| v.is_nan()) && !torque.is_nan());
+            }
+            for r in [
+                inverse_statics(&l, &Vector3::from(p), &Vector3::from(t)).map(|w| (w.force, w.torque, w.residual.amax())),
+                inverse_statics(&[l[0], l[1], l[2], p[2]], &SVector::<f64, 4>::new(p[0], p[1], t[0], t[1]), &SVector::<f64, 4>::new(t[2], l[1], p[0], t[0])).map(|w| (w.force, w.torque, w.residual.amax())),
+            ] {
+                prop_assert!(clean(&r));
+                if let Ok((f, torque, residual)) = r {
+                    prop_assert!(f.iter().all(|v| v.is_finite()) && torque.is_finite() && residual.is_finite());
+                }
+            }
+            for target in [IkTarget::Position(target), IkTarget::Pose(Isometry2::new(Vector2::new(p[0], p[1]), t[0]))] {
+                let r = reachable_target(&l, &target);
+                prop_assert!(clean(&r));
             }
             let w = Workspace::of_lengths(&l);
             prop_assert!(!w.inner_radius().is_nan() && !w.outer_radius().is_nan() && !w.area().is_nan());

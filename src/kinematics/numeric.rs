@@ -1,8 +1,12 @@
 //! Damped-least-squares (numeric) inverse kinematics for any number of links.
 
-use nalgebra::{Isometry2, Matrix2, Matrix3, Point2, SMatrix, SVector, Vector3};
+use nalgebra::{Isometry2, Matrix2, Matrix3, Point2, SMatrix, SVector, Vector2, Vector3};
+#[cfg(not(feature = "std"))]
+use num_traits::Float as _;
 
-use super::{check_vector, wrap_angle};
+use super::{
+    annulus_check_with_slack, check_lengths, check_vector, wrap_angle, Workspace, REACH_TOLERANCE,
+};
 use crate::ArmError;
 
 /// Largest Euclidean norm, in radians, of one joint step taken by [`solve_dls`].
@@ -22,27 +26,61 @@ pub enum IkTarget {
 
 /// Settings of [`solve_dls`].
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct DlsOptions {
+pub struct DlsOptions<const N: usize> {
     /// The most iterations (each one Jacobian and one forward-kinematics evaluation).
     pub max_iterations: usize,
     /// Converged when the error norm is at most this: metres for a position; for a pose the
     /// norm of (dx, dy, dphi), mixing metres and radians.
     pub tolerance: f64,
     /// The initial damping `lambda`. It adapts as in Levenberg-Marquardt: halved (down to a
-    /// thousandth of this value) after a step that lowers the error, quadrupled after one that
+    /// millionth of this value) after a step that lowers the error, quadrupled after one that
     /// does not.
     pub damping: f64,
+    /// Joint limits `(lower, upper)` in radians for each joint, MuJoCo's `range`; `None` (the
+    /// default) leaves every joint free. The limits apply to the raw angles (not wrapped, so
+    /// `(-4.0, 4.0)` allows a little more than one turn); an infinite bound is no bound. The
+    /// seed is first clamped into them, every iterate stays inside them (a joint at a limit
+    /// that the step pushes outward is held there and the step recomputed for the others),
+    /// and the result lies inside them. A target reachable only outside the limits gives
+    /// [`ArmError::NoConvergence`].
+    pub limits: Option<[(f64, f64); N]>,
 }
 
-impl Default for DlsOptions {
-    /// 200 iterations, tolerance `1e-10`, initial damping `0.05`.
+impl<const N: usize> Default for DlsOptions<N> {
+    /// 200 iterations, tolerance `1e-10`, initial damping `0.05`, no joint limits.
     fn default() -> Self {
         Self {
             max_iterations: 200,
             tolerance: 1e-10,
             damping: 0.05,
+            limits: None,
         }
     }
+}
+
+/// The joint limits of `options`, checked: `Err` for NaN bounds (`NonFinite`, `"options"`) or a
+/// lower bound above the upper one (`OutOfRange`, `"joint limits"`, the lower bound).
+fn checked_limits<const N: usize>(
+    options: &DlsOptions<N>,
+) -> Result<Option<[(f64, f64); N]>, ArmError> {
+    let Some(limits) = options.limits else {
+        return Ok(None);
+    };
+    for (joint, &(lower, upper)) in limits.iter().enumerate() {
+        if lower.is_nan() || upper.is_nan() {
+            return Err(ArmError::NonFinite {
+                argument: "options",
+            });
+        }
+        if lower > upper {
+            return Err(ArmError::OutOfRange {
+                what: "joint limits",
+                link: Some(joint),
+                value: lower,
+            });
+        }
+    }
+    Ok(Some(limits))
 }
 
 /// The task-space error `target - pose` (orientation error wrapped to (-pi, pi], zero for a
@@ -141,18 +179,10 @@ pub fn solve_dls<const N: usize>(
     jacobian: impl Fn(&SVector<f64, N>) -> SMatrix<f64, 3, N>,
     target: &IkTarget,
     seed: &SVector<f64, N>,
-    options: &DlsOptions,
+    options: &DlsOptions<N>,
 ) -> Result<SVector<f64, N>, ArmError> {
     check_vector(seed, "seed")?;
-    let target_finite = match target {
-        IkTarget::Position(p) => p.x.is_finite() && p.y.is_finite(),
-        IkTarget::Pose(pose) => {
-            let v = pose.translation.vector;
-            let c = pose.rotation.complex();
-            v.x.is_finite() && v.y.is_finite() && c.re.is_finite() && c.im.is_finite()
-        }
-    };
-    if !target_finite {
+    if !target_is_finite(target) {
         return Err(ArmError::NonFinite { argument: "target" });
     }
     if !(options.tolerance.is_finite() && options.damping.is_finite()) {
@@ -160,28 +190,57 @@ pub fn solve_dls<const N: usize>(
             argument: "options",
         });
     }
+    let limits = checked_limits(options)?;
+    let clamp = |q: SVector<f64, N>| match &limits {
+        Some(limits) => SVector::from_fn(|i, _| q[i].clamp(limits[i].0, limits[i].1)),
+        None => q,
+    };
     let pose = matches!(target, IkTarget::Pose(_));
-    let floor = options.damping.abs() * 1e-3;
+    // The floor is low enough for the slow, singular approach to a target on the outer
+    // boundary (stretched arm, error quadratic in the angles), where a floor of 1e-3 of the
+    // damping stalled a six-link arm at 1.3e-10.
+    let floor = options.damping.abs() * 1e-6;
     let mut lambda = options.damping.abs();
-    let mut q = *seed;
+    let mut q = clamp(*seed);
     let mut error = task_error(target, &fk(&q))?;
     let mut residual = error.norm();
     let mut iterations = 0;
     while iterations < options.max_iterations && residual > options.tolerance {
         iterations += 1;
-        let j = jacobian(&q);
+        let mut j = jacobian(&q);
         if !j.iter().all(|x| x.is_finite()) {
             return Err(ArmError::NonFinite {
                 argument: "jacobian",
             });
         }
         let mut accepted = false;
-        if let Some(mut step) = dls_step(&j, &error, lambda, pose) {
+        let mut step = dls_step(&j, &error, lambda, pose);
+        if let Some(limits) = &limits {
+            // Hold the joints that sit at a limit and would step beyond it; the others take
+            // the step recomputed without them (at most N rounds: each holds one more joint).
+            for _ in 0..N {
+                let Some(current) = step else { break };
+                let mut held = false;
+                for i in 0..N {
+                    let outward = (q[i] <= limits[i].0 && current[i] < 0.0)
+                        || (q[i] >= limits[i].1 && current[i] > 0.0);
+                    if outward && j.column(i).iter().any(|x| *x != 0.0) {
+                        j.column_mut(i).fill(0.0);
+                        held = true;
+                    }
+                }
+                if !held {
+                    break;
+                }
+                step = dls_step(&j, &error, lambda, pose);
+            }
+        }
+        if let Some(mut step) = step {
             let norm = step.norm();
             if norm > DLS_MAX_STEP {
                 step *= DLS_MAX_STEP / norm;
             }
-            let candidate = q + step;
+            let candidate = clamp(q + step);
             let candidate_error = task_error(target, &fk(&candidate))?;
             let candidate_residual = candidate_error.norm();
             if candidate_residual < residual {
@@ -208,6 +267,123 @@ pub fn solve_dls<const N: usize>(
             residual,
         })
     }
+}
+
+fn target_is_finite(target: &IkTarget) -> bool {
+    match target {
+        IkTarget::Position(p) => p.x.is_finite() && p.y.is_finite(),
+        IkTarget::Pose(pose) => {
+            let v = pose.translation.vector;
+            let c = pose.rotation.complex();
+            v.x.is_finite() && v.y.is_finite() && c.re.is_finite() && c.im.is_finite()
+        }
+    }
+}
+
+/// Checks that an arm of links of lengths `lengths` can reach `target`, and moves a target that
+/// lies outside the work-space by no more than the tolerance onto its boundary.
+///
+/// A position must lie in the [`Workspace`] annulus of all the links. A pose (the tip at `p`,
+/// the last link at angle `phi`) is reachable exactly when its wrist point
+/// `p - l_N (cos phi, sin phi)`, where the last joint must be, lies in the annulus of the links
+/// before the last; that is what is checked. Points outside by at most
+/// [`REACH_TOLERANCE`]` * sum |l|` count as on the boundary (the closed forms' rule) and are
+/// moved radially onto it, so that a solver can meet a tight tolerance there.
+///
+/// # Errors
+/// [`ArmError::NonFinite`] for NaN or infinite lengths (`"lengths"`) or targets (`"target"`);
+/// [`ArmError::Unreachable`] naming the target as given, the radius checked (the target's, or
+/// the wrist's for a pose) and the annulus.
+///
+/// # Example
+/// ```
+/// use planar_arm::kinematics::{reachable_target, IkTarget};
+/// use planar_arm::nalgebra::Point2;
+/// use planar_arm::ArmError;
+///
+/// let lengths = [1.0, 0.5, 0.5];
+/// let far = IkTarget::Position(Point2::new(0.0, 2.5));
+/// assert!(matches!(
+///     reachable_target(&lengths, &far),
+///     Err(ArmError::Unreachable { distance, .. }) if (distance - 0.5).abs() < 1e-15
+/// ));
+/// let edge = IkTarget::Position(Point2::new(0.0, 2.0 + 1e-12));
+/// assert_eq!(reachable_target(&lengths, &edge), Ok(IkTarget::Position(Point2::new(0.0, 2.0))));
+/// ```
+pub fn reachable_target<const N: usize>(
+    lengths: &[f64; N],
+    target: &IkTarget,
+) -> Result<IkTarget, ArmError> {
+    check_lengths(lengths)?;
+    if !target_is_finite(target) {
+        return Err(ArmError::NonFinite { argument: "target" });
+    }
+    let all = Workspace::of_lengths(lengths);
+    let slack = REACH_TOLERANCE * all.outer_radius();
+    // The point that must lie in `annulus`, and how to rebuild the target from it.
+    let (point, annulus, orientation) = match target {
+        IkTarget::Position(p) => (p.coords, all, None),
+        IkTarget::Pose(pose) => {
+            let last = lengths.last().map_or(0.0, |l| *l);
+            let turn = pose.rotation.complex();
+            let hand = Vector2::new(turn.re, turn.im) * last;
+            let before = Workspace::of_lengths(&lengths[..N.saturating_sub(1)]);
+            (pose.translation.vector - hand, before, Some((pose, hand)))
+        }
+    };
+    let radius = point.norm();
+    let asked = match target {
+        IkTarget::Position(p) => [p.x, p.y],
+        IkTarget::Pose(pose) => [pose.translation.vector.x, pose.translation.vector.y],
+    };
+    let (inner, outer) = (annulus.inner_radius(), annulus.outer_radius());
+    annulus_check_with_slack(
+        radius,
+        inner,
+        outer,
+        slack,
+        asked,
+        orientation.map(|(pose, _)| pose.rotation.angle()),
+    )?;
+    // Not `clamp`, which panics should rounding ever leave inner > outer.
+    let onto = radius.max(inner).min(outer);
+    if onto == radius {
+        return Ok(*target);
+    }
+    let moved = if radius > 0.0 {
+        point * (onto / radius)
+    } else {
+        Vector2::new(onto, 0.0)
+    };
+    Ok(match orientation {
+        None => IkTarget::Position(Point2::from(moved)),
+        Some((pose, hand)) => {
+            IkTarget::Pose(Isometry2::from_parts((moved + hand).into(), pose.rotation))
+        }
+    })
+}
+
+/// [`PlanarArm::inverse_kinematics_near`](crate::PlanarArm::inverse_kinematics_near): the
+/// reach check of [`reachable_target`] on the arm's link lengths, then [`solve_dls`] on its
+/// generated tip pose and Jacobian.
+///
+/// # Errors
+/// As [`reachable_target`] and [`solve_dls`].
+pub fn inverse_kinematics_near<A: crate::PlanarArm<N> + ?Sized, const N: usize>(
+    arm: &A,
+    target: &IkTarget,
+    seed: &SVector<f64, N>,
+    options: &DlsOptions<N>,
+) -> Result<SVector<f64, N>, ArmError> {
+    check_vector(seed, "seed")?;
+    let target = reachable_target(&arm.links().map(|l| l.length), target)?;
+    solve_dls(
+        |q| arm.tip_pose(q),
+        |q| arm.jacobian(q),
+        &target,
+        seed,
+        options,
+    )
 }
 
 #[cfg(test)]
@@ -347,7 +523,7 @@ mod tests {
             } else {
                 IkTarget::Position(Point2::new(p[0], p[1]))
             };
-            let options = DlsOptions { max_iterations, tolerance, damping };
+            let options = DlsOptions { max_iterations, tolerance, damping, limits: None };
             let r = solve_dls(
                 |q| pose_of(&lengths, q),
                 |q| jacobian(&lengths, q),

@@ -1,11 +1,15 @@
-//! Inverse statics: the tip force (two links) or wrench (three links) that the joint torques
-//! hold in balance.
+//! Inverse statics: the tip force (two links) or wrench (three or more links) that the joint
+//! torques hold in balance.
+//!
+//! Every function here takes the sine and cosine of each raw joint angle and composes the
+//! absolute angles by the angle-sum formulas, never wrapping or summing angles first, so the
+//! results are as accurate at `q = 1e15` as at `q = 1`.
 
 use nalgebra::{SVector, Vector2};
 #[cfg(not(feature = "std"))]
 use num_traits::Float as _;
 
-use super::{check_lengths, check_vector, wrap_angle};
+use super::{check_lengths, check_vector};
 use crate::ArmError;
 
 /// Singularity threshold of the inverse statics: the configuration counts as singular when
@@ -63,10 +67,12 @@ fn statics_singular(l1: f64, l2: f64, s2: f64) -> ArmError {
 /// ```
 ///
 /// (the paper's formula, which is correct), evaluated as
-/// `u = (c12 (tau1 - tau2) / l1 - c1 tau2 / l2) / s2` and likewise for `v`.
+/// `u = (c12 (tau1 - tau2) / l1 - c1 tau2 / l2) / s2` and likewise for `v`, with `c12`, `s12`
+/// composed from the sines and cosines of `q1` and `q2` (accurate for any finite angle).
 ///
 /// # Errors
-/// [`ArmError::NonFinite`] (`"lengths"`, `"q"`, `"tau"`) for NaN or infinite arguments;
+/// [`ArmError::NonFinite`] (`"lengths"`, `"q"`, `"tau"`) for NaN or infinite arguments, and
+/// `"result"` when finite arguments give a force beyond `f64::MAX`;
 /// [`ArmError::Singular`] when `|sin q2| < SINGULAR_THRESHOLD` (see [`SINGULAR_THRESHOLD`]) or a
 /// length is zero: the links are parallel and the torques cannot balance a force along them.
 ///
@@ -91,10 +97,9 @@ pub fn tip_force2(
     check_lengths(&[l1, l2])?;
     check_vector(q, "q")?;
     check_vector(tau, "tau")?;
-    let (q1, q2) = (wrap_angle(q[0]), wrap_angle(q[1]));
-    let (s1, c1) = q1.sin_cos();
-    let (s12, c12) = (q1 + q2).sin_cos();
-    let s2 = q2.sin();
+    let (s1, c1) = q[0].sin_cos();
+    let (s2, c2) = q[1].sin_cos();
+    let (s12, c12) = angle_sum((s1, c1), (s2, c2));
     if s2.abs() < SINGULAR_THRESHOLD || l1 == 0.0 || l2 == 0.0 {
         return Err(statics_singular(l1, l2, s2));
     }
@@ -109,7 +114,26 @@ pub fn tip_force2(
     if force.iter().any(|f| f.is_nan()) {
         return Err(statics_singular(l1, l2, s2));
     }
+    finite_result(force.iter().copied())?;
     Ok(force)
+}
+
+/// `(sin, cos)` of `a + b` from those of `a` and `b`. Summing the angles first would round
+/// the sum (by up to 0.06 rad at `|q| = 1e15`); the sine and cosine of each raw angle are
+/// accurate for any finite angle (the standard library and `libm` reduce arguments exactly).
+#[inline]
+pub(super) fn angle_sum((sa, ca): (f64, f64), (sb, cb): (f64, f64)) -> (f64, f64) {
+    (sa * cb + ca * sb, ca * cb - sa * sb)
+}
+
+/// `Err(NonFinite { argument: "result" })` when finite input overflowed to an infinity.
+#[inline]
+fn finite_result(values: impl IntoIterator<Item = f64>) -> Result<(), ArmError> {
+    if values.into_iter().all(f64::is_finite) {
+        Ok(())
+    } else {
+        Err(ArmError::NonFinite { argument: "result" })
+    }
 }
 
 /// Inverse statics of a three-link arm: the force `F = (u, v)` and torque `T` the tip exerts
@@ -132,8 +156,8 @@ pub fn tip_force2(
 /// `u = (c12 a - c1 b) / s2`, `v = (s12 a - s1 b) / s2`, `T = tau3 + l3 (s3 a - s23 b) / s2`.
 ///
 /// # Errors
-/// As [`tip_force2`]: [`ArmError::NonFinite`] or [`ArmError::Singular`] when
-/// `|sin q2| < SINGULAR_THRESHOLD`.
+/// As [`tip_force2`]: [`ArmError::NonFinite`] (also `"result"` for an overflowing wrench) or
+/// [`ArmError::Singular`] when `|sin q2| < SINGULAR_THRESHOLD`.
 ///
 /// # Example
 /// ```
@@ -156,12 +180,11 @@ pub fn tip_wrench3(
     check_lengths(&[l1, l2, l3])?;
     check_vector(q, "q")?;
     check_vector(tau, "tau")?;
-    let (q1, q2, q3) = (wrap_angle(q[0]), wrap_angle(q[1]), wrap_angle(q[2]));
-    let (s1, c1) = q1.sin_cos();
-    let (s12, c12) = (q1 + q2).sin_cos();
-    let s2 = q2.sin();
-    let s3 = q3.sin();
-    let s23 = (q2 + q3).sin();
+    let (s1, c1) = q[0].sin_cos();
+    let (s2, c2) = q[1].sin_cos();
+    let (s3, c3) = q[2].sin_cos();
+    let (s12, c12) = angle_sum((s1, c1), (s2, c2));
+    let (s23, _) = angle_sum((s2, c2), (s3, c3));
     if s2.abs() < SINGULAR_THRESHOLD || l1 == 0.0 || l2 == 0.0 {
         return Err(statics_singular(l1, l2, s2));
     }
@@ -176,8 +199,353 @@ pub fn tip_wrench3(
     if force.iter().any(|f| f.is_nan()) || torque.is_nan() {
         return Err(statics_singular(l1, l2, s2));
     }
+    finite_result(force.iter().copied().chain([torque]))?;
     Ok((force, torque))
 }
+
+/// Relative tolerance of [`RedundantTipWrench::tip_wrench`]: torques count as balanced by a tip
+/// wrench when the part of them outside the range of `J^T` has norm at most
+/// `UNBALANCED_TOLERANCE * |tau|`. Rounding alone leaves about `1e-16 |tau|` for a
+/// well-conditioned configuration and up to about `1e-7 |tau|` at [`SINGULAR_THRESHOLD`].
+pub const UNBALANCED_TOLERANCE: f64 = 1e-6;
+
+/// The answer of inverse statics for any number of links ([`inverse_statics`]): the tip
+/// wrench that best balances the joint torques, and the torques it leaves unbalanced.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StaticWrench<const N: usize> {
+    /// The force the tip exerts, N, in the base frame.
+    pub force: Vector2<f64>,
+    /// The torque the tip exerts, N m (zero for one and two links, see [`inverse_statics`]).
+    pub torque: f64,
+    /// `tau - J^T (force, torque)`: the joint torques no tip wrench balances, zero up to
+    /// rounding for three links or fewer and for torques that come from a tip wrench. Its norm
+    /// is the least-squares residual.
+    pub residual: SVector<f64, N>,
+}
+
+/// Inverse statics of an arm of `N` revolute links of lengths `lengths`: the tip force
+/// `F = (u, v)` and torque `T` that the joint torques `tau` balance, `J^T (F, T) = tau`, in the
+/// least-squares sense.
+///
+/// - Three links: the unique solution, as [`tip_wrench3`] (to rounding).
+/// - More than three links: `J^T` is `N x 3`, so `N` equations bind three unknowns and only
+///   torques in a three-dimensional subspace come from a tip wrench. The result is the wrench
+///   whose torques `J^T w` come closest to `tau` (Euclidean norm, which is what an estimate of
+///   the external wrench from measured torques wants), with `residual = tau - J^T w`: the
+///   torques that would move the joints without moving the tip. [`RedundantTipWrench`]'s
+///   `tip_wrench` refuses a residual above [`UNBALANCED_TOLERANCE`] instead.
+/// - One and two links: fewer equations than unknowns. As the paper does for two links, the
+///   tip exerts no torque (`T = 0`); two links then give [`tip_force2`]'s force, one link the
+///   force perpendicular to it.
+///
+/// # Singularity
+/// For `N >= 3`, `J^T` loses rank exactly when all joints lie on one line (the columns of `J`
+/// are `(-(y_tip - y_i), x_tip - x_i, 1)`, the tip does not matter). The measure is
+/// `sqrt(det(J J^T))` (the [`manipulability`](super::manipulability), `|l1 l2 sin q2|` for three
+/// links), the threshold `SINGULAR_THRESHOLD * sum_{i < j < N} |l_i l_j|` over the links but the
+/// last (`SINGULAR_THRESHOLD |l1 l2|` for three links, the rule of [`tip_wrench3`]).
+///
+/// Accurate for any finite angle: the absolute angles are composed from the sine and cosine of
+/// each joint angle, never summed. Computed without normal equations (a Gram-Schmidt QR of
+/// `J^T` about the joints' centroid, fixed size, no heap), so near a singularity the error grows
+/// with the condition number of `J^T`, not its square.
+///
+/// # Errors
+/// [`ArmError::NonFinite`] (`"lengths"`, `"q"`, `"tau"`) for NaN or infinite arguments, and
+/// `"result"` when the wrench overflows; [`ArmError::Singular`] as above (for one and two
+/// links: a zero length, or for two links `|sin q2| < SINGULAR_THRESHOLD`).
+///
+/// # Example
+/// ```
+/// use planar_arm::kinematics::inverse_statics;
+/// use planar_arm::nalgebra::{SVector, Vector2};
+///
+/// // Four unit links: joints at (0, 0), (1, 0), (1, 1), (0, 1), the tip back at the base.
+/// let half_pi = std::f64::consts::FRAC_PI_2;
+/// let q = SVector::<f64, 4>::new(0.0, half_pi, half_pi, half_pi);
+/// // The tip pushes along +x with 2 N and exerts 0.5 N m: tau_i = T + (tip - joint_i) x F.
+/// let tau = SVector::<f64, 4>::new(0.5, 0.5, 2.5, 2.5);
+/// let w = inverse_statics(&[1.0; 4], &q, &tau).unwrap();
+/// assert!((w.force - Vector2::new(2.0, 0.0)).norm() < 1e-12 && (w.torque - 0.5).abs() < 1e-12);
+/// assert!(w.residual.norm() < 1e-12);
+/// // Torques that only fold the arm: nothing at the tip balances them.
+/// let fold = SVector::<f64, 4>::new(1.0, -1.0, 1.0, -1.0);
+/// let w = inverse_statics(&[1.0; 4], &q, &fold).unwrap();
+/// assert!(w.residual.norm() > 0.5);
+/// ```
+pub fn inverse_statics<const N: usize>(
+    lengths: &[f64; N],
+    q: &SVector<f64, N>,
+    tau: &SVector<f64, N>,
+) -> Result<StaticWrench<N>, ArmError> {
+    check_lengths(lengths)?;
+    check_vector(q, "q")?;
+    check_vector(tau, "tau")?;
+    let none = SVector::<f64, N>::zeros();
+    match N {
+        0 => Ok(StaticWrench {
+            force: Vector2::zeros(),
+            torque: 0.0,
+            residual: none,
+        }),
+        1 => {
+            let (s, c) = q[0].sin_cos();
+            let l = lengths[0];
+            if l == 0.0 {
+                return Err(ArmError::Singular {
+                    measure: 0.0,
+                    threshold: 0.0,
+                });
+            }
+            // tau = l (c, s) x F; the shortest such F is perpendicular to the link.
+            let force = Vector2::new(-s, c) * (tau[0] / l);
+            finite_result(force.iter().copied())?;
+            Ok(StaticWrench {
+                force,
+                torque: 0.0,
+                residual: none,
+            })
+        }
+        2 => {
+            let force = tip_force2(
+                lengths[0],
+                lengths[1],
+                &Vector2::new(q[0], q[1]),
+                &Vector2::new(tau[0], tau[1]),
+            )?;
+            Ok(StaticWrench {
+                force,
+                torque: 0.0,
+                residual: none,
+            })
+        }
+        _ => redundant_statics(lengths, q, tau),
+    }
+}
+
+/// [`inverse_statics`] for `N >= 3`.
+fn redundant_statics<const N: usize>(
+    lengths: &[f64; N],
+    q: &SVector<f64, N>,
+    tau: &SVector<f64, N>,
+) -> Result<StaticWrench<N>, ArmError> {
+    // Work in units of the longest link and of the largest torque, so nothing below overflows.
+    let reach = lengths.iter().fold(0.0_f64, |m, l| m.max(l.abs()));
+    if reach == 0.0 {
+        return Err(ArmError::Singular {
+            measure: 0.0,
+            threshold: 0.0,
+        });
+    }
+    let mut pair_scale = 0.0;
+    let mut before = 0.0;
+    for l in &lengths[..N - 1] {
+        pair_scale += before * (l.abs() / reach);
+        before += l.abs() / reach;
+    }
+    // Left to right, so that a zero factor wins over an infinite `reach * reach`.
+    let threshold = SINGULAR_THRESHOLD * pair_scale * reach * reach;
+    let singular = |measure: f64| ArmError::Singular { measure, threshold };
+    if SINGULAR_THRESHOLD * pair_scale == 0.0 {
+        // At most one of the links before the last has a length: the joints occupy at most two
+        // points, always on a line.
+        return Err(singular(0.0));
+    }
+    // Joint positions p_i (p_0 at the base) and the tip, the absolute angles composed exactly.
+    let mut joints = [Vector2::<f64>::zeros(); N];
+    let (mut s, mut c) = (0.0, 1.0);
+    let mut at = Vector2::zeros();
+    for k in 0..N {
+        joints[k] = at;
+        (s, c) = angle_sum((s, c), q[k].sin_cos());
+        at += Vector2::new(c, s) * (lengths[k] / reach);
+    }
+    let tip = at;
+    // tau_i = T + d_i x F with d_i = tip - p_i. The column of ones (T) is fitted by centring:
+    // about the centroid p, tau_i - mean(tau) = (p - p_i) x F, and T = mean(tau) - (tip - p) x F.
+    let count = N as f64;
+    let centroid = joints.iter().sum::<Vector2<f64>>() / count;
+    let scale = tau.amax();
+    let t = if scale > 0.0 { tau / scale } else { *tau };
+    let t_mean = t.sum() / count;
+    // (p - p_i) x F = -(p - p_i).y u + (p - p_i).x v: the columns of the 2-unknown problem.
+    let col_u = SVector::<f64, N>::from_fn(|i, _| -(centroid.y - joints[i].y));
+    let col_v = SVector::<f64, N>::from_fn(|i, _| centroid.x - joints[i].x);
+    // Modified Gram-Schmidt with the right-hand side as a third column (backward stable).
+    let r11 = col_u.norm();
+    if r11 == 0.0 {
+        return Err(singular(0.0));
+    }
+    let q1 = col_u / r11;
+    let r12 = q1.dot(&col_v);
+    let rest = col_v - q1 * r12;
+    let r22 = rest.norm();
+    // Compared in units of the longest link, where neither side can overflow or underflow.
+    let relative = count.sqrt() * r11 * r22;
+    let measure = relative * reach * reach;
+    if relative.is_nan() || relative < SINGULAR_THRESHOLD * pair_scale || r22 == 0.0 {
+        return Err(singular(measure));
+    }
+    let q2 = rest / r22;
+    let mut y = t.add_scalar(-t_mean);
+    let b1 = q1.dot(&y);
+    y -= q1 * b1;
+    let b2 = q2.dot(&y);
+    y -= q2 * b2;
+    let v = b2 / r22;
+    let u = (b1 - r12 * v) / r11;
+    let lever = tip - centroid;
+    let torque = t_mean - (lever.x * v - lever.y * u);
+    let force = Vector2::new(u, v) * (scale / reach);
+    let torque = torque * scale;
+    let residual = y * scale;
+    if force.iter().chain([torque].iter()).any(|x| x.is_nan()) {
+        return Err(singular(measure));
+    }
+    finite_result(force.iter().chain(residual.iter()).copied().chain([torque]))?;
+    Ok(StaticWrench {
+        force: if scale > 0.0 { force } else { Vector2::zeros() },
+        torque: if scale > 0.0 { torque } else { 0.0 },
+        residual: if scale > 0.0 {
+            residual
+        } else {
+            SVector::zeros()
+        },
+    })
+}
+
+/// Inverse statics for every arm, from its run-time link lengths: implemented for every
+/// [`PlanarArm<N>`](crate::PlanarArm).
+pub trait InverseStatics<const N: usize> {
+    /// The least-squares tip wrench with the torques it leaves unbalanced: [`inverse_statics`]
+    /// with the lengths of [`links`](crate::PlanarArm::links) (so run-time lengths are read
+    /// at the call).
+    ///
+    /// # Errors
+    /// As [`inverse_statics`].
+    ///
+    /// # Example
+    /// ```
+    /// use planar_arm::kinematics::InverseStatics;
+    /// use planar_arm::prelude::*;
+    ///
+    /// #[derive(PlanarArm)]
+    /// struct Four {
+    ///     #[arm(length = 1, mass = 1)] a: Revolute,
+    ///     #[arm(length = 1, mass = 1)] b: Revolute,
+    ///     #[arm(length = 0.5, mass = 1)] c: Revolute,
+    ///     #[arm(length = 0.5, mass = 1)] d: Revolute,
+    /// }
+    /// let arm = Four { a: Revolute, b: Revolute, c: Revolute, d: Revolute };
+    /// let q = SVector::<f64, 4>::new(0.3, 0.9, -0.4, 1.1);
+    /// let tau = arm.joint_torques(&q, &Vector2::new(1.0, -2.0), 0.25);
+    /// let w = arm.inverse_statics(&q, &tau).unwrap();
+    /// assert!((w.force - Vector2::new(1.0, -2.0)).norm() < 1e-12 && (w.torque - 0.25).abs() < 1e-12);
+    /// assert!(w.residual.norm() < 1e-12);
+    /// ```
+    fn inverse_statics(
+        &self,
+        q: &SVector<f64, N>,
+        tau: &SVector<f64, N>,
+    ) -> Result<StaticWrench<N>, ArmError>;
+}
+
+impl<A: crate::PlanarArm<N> + ?Sized, const N: usize> InverseStatics<N> for A {
+    fn inverse_statics(
+        &self,
+        q: &SVector<f64, N>,
+        tau: &SVector<f64, N>,
+    ) -> Result<StaticWrench<N>, ArmError> {
+        inverse_statics(&self.links().map(|l| l.length), q, tau)
+    }
+}
+
+/// `tip_wrench` for arms of 4 to 64 links, as [`TipWrench`] has it for three: the force and
+/// torque the tip exerts, from the joint torques.
+///
+/// It is a separate trait, implemented for each `PlanarArm<N>` with `4 <= N <= 64` (not for
+/// three links, whose derived [`TipWrench`] it would make ambiguous), so `arm.tip_wrench(&q,
+/// &tau)` reads the same for every arm of three or more links.
+pub trait RedundantTipWrench<const N: usize> {
+    /// The force `F` and torque `T` with `J^T (F, T) = tau`.
+    ///
+    /// With more joints than the three components of a wrench, only torques in the range of
+    /// `J^T` come from a tip wrench: this returns [`inverse_statics`]'s least-squares wrench
+    /// when the torques it leaves unbalanced have norm at most
+    /// `UNBALANCED_TOLERANCE * |tau|` (rounding), and an error otherwise. For the best wrench
+    /// whatever the residual (torques measured with noise), use
+    /// [`InverseStatics::inverse_statics`].
+    ///
+    /// # Errors
+    /// [`ArmError::Unbalanced`] as above; otherwise as [`inverse_statics`]
+    /// ([`ArmError::Singular`] when all joints lie on one line, [`ArmError::NonFinite`]).
+    ///
+    /// # Example
+    /// ```
+    /// use planar_arm::kinematics::RedundantTipWrench;
+    /// use planar_arm::prelude::*;
+    ///
+    /// #[derive(PlanarArm)]
+    /// struct Four {
+    ///     #[arm(length = 1, mass = 1)] a: Revolute,
+    ///     #[arm(length = 1, mass = 1)] b: Revolute,
+    ///     #[arm(length = 0.5, mass = 1)] c: Revolute,
+    ///     #[arm(length = 0.5, mass = 1)] d: Revolute,
+    /// }
+    /// let arm = Four { a: Revolute, b: Revolute, c: Revolute, d: Revolute };
+    /// let q = SVector::<f64, 4>::new(0.3, 0.9, -0.4, 1.1);
+    /// let tau = arm.joint_torques(&q, &Vector2::new(1.0, -2.0), 0.25);
+    /// let (force, torque) = arm.tip_wrench(&q, &tau).unwrap();
+    /// assert!((force - Vector2::new(1.0, -2.0)).norm() < 1e-12 && (torque - 0.25).abs() < 1e-12);
+    /// // Folding torques are balanced by no tip wrench.
+    /// let fold = SVector::<f64, 4>::new(1.0, -1.0, 1.0, -1.0);
+    /// assert!(matches!(arm.tip_wrench(&q, &fold), Err(ArmError::Unbalanced { .. })));
+    /// // Stretched straight, the joints lie on a line.
+    /// let straight = SVector::<f64, 4>::zeros();
+    /// assert!(matches!(arm.tip_wrench(&straight, &tau), Err(ArmError::Singular { .. })));
+    /// ```
+    fn tip_wrench(
+        &self,
+        q: &SVector<f64, N>,
+        tau: &SVector<f64, N>,
+    ) -> Result<(Vector2<f64>, f64), ArmError>;
+}
+
+/// [`RedundantTipWrench::tip_wrench`] for lengths.
+fn balanced_wrench<const N: usize>(
+    lengths: &[f64; N],
+    q: &SVector<f64, N>,
+    tau: &SVector<f64, N>,
+) -> Result<(Vector2<f64>, f64), ArmError> {
+    let w = inverse_statics(lengths, q, tau)?;
+    let (residual, tolerance) = (w.residual.norm(), UNBALANCED_TOLERANCE * tau.norm());
+    if residual > tolerance {
+        return Err(ArmError::Unbalanced {
+            residual,
+            tolerance,
+        });
+    }
+    Ok((w.force, w.torque))
+}
+
+macro_rules! redundant_tip_wrench {
+    ($($n:literal)*) => {$(
+        impl<A: crate::PlanarArm<$n> + ?Sized> RedundantTipWrench<$n> for A {
+            fn tip_wrench(
+                &self,
+                q: &SVector<f64, $n>,
+                tau: &SVector<f64, $n>,
+            ) -> Result<(Vector2<f64>, f64), ArmError> {
+                balanced_wrench(&self.links().map(|l| l.length), q, tau)
+            }
+        }
+    )*};
+}
+
+redundant_tip_wrench!(
+    4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29 30 31 32 33 34 35
+    36 37 38 39 40 41 42 43 44 45 46 47 48 49 50 51 52 53 54 55 56 57 58 59 60 61 62 63 64
+);
 
 #[cfg(test)]
 mod tests {
@@ -328,7 +696,7 @@ mod tests {
         let (l1, l2, l3) = (1.0, 0.5, 0.25);
         for q2 in [0.0, PI, -PI, 1e-12, PI - 1e-12, TAU, 0.5e-9] {
             let expected = Err(ArmError::Singular {
-                measure: l1 * l2 * wrap_angle(q2).sin(),
+                measure: l1 * l2 * f64::sin(q2),
                 threshold: SINGULAR_THRESHOLD * l1 * l2,
             });
             let tau2 = Vector2::new(1.0, -1.0);

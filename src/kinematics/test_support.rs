@@ -100,7 +100,12 @@ pub(super) fn clean(result: &Result<impl Sized, ArmError>) -> bool {
             inner,
             outer,
             distance,
+            ..
         }) => ![radius, inner, outer, distance].iter().any(|v| v.is_nan()) && *distance > 0.0,
+        Err(ArmError::Unbalanced {
+            residual,
+            tolerance,
+        }) => !residual.is_nan() && !tolerance.is_nan(),
         Err(ArmError::Singular { measure, threshold }) => !measure.is_nan() && !threshold.is_nan(),
         Err(ArmError::NoConvergence { residual, .. }) => !residual.is_nan(),
         _ => true,

@@ -43,8 +43,10 @@ impl Workspace {
             longest = longest.max(length.abs());
         }
         Self {
-            // `max` also maps the NaN of an overflowing inf - inf to 0.
-            inner: (2.0 * longest - sum).max(0.0),
+            // The longest minus the others, not `2 longest - sum`, whose `2 longest` overflows
+            // for lengths near f64::MAX (an inner radius of infinity); `max` also maps the NaN
+            // of an overflowing inf - inf to 0.
+            inner: (longest - (sum - longest)).max(0.0),
             outer: sum,
         }
     }
@@ -68,7 +70,13 @@ impl Workspace {
     pub fn contains(&self, point: &Point2<f64>) -> bool {
         point.x.is_finite()
             && point.y.is_finite()
-            && annulus_check(point.x.hypot(point.y), self.inner, self.outer).is_ok()
+            && annulus_check(
+                point.x.hypot(point.y),
+                self.inner,
+                self.outer,
+                [point.x, point.y],
+            )
+            .is_ok()
     }
 
     /// The area, `pi (outer^2 - inner^2)`.
@@ -197,6 +205,41 @@ impl DexterousWorkspace {
         let rho = point.x.hypot(point.y);
         let slack = REACH_TOLERANCE * self.outer2;
         rho + self.last - self.outer2 <= slack && self.inner2 - (rho - self.last).abs() <= slack
+    }
+}
+
+/// [`DexterousWorkspace`] of a derived three-link arm from its own link lengths: implemented for
+/// every [`PlanarArm<3>`](crate::PlanarArm).
+pub trait DexterousWorkspaceExt {
+    /// The points the tip reaches with every orientation of the last link:
+    /// [`DexterousWorkspace::of_lengths`] of the lengths in
+    /// [`links`](crate::PlanarArm::links), read at the call (run-time lengths included).
+    ///
+    /// # Example
+    /// ```
+    /// use planar_arm::kinematics::DexterousWorkspaceExt;
+    /// use planar_arm::prelude::*;
+    ///
+    /// #[derive(PlanarArm)]
+    /// struct Three {
+    ///     #[arm(length = 1, mass = 1)] upper: Revolute,
+    ///     #[arm(length = self.l2, mass = 1)] fore: Revolute,
+    ///     #[arm(length = 0.25, mass = 1)] hand: Revolute,
+    ///     l2: f64,
+    /// }
+    /// let mut arm = Three { upper: Revolute, fore: Revolute, hand: Revolute, l2: 1.0 };
+    /// assert_eq!(arm.dexterous_workspace().disk_radius(), Some(1.75)); // 2 l - l3
+    /// arm.l2 = 0.5;
+    /// let (inner, outer) = arm.dexterous_workspace().annulus().unwrap(); // l3 < |l1 - l2|
+    /// assert!((inner - 0.75).abs() < 1e-15 && (outer - 1.25).abs() < 1e-15);
+    /// ```
+    fn dexterous_workspace(&self) -> DexterousWorkspace;
+}
+
+impl<A: crate::PlanarArm<3> + ?Sized> DexterousWorkspaceExt for A {
+    fn dexterous_workspace(&self) -> DexterousWorkspace {
+        let [l1, l2, l3] = self.links().map(|l| l.length);
+        DexterousWorkspace::of_lengths(l1, l2, l3)
     }
 }
 
