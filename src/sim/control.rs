@@ -206,7 +206,7 @@ pub fn fastest_rate<A: PlanarArm<N> + ?Sized, const N: usize>(
         for _ in 0..200 {
             let y = s * x;
             let norm = y.norm();
-            if !(norm > 0.0) {
+            if norm.is_nan() || norm <= 0.0 {
                 return 0.0;
             }
             value = x.dot(&y) / x.norm_squared();

@@ -364,7 +364,7 @@ impl<'a, A: PlanarArm<N> + ?Sized, const N: usize> TipLine<'a, A, N> {
             let t = duration * f64::from(k) / f64::from(CHECKS);
             let q = line.solve(t)?;
             let measure = arm.manipulability(&q);
-            if !(measure > SINGULAR) {
+            if measure.is_nan() || measure <= SINGULAR {
                 return Err(crate::ArmError::Singular {
                     measure,
                     threshold: SINGULAR,
