@@ -95,6 +95,19 @@
 //! Halving `dt` until the quantity you care about stops changing is the check that always
 //! applies.
 
+//!
+//! [`ComputedTorque`]: crate::sim::ComputedTorque
+//! [`PdGravity`]: crate::sim::PdGravity
+//! [`Rk4`]: crate::sim::Rk4
+//! [`Run`]: crate::sim::Run
+//! [`Run::into_vec`]: crate::sim::Run::into_vec
+//! [`SemiImplicitEuler`]: crate::sim::SemiImplicitEuler
+//! [`SimError`]: crate::sim::SimError
+//! [`State`]: crate::sim::State
+//! [`Variational4`]: crate::sim::Variational4
+//! [`VariationalMidpoint`]: crate::sim::VariationalMidpoint
+//! [`fastest_rate`]: crate::sim::fastest_rate
+
 mod control;
 mod error;
 mod integrate;
