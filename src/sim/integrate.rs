@@ -175,13 +175,15 @@ impl Integrator for SemiImplicitEuler {
 ///
 /// with `p = M(q) qd` the joint momenta and `C^T v = dT/dq` (from the generated Coriolis
 /// matrix: `Mdot = C + C^T`). The equation for `v` is solved by fixed-point iteration from
-/// `v = qd0`, to `tolerance` (rad/s, relative to `1 + |v|`). The map `(q0, p0) -> (q1, p1)` is
+/// `v = qd0`, to `tolerance` (rad/s, relative to `1 + |v|`) or to the rounding floor (the
+/// change stops shrinking below `1e-10 (1 + |v|)`). The map `(q0, p0) -> (q1, p1)` is
 /// symplectic and symmetric, second order: the energy error of a free arm oscillates at O(dt^2)
 /// and does not drift, however long the run (until round-off, which random-walks).
 ///
-/// Cost: each iteration evaluates M, C and g at the midpoint and factors M, and the step
-/// evaluates M twice more (the momenta at both ends). On the paper's two rods at `dt = 10 ms` it
-/// takes 6.25 iterations on average (at most 8), and a step costs 9-12 RK4 steps in the
+/// Cost: each iteration evaluates C, g and the friction at the midpoint and solves with M
+/// there (through the generated forward dynamics at rest, one more g), and the step evaluates M
+/// twice more and solves once more (the momenta at both ends). On the paper's two rods at `dt = 10 ms` it
+/// takes 6.26 iterations on average (at most 8), and a step costs 5-8 RK4 steps in the
 /// dev build (the table in the [module docs](super)). The iteration converges while `dt` times
 /// the fastest rate of the arm stays well below 1; beyond, the step returns
 /// [`SimError::NoConvergence`] instead of a wrong answer.
@@ -214,7 +216,8 @@ impl Integrator for SemiImplicitEuler {
 pub struct VariationalMidpoint {
     /// The most fixed-point iterations per step.
     pub max_iterations: u32,
-    /// Converged when the midpoint rate changes by at most `tolerance (1 + |v|)`, rad/s.
+    /// Converged when the midpoint rate changes by at most `tolerance (1 + |v|)`, rad/s, or
+    /// stops shrinking below `1e-10 (1 + |v|)` (rounding).
     pub tolerance: f64,
 }
 
@@ -253,32 +256,30 @@ impl VariationalMidpoint {
         finite(tau, "tau")?;
         let p0 = arm.mass_matrix(q) * qd;
         let h = 0.5 * dt;
+        let zero = SVector::<f64, N>::zeros();
+        // M(x)^-1 b through the generated forward dynamics at rest, which solve with M's
+        // factorisation in straight-line code: `forward_dynamics(x, 0, b + g(x)) = M(x)^-1 b`
+        // (at rest c = 0 and f = 0).
         let mut v = *qd;
         let mut change = f64::INFINITY;
         for iteration in 1..=self.max_iterations {
             let qm = q + v * h;
             let coriolis = arm.coriolis_matrix(&qm, &v);
-            let force = coriolis.tr_mul(&v) - arm.gravity(&qm) + tau - arm.friction(&v);
-            let mass = arm.mass_matrix(&qm);
-            let Some(m) = mass.cholesky() else {
-                return Err(SimError::NonFinite {
-                    argument: "q",
-                    t: f64::NAN,
-                });
-            };
-            let next = m.solve(&(p0 + force * h));
+            let g = arm.gravity(&qm);
+            // p0 + h (C^T v - g + tau - f) + g, solved against M(qm).
+            let rhs = p0 + (coriolis.tr_mul(&v) + tau - arm.friction(&v)) * h + g * (1.0 - h);
+            let next = arm.forward_dynamics(&qm, &zero, &rhs);
+            let previous = change;
             change = (next - v).amax();
             v = next;
-            if change <= self.tolerance * (1.0 + v.amax()) {
+            let scale = 1.0 + v.amax();
+            // Converged, or at the rounding floor: the change no longer shrinks, and is small.
+            let floor = change >= previous && change <= 1e-10 * scale;
+            if change <= self.tolerance * scale || floor {
                 let q1 = q + v * dt;
-                let p1 = mass * v * 2.0 - p0;
-                let Some(m1) = arm.mass_matrix(&q1).cholesky() else {
-                    return Err(SimError::NonFinite {
-                        argument: "q",
-                        t: f64::NAN,
-                    });
-                };
-                let (q1, qd1) = done(q1, m1.solve(&p1))?;
+                let p1 = arm.mass_matrix(&qm) * v * 2.0 - p0;
+                let qd1 = arm.forward_dynamics(&q1, &zero, &(p1 + arm.gravity(&q1)));
+                let (q1, qd1) = done(q1, qd1)?;
                 return Ok((q1, qd1, iteration));
             }
             if !change.is_finite() {
@@ -315,8 +316,9 @@ impl Integrator for VariationalMidpoint {
 /// What it costs and buys, measured (the table in the [module docs](super), from
 /// `cargo run --example simulate`): on the paper's two rods swinging for 100 s at 10 ms its
 /// energy error stays at 1.7e-6 J from the first ten seconds to the last, where RK4's grows
-/// from 4.8e-7 J to 5.1e-6 J; but a step costs 17-19 RK4 steps, and RK4 with its step
-/// shortened to the same work is far more accurate (1e-12 J) over any horizon one would
+/// from 4.8e-7 J to 5.1e-6 J; but a step costs 24-25 RK4 steps (its three parts take
+/// larger steps, so more iterations each), and RK4 with its step
+/// shortened to the same work is far more accurate (1e-12 J at 100 s) over any horizon one would
 /// simulate. Use it for the absence of drift, not for accuracy per unit of work.
 ///
 /// # Example

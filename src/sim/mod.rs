@@ -46,15 +46,15 @@
 //!
 //! Measured on the paper's two rods swinging freely from `q = (-1, 0.4)` for 100 s at
 //! `dt = 10 ms` (`cargo run --example simulate`, `docs/sim-energy.svg`; wall times of the
-//! unoptimised dev build on a 2-core machine):
+//! unoptimised dev build on a busy 2-core machine, the least of 30 interleaved rounds, two runs):
 //!
 //! | integrator | time per step | largest energy error, 0-10 s | 90-100 s |
 //! | --- | --- | --- | --- |
-//! | semi-implicit Euler | 0.3-0.4x RK4 | 0.27 J | 7.4 J |
-//! | RK4 | 11-13 us | 4.8e-7 J | 5.1e-6 J |
-//! | variational midpoint | 9-12x RK4 | 3.1e-4 J | 3.2e-4 J |
-//! | variational, 4th order | 17-19x RK4 | 1.7e-6 J | 1.7e-6 J |
-//! | RK4 at 0.44-0.6 ms (the 4th-order step's cost) | same as 4th order | 0.7-2e-12 J | 2-5e-12 J |
+//! | semi-implicit Euler | 0.3x RK4 | 0.27 J | 7.4 J |
+//! | RK4 | 6-7 us | 4.8e-7 J | 5.1e-6 J |
+//! | variational midpoint | 5-8x RK4 | 3.1e-4 J | 3.2e-4 J |
+//! | variational, 4th order | 24-25x RK4 | 1.7e-6 J | 1.7e-6 J |
+//! | RK4 at 0.40-0.42 ms (the 4th-order step's cost) | as the 4th order | 3-6e-13 J | 1.0-1.1e-12 J |
 //!
 //! What the variational integrators buy is the absence of drift: their error at 100 s is the
 //! one at 10 s, where RK4's has grown tenfold, and at equal step the fourth-order one is below
