@@ -11,6 +11,29 @@ use crate::PlanarArm;
 ///
 /// [`ComputedTorque`](super::ComputedTorque) and [`PdGravity`](super::PdGravity) implement it;
 /// wrap a closure in [`from_fn`].
+///
+/// # Example
+/// A wrapper that limits another controller's torques to what the motors can give:
+/// ```
+/// use planar_arm::nalgebra::{SVector, Vector2};
+/// use planar_arm::sim::{from_fn, Controller};
+///
+/// struct Saturated<C> {
+///     inner: C,
+///     limit: f64,
+/// }
+///
+/// impl<C: Controller<N>, const N: usize> Controller<N> for Saturated<C> {
+///     fn torque(&mut self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> SVector<f64, N> {
+///         self.inner.torque(t, q, qd).map(|u| u.clamp(-self.limit, self.limit))
+///     }
+/// }
+///
+/// let stiff = from_fn(|_t, q: &Vector2<f64>, _qd: &Vector2<f64>| -1000.0 * q);
+/// let mut limited = Saturated { inner: stiff, limit: 5.0 };
+/// let tau = limited.torque(0.0, &Vector2::new(0.1, -0.001), &Vector2::zeros());
+/// assert_eq!(tau, Vector2::new(-5.0, 1.0));
+/// ```
 pub trait Controller<const N: usize> {
     /// The torque to apply from time `t` (s) on, given the joint angles `q` and rates `qd`.
     fn torque(&mut self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> SVector<f64, N>;

@@ -36,6 +36,31 @@ impl<const N: usize> Sample<N> {
 ///
 /// Before 0 it is the start sample and after the end the end sample, unchanged (at rest for a
 /// rest-to-rest motion). A NaN time gives a NaN sample.
+///
+/// # Example
+/// A trajectory of one's own, to hand to a controller: a sinusoid on the elbow.
+/// ```
+/// use planar_arm::nalgebra::Vector2;
+/// use planar_arm::sim::{Sample, Trajectory};
+///
+/// struct Wave;
+///
+/// impl Trajectory<2> for Wave {
+///     fn sample(&self, t: f64) -> Sample<2> {
+///         let (s, c) = (2.0 * t).sin_cos();
+///         Sample {
+///             q: Vector2::new(0.0, 0.5 * s),
+///             qd: Vector2::new(0.0, c),
+///             qdd: Vector2::new(0.0, -2.0 * s),
+///         }
+///     }
+///     fn duration(&self) -> f64 {
+///         f64::INFINITY
+///     }
+/// }
+///
+/// assert_eq!(Wave.sample(0.0).qd, Vector2::new(0.0, 1.0));
+/// ```
 pub trait Trajectory<const N: usize> {
     /// Angles, rates and accelerations at `t` (s).
     fn sample(&self, t: f64) -> Sample<N>;
