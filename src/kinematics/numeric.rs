@@ -1,8 +1,6 @@
 //! Damped-least-squares (numeric) inverse kinematics for any number of links.
 
 use nalgebra::{Isometry2, Matrix2, Matrix3, Point2, SMatrix, SVector, Vector2, Vector3};
-#[cfg(not(feature = "std"))]
-use num_traits::Float as _;
 
 use super::{
     annulus_check_with_slack, check_lengths, check_vector, wrap_angle, Workspace, REACH_TOLERANCE,
