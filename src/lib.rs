@@ -187,6 +187,8 @@ mod link;
 mod model;
 mod real;
 pub mod reference;
+/// Simulation and control: integrators, a simulation loop, trajectories, controllers.
+pub mod sim;
 #[cfg(feature = "std")]
 pub mod simd;
 pub mod trig;
@@ -203,6 +205,7 @@ pub use error::ArmError;
 pub use frozen::Frozen;
 pub use identification::Identification;
 pub use jet::Jet;
+pub use kinematics::DynArm;
 pub use linear::Linearize;
 pub use link::{Link, Revolute};
 pub use model::{Model, Payload};
@@ -219,6 +222,9 @@ use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2};
 pub mod prelude {
     pub use crate::kinematics::{
         ClosedFormIk, DexterousWorkspace, DlsOptions, IkTarget, TipForce, TipWrench, Workspace,
+    };
+    pub use crate::kinematics::{
+        DexterousWorkspaceExt, DynArm, InverseStatics, RedundantTipWrench, Skeleton, StaticWrench,
     };
     pub use crate::{
         ArmError, Frozen, Identification, Linearize, Link, Model, Payload, PlanarArm, Real,
@@ -465,24 +471,31 @@ pub trait PlanarArm<const N: usize> {
     }
 
     /// Damped-least-squares inverse kinematics on the generated Jacobian: the configuration
-    /// reached from `seed` (so the one nearest it, in practice).
+    /// reached from `seed` (so the one nearest it, in practice), within the joint limits of
+    /// `options` if it has any.
+    ///
+    /// The target is first checked against the work-space ([`kinematics::reachable_target`]:
+    /// the annulus for a position, the wrist's annulus for a pose); one within the reach
+    /// tolerance outside it is moved onto the boundary, where the solver then converges.
     ///
     /// # Errors
-    /// [`ArmError::NonFinite`] for NaN or infinite input, [`ArmError::NoConvergence`] when the
-    /// target is not reached within `options.max_iterations`.
+    /// [`ArmError::NonFinite`] for NaN or infinite input, [`ArmError::Unreachable`] for a target
+    /// outside the work-space, [`ArmError::OutOfRange`] for joint limits with `lower > upper`,
+    /// [`ArmError::NoConvergence`] when the target is not reached within
+    /// `options.max_iterations` (or only outside the joint limits).
     fn inverse_kinematics_near(
         &self,
         target: &IkTarget,
         seed: &SVector<f64, N>,
-        options: &DlsOptions,
+        options: &DlsOptions<N>,
     ) -> Result<SVector<f64, N>, ArmError> {
-        kinematics::solve_dls(
-            |q| self.tip_pose(q),
-            |q| self.jacobian(q),
-            target,
-            seed,
-            options,
-        )
+        kinematics::inverse_kinematics_near(self, target, seed, options)
+    }
+
+    /// Every joint and the tip at `q` in one call, `N + 1` points from the base to the tip,
+    /// for drawing the arm ([`kinematics::Skeleton::points`]).
+    fn skeleton(&self, q: &SVector<f64, N>) -> kinematics::Skeleton<N> {
+        kinematics::Skeleton::of(self, q)
     }
 
     /// [`forward_dynamics`](Self::forward_dynamics) for input that may be bad: NaN or infinite
