@@ -182,11 +182,11 @@ impl Integrator for SemiImplicitEuler {
 ///
 /// Cost: each iteration evaluates C, g and the friction at the midpoint and solves with M
 /// there (through the generated forward dynamics at rest, one more g), and the step evaluates M
-/// twice more and solves once more (the momenta at both ends). On the paper's two rods at `dt = 10 ms` it
-/// takes 6.26 iterations on average (at most 8), and a step costs 5-8 RK4 steps in the
-/// dev build (the table in the [module docs](super)). The iteration converges while `dt` times
-/// the fastest rate of the arm stays well below 1; beyond, the step returns
-/// [`SimError::NoConvergence`] instead of a wrong answer.
+/// twice more and solves once more (the momenta at both ends). On the paper's two rods at
+/// `dt = 10 ms` it takes 6.26 iterations on average (at most 8), and a step costs 5-8 RK4 steps
+/// in the dev build, about 4 in release (the table in the [module docs](super)). The iteration
+/// converges while `dt` times the fastest rate of the arm stays well below 1; beyond, the step
+/// returns [`SimError::NoConvergence`] instead of a wrong answer.
 ///
 /// # Example
 /// ```
@@ -316,10 +316,11 @@ impl Integrator for VariationalMidpoint {
 /// What it costs and buys, measured (the table in the [module docs](super), from
 /// `cargo run --example simulate`): on the paper's two rods swinging for 100 s at 10 ms its
 /// energy error stays at 1.7e-6 J from the first ten seconds to the last, where RK4's grows
-/// from 4.8e-7 J to 5.1e-6 J; but a step costs 24-25 RK4 steps (its three parts take
-/// larger steps, so more iterations each), and RK4 with its step
-/// shortened to the same work is far more accurate (1e-12 J at 100 s) over any horizon one would
-/// simulate. Use it for the absence of drift, not for accuracy per unit of work.
+/// from 4.8e-7 J to 5.1e-6 J; but a step costs 24-25 RK4 steps in the dev build, about 13 in
+/// release (its three parts take larger steps, so more iterations each), and RK4 with its step
+/// shortened to the same work is far more accurate (1e-12 to 2e-11 J at 100 s) over any
+/// horizon one would simulate. Use it for the absence of drift, not for accuracy per unit of
+/// work.
 ///
 /// # Example
 /// ```

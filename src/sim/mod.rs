@@ -45,26 +45,28 @@
 //! | [`Variational4`] | 4 | three of those | bounded O(dt^4) error, no drift (symplectic) |
 //!
 //! Measured on the paper's two rods swinging freely from `q = (-1, 0.4)` for 100 s at
-//! `dt = 10 ms` (`cargo run --example simulate`, `docs/sim-energy.svg`; wall times of the
-//! unoptimised dev build on a busy 2-core machine, the least of 30 interleaved rounds, two runs):
+//! `dt = 10 ms` (`cargo run --example simulate`, `docs/sim-energy.svg`; wall times on a busy
+//! 2-core machine, the least of 30 interleaved rounds, two runs each of the unoptimised dev
+//! build and of `--release`):
 //!
-//! | integrator | time per step | largest energy error, 0-10 s | 90-100 s |
-//! | --- | --- | --- | --- |
-//! | semi-implicit Euler | 0.3x RK4 | 0.27 J | 7.4 J |
-//! | RK4 | 6-7 us | 4.8e-7 J | 5.1e-6 J |
-//! | variational midpoint | 5-8x RK4 | 3.1e-4 J | 3.2e-4 J |
-//! | variational, 4th order | 24-25x RK4 | 1.7e-6 J | 1.7e-6 J |
-//! | RK4 at 0.40-0.42 ms (the 4th-order step's cost) | as the 4th order | 3-6e-13 J | 1.0-1.1e-12 J |
+//! | integrator | time per step, dev | release | largest energy error, 0-10 s | 90-100 s |
+//! | --- | --- | --- | --- | --- |
+//! | semi-implicit Euler | 0.3x RK4 | 0.4-0.5x RK4 | 0.27 J | 7.4 J |
+//! | RK4 | 6-7 us | 0.10-0.12 us | 4.8e-7 J | 5.1e-6 J |
+//! | variational midpoint | 5-8x RK4 | 3.9-4.1x RK4 | 3.1e-4 J | 3.2e-4 J |
+//! | variational, 4th order | 24-25x RK4 | 12.7-13.3x RK4 | 1.7e-6 J | 1.7e-6 J |
+//! | RK4 at the 4th order's cost, dev: dt = 0.40-0.42 ms | | | 3-6e-13 J | 1.0-1.1e-12 J |
+//! | the same, release: dt = 0.75-0.79 ms | | | 5-6e-12 J | 1.6-1.9e-11 J |
 //!
-//! What the variational integrators buy is the absence of drift: their error at 100 s is the
-//! one at 10 s, where RK4's has grown tenfold, and at equal step the fourth-order one is below
-//! RK4 after about 30 s. What they cost is an implicit solve per step: at equal work, RK4 with
-//! the shorter step is a million times more accurate over 100 s, and at its measured drift would
-//! need years of simulated time to reach the fourth-order variational error. So [`Rk4`] is
-//! the choice for accuracy per unit of work, and for every control run; the variational
-//! integrators are for when the qualitative long-time behaviour matters more than the error
-//! (no secular gain or loss of energy at a coarse step, a symplectic map for phase portraits and
-//! long statistics). [`SemiImplicitEuler`] costs a quarter of RK4 and is useful only for rough
+//! What the variational integrators buy is the absence of drift: their error at 100 s is the one at
+//! 10 s, where RK4's has grown tenfold, and at equal step the fourth-order one is below RK4 after
+//! about 30 s. What they cost is an implicit solve per step: at equal work, RK4 with the shorter
+//! step is 1e5 to 1e6 times more accurate over 100 s, and at its measured drift would need months
+//! to years of simulated time to reach the fourth-order variational error. So [`Rk4`] is the choice
+//! for accuracy per unit of work, and for every control run; the variational integrators are for
+//! when the qualitative long-time behaviour matters more than the error (no secular gain or loss of
+//! energy at a coarse step, a symplectic map for phase portraits and long statistics).
+//! [`SemiImplicitEuler`] costs a third to a half of an RK4 step and is useful only for rough
 //! previews.
 //!
 //! # Step size
