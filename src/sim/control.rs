@@ -17,6 +17,13 @@ use crate::PlanarArm;
 /// with a model that differs from the arm (`model` may be another instance, say without the
 /// payload the arm holds) the feedback keeps the error bounded.
 ///
+/// The feedback acts through the model's M, so where the model underestimates a joint's inertia
+/// it is softer by that ratio. Measured in `cargo run --example simulate`: 0.5 kg unknown in
+/// the gripper of a 0.5 kg, 15 cm hand (model inertia about the joint 0.0037 kg m^2, true
+/// 0.0150) leaves computed torque at 20 rad/s with errors up to 0.78 rad, where
+/// [`PdGravity`] with absolute gains (20 N m/rad on that joint) keeps 0.076 rad and dead
+/// reckoning alone drifts 4 rad away. With the exact model the same run tracks to 2.7e-3 rad.
+///
 /// # Example
 /// ```
 /// use planar_arm::prelude::*;
