@@ -4,7 +4,8 @@
 For each arm size it writes a binary crate (in a temporary directory, depending on this
 repository by path, default `dev` profile, no profile settings) that derives one arm and calls
 its inverse dynamics, forward dynamics, mass matrix and bias once (so those are compiled, not
-only type-checked), builds it once to compile the dependencies, then times
+only type-checked; with `--derivatives` also `linearize`, which calls the derivatives),
+builds it once to compile the dependencies, then times
 `cargo clean -p <crate>` followed by `cargo build`: a clean rebuild of that crate alone. Peak
 memory is the largest resident size of any process of the build (GNU time's %M).
 
@@ -26,8 +27,8 @@ import tempfile
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def crate(root, n, params, lengths=False, repo=REPO):
-    name = f"arm{n}{'p' if params else ''}{'l' if lengths else ''}"
+def crate(root, n, params, lengths=False, repo=REPO, derivatives=False):
+    name = f"arm{n}{'p' if params else ''}{'l' if lengths else ''}{'d' if derivatives else ''}"
     path = os.path.join(root, name)
     os.makedirs(os.path.join(path, "src"), exist_ok=True)
     with open(os.path.join(path, "Cargo.toml"), "w") as f:
@@ -68,7 +69,13 @@ def crate(root, n, params, lengths=False, repo=REPO):
             "    let tau = arm.inverse_dynamics(&q, &q, &q);\n"
             "    let qdd = arm.forward_dynamics(&q, &q, &tau);\n"
             "    let (m, h) = (arm.mass_matrix(&q), arm.bias(&q, &q));\n"
-            '    println!("{}", (qdd - q).norm() + m.norm() + h.norm());\n'
+            + (
+                "    let (a, _b) = arm.linearize(&q, &q, &tau);\n"
+                '    println!("{}", a.norm());\n'
+                if derivatives
+                else ""
+            )
+            + '    println!("{}", (qdd - q).norm() + m.norm() + h.norm());\n'
             "}\n"
         )
     return name, path
@@ -93,6 +100,10 @@ def main():
     ap.add_argument("--literal-only", action="store_true")
     ap.add_argument("--lengths", action="store_true", help="run-time lengths in the parameterised arms")
     ap.add_argument("--repo", default=REPO, help="the planar_arm checkout to build against")
+    ap.add_argument(
+        "--derivatives", action="store_true",
+        help="also call linearize (so the derivatives are compiled, not only type-checked)",
+    )
     args = ap.parse_args()
     with tempfile.TemporaryDirectory() as root:
         target = os.path.join(root, "target")
@@ -101,7 +112,9 @@ def main():
         for n in args.sizes:
             kinds = [False] if args.literal_only or n > 14 else [False, True]
             for params in kinds:
-                name, path = crate(root, n, params, args.lengths and params, args.repo)
+                name, path = crate(
+                    root, n, params, args.lengths and params, args.repo, args.derivatives
+                )
                 env = dict(os.environ, CARGO_TARGET_DIR=target)
                 subprocess.run(["cargo", "build", "-q"], cwd=path, env=env, check=True)
                 best = min(timed_build(path, name, target) for _ in range(args.runs))

@@ -3,6 +3,8 @@
 
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
+use nalgebra::{SMatrix, SVector};
+
 use crate::Real;
 
 /// A number `re + eps . e` carrying its derivatives `eps` along `K` directions at once
@@ -55,6 +57,29 @@ impl<const K: usize> Jet<K> {
             *e = 1.0;
         }
         Self { re, eps }
+    }
+
+    /// `(dtau/dq, dtau/dqd)` of `arm`'s generated inverse dynamics evaluated twice in jets,
+    /// seeded once along the angles and once along the rates: what
+    /// [`PlanarArm::inverse_dynamics_derivatives`](crate::PlanarArm::inverse_dynamics_derivatives)
+    /// returns for arms too large for its derivatives to be emitted as code, and the check of
+    /// the emitted ones.
+    #[must_use]
+    pub fn inverse_dynamics_derivatives<A: crate::PlanarArm<K> + ?Sized>(
+        arm: &A,
+        q: &SVector<f64, K>,
+        qd: &SVector<f64, K>,
+        qdd: &SVector<f64, K>,
+    ) -> (SMatrix<f64, K, K>, SMatrix<f64, K, K>) {
+        let seeded =
+            |x: &SVector<f64, K>| SVector::<Self, K>::from_fn(|j, _| Self::variable(x[j], j));
+        let fixed = |x: &SVector<f64, K>| x.map(Self::constant);
+        let along_q = arm.inverse_dynamics(&seeded(q), &fixed(qd), &fixed(qdd));
+        let along_qd = arm.inverse_dynamics(&fixed(q), &seeded(qd), &fixed(qdd));
+        (
+            SMatrix::from_fn(|i, j| along_q[i].eps[j]),
+            SMatrix::from_fn(|i, j| along_qd[i].eps[j]),
+        )
     }
 
     #[inline(always)]

@@ -247,7 +247,8 @@ pub mod prelude {
 /// `forward_dynamics` in particular stays finite (M is positive definite by construction and
 /// its factorisation is guarded against rounding). Beyond that range the methods are IEEE
 /// arithmetic on the exact formulas: a torque that exceeds `f64::MAX` (velocity terms grow as
-/// `qd^2`) is infinite. The infallible methods pass NaN through; use the `try_` methods, which
+/// `qd^2`) is infinite or NaN (NaN where two overflowed terms of opposite sign meet, as at
+/// `qd = 1e154`). The infallible methods pass NaN through; use the `try_` methods, which
 /// answer NaN or infinite input, and an overflowed result, with [`ArmError::NonFinite`].
 ///
 /// # Run-time parameters out of range
@@ -317,9 +318,11 @@ pub trait PlanarArm<const N: usize> {
     /// `(dtau/dq, dtau/dqd)`, N x N each (`dtau/dqdd` is [`mass_matrix`](Self::mass_matrix)),
     /// as Pinocchio's `computeRNEADerivatives`.
     ///
-    /// Exact to rounding: the generated inverse dynamics evaluated once in [`Jet<N>`](Jet)
-    /// seeded along the angles, once along the rates (forward-mode differentiation of the
-    /// same straight-line code; no finite differences). Run-time parameters, armature,
+    /// Exact to rounding. For arms whose derivative program stays small (about 4,000
+    /// operations, every arm up to 10 links at least) the derive emits it: the inverse dynamics'
+    /// straight-line program differentiated at compile time, its operation count in the
+    /// method's docs. For larger arms this default evaluates the generated inverse dynamics in
+    /// [`Jet<N>`](Jet) ([`Jet::inverse_dynamics_derivatives`]). Run-time parameters, armature,
     /// damping and payload are included. Coulomb friction `frictionloss sign(qd_i)` jumps at
     /// `qd_i = 0` and has no derivative there; it contributes 0 to `dtau/dqd` everywhere (its
     /// derivative away from the jump).
@@ -329,24 +332,21 @@ pub trait PlanarArm<const N: usize> {
         qd: &SVector<f64, N>,
         qdd: &SVector<f64, N>,
     ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
-        let seeded =
-            |x: &SVector<f64, N>| SVector::<Jet<N>, N>::from_fn(|j, _| Jet::variable(x[j], j));
-        let fixed = |x: &SVector<f64, N>| x.map(Jet::<N>::constant);
-        let along_q = self.inverse_dynamics(&seeded(q), &fixed(qd), &fixed(qdd));
-        let along_qd = self.inverse_dynamics(&fixed(q), &seeded(qd), &fixed(qdd));
-        (
-            SMatrix::from_fn(|i, j| along_q[i].eps[j]),
-            SMatrix::from_fn(|i, j| along_qd[i].eps[j]),
-        )
+        Jet::inverse_dynamics_derivatives(self, q, qd, qdd)
     }
 
     /// The partial derivatives of [`forward_dynamics`](Self::forward_dynamics),
     /// `(dqdd/dq, dqdd/dqd, dqdd/dtau)`, N x N each, as Pinocchio's `computeABADerivatives`:
     /// with `qdd = forward_dynamics(q, qd, tau)`, `dqdd/dq = -M^-1 dtau/dq`,
     /// `dqdd/dqd = -M^-1 dtau/dqd` (from [`inverse_dynamics_derivatives`](Self::inverse_dynamics_derivatives)
-    /// at `qdd`) and `dqdd/dtau = M^-1` (a Cholesky factorisation of M, no allocation).
-    /// Coulomb friction as there. NaN everywhere if M is not positive definite (only with
-    /// NaN or infinite input).
+    /// at `qdd`) and `dqdd/dtau = M^-1`. Coulomb friction as there.
+    ///
+    /// For arms up to about 9 links the derive emits this as one straight-line program that
+    /// shares the trigonometry, M and its factorisation (guarded by the pivot floors of
+    /// `forward_dynamics`, so finite wherever `forward_dynamics` is); its operation count is in
+    /// the method's docs. For larger arms this default computes it from the methods above and
+    /// a Cholesky factorisation of M (no allocation), NaN everywhere if that fails (only with
+    /// NaN or infinite input). NaN input gives NaN output either way, never a panic.
     fn forward_dynamics_derivatives(
         &self,
         q: &SVector<f64, N>,

@@ -21,6 +21,37 @@ struct One {
     a: Revolute,
 }
 
+/// Three links with run-time masses and a run-time centre of mass, damping, Coulomb friction
+/// and a payload: the size at which the expanded formulas still compete with the recursion.
+#[derive(PlanarArm, Clone)]
+#[arm(gravity = 9.81, payload = self.load)]
+struct Three {
+    #[arm(length = 0.5, mass = self.m1, com = (0.2, 0.03), armature = 0.05)]
+    a: Revolute,
+    #[arm(length = 0.4, mass = self.m2, com = self.c2, damping = 0.15)]
+    b: Revolute,
+    #[arm(length = 0.3, mass = 0.6, frictionloss = 0.2)]
+    c: Revolute,
+    m1: f64,
+    m2: f64,
+    c2: f64,
+    load: f64,
+}
+
+impl Three {
+    fn random(rng: &mut Rng) -> Self {
+        Self {
+            a: Revolute,
+            b: Revolute,
+            c: Revolute,
+            m1: rng.range(0.5, 4.0),
+            m2: rng.range(0.5, 3.0),
+            c2: rng.range(0.05, 0.35),
+            load: rng.range(0.0, 1.5),
+        }
+    }
+}
+
 /// Central differences of `f` along each unit direction, step `h`.
 fn central<const N: usize>(
     f: impl Fn(&SVector<f64, N>) -> SVector<f64, N>,
@@ -54,6 +85,13 @@ fn check<A: PlanarArm<N>, const N: usize>(arm: &A, rng: &mut Rng) {
             .vector::<N>(3.0)
             .map(|w| if w.abs() < 0.05 { w + 0.1 } else { w });
         let (dq, dqd) = arm.inverse_dynamics_derivatives(&q, &qd, &qdd);
+        // The emitted derivative program against the same inverse dynamics run in jets:
+        // equal to rounding, a far tighter check than the differences below.
+        let (jq, jqd) = planar_arm::Jet::inverse_dynamics_derivatives(arm, &q, &qd, &qdd);
+        for (got, jet, what) in [(&dq, &jq, "dtau/dq"), (&dqd, &jqd, "dtau/dqd")] {
+            let d = (got - jet).amax();
+            assert!(d <= 1e-12 * (1.0 + jet.amax()), "{what} vs jets: {d:e}");
+        }
         close(
             &dq,
             &central(|x| arm.inverse_dynamics(x, &qd, &qdd), &q),
@@ -87,6 +125,26 @@ fn check<A: PlanarArm<N>, const N: usize>(arm: &A, rng: &mut Rng) {
             &central(|x| arm.forward_dynamics(&q, &qd, x), &tau),
             "dqdd/dtau",
         );
+        // The emitted program against the derivatives through jets and a Cholesky inverse of M.
+        let minv = arm
+            .mass_matrix(&q)
+            .cholesky()
+            .expect("M is positive definite")
+            .inverse();
+        let (jq, jqd) = planar_arm::Jet::inverse_dynamics_derivatives(
+            arm,
+            &q,
+            &qd,
+            &arm.forward_dynamics(&q, &qd, &tau),
+        );
+        for (got, want, what) in [
+            (&ddq, -(minv * jq), "dqdd/dq vs jets"),
+            (&ddqd, -(minv * jqd), "dqdd/dqd vs jets"),
+            (&ddtau, minv, "dqdd/dtau vs Cholesky"),
+        ] {
+            let d = (got - want).amax();
+            assert!(d <= 1e-9 * (1.0 + want.amax()), "{what}: {d:e}");
+        }
         // The identities: M dqdd/dtau = I and M dqdd/dq = -dtau/dq at qdd = FD(q, qd, tau).
         let m = arm.mass_matrix(&q);
         close(&(m * ddtau), &SMatrix::identity(), "M M^-1");
@@ -102,6 +160,7 @@ fn derivatives_match_central_differences_and_the_reference() {
     for _ in 0..3 {
         let scara = Scara::random(&mut rng);
         check(&scara, &mut rng);
+        check(&Three::random(&mut rng), &mut rng);
     }
     check(&Eight::default(), &mut rng);
 }

@@ -527,6 +527,47 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
         touch: TokenStream::new(),
         finish: Box::new(vector),
     });
+    if let Some(method) = d.inverse_dynamics_derivatives_method() {
+        let f64mat = quote!(::planar_arm::nalgebra::SMatrix<f64, #nn, #nn>);
+        specs.push(Fn {
+            name: "inverse_dynamics_derivatives",
+            generic: false,
+            params: vec![q, qd, qdd],
+            ret: quote!((#f64mat, #f64mat)),
+            doc:
+                "The partial derivatives of `inverse_dynamics`, `(dtau/dq, dtau/dqd)` (`dtau/dqdd` \
+                  is `mass_matrix`), straight-line code differentiated exactly at compile time. \
+                  Coulomb friction contributes 0 to `dtau/dqd`, also at `qd_i = 0` where it jumps."
+                    .to_string(),
+            method,
+            touch: TokenStream::new(),
+            finish: Box::new(move |ids| {
+                let dq = matrix(n, n, &ids[..n * n]);
+                let dqd = matrix(n, n, &ids[n * n..]);
+                quote!((#dq, #dqd))
+            }),
+        });
+    }
+    if let Some(method) = d.forward_dynamics_derivatives_method() {
+        let f64mat = quote!(::planar_arm::nalgebra::SMatrix<f64, #nn, #nn>);
+        specs.push(Fn {
+            name: "forward_dynamics_derivatives",
+            generic: false,
+            params: vec![q, qd, tau],
+            ret: quote!((#f64mat, #f64mat, #f64mat)),
+            doc:
+                "The partial derivatives of `forward_dynamics`, `(dqdd/dq, dqdd/dqd, dqdd/dtau)`, \
+                  straight-line code built at compile time. Coulomb friction as in \
+                  `inverse_dynamics_derivatives`."
+                    .to_string(),
+            method,
+            touch: TokenStream::new(),
+            finish: Box::new(move |ids| {
+                let m = (0..3).map(|k| matrix(n, n, &ids[k * n * n..(k + 1) * n * n]));
+                quote!((#(#m),*))
+            }),
+        });
+    }
 
     let hot: Vec<&Fn<'_>> = specs.iter().filter(|f| HOT.contains(&f.name)).collect();
     // An all-literal arm's constants are folded already: nothing to freeze.

@@ -55,6 +55,7 @@ pub use poly::{Param, Poly};
 pub use ring::{Coefficient, Rational};
 pub use trig::{Angle, Trig};
 pub mod compact;
+pub mod derivative;
 pub mod emit;
 pub mod frozen;
 pub mod generate;

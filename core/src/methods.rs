@@ -118,7 +118,7 @@ impl Method {
         self.program.depth(&outs)
     }
 
-    fn new(program: Program, outputs: Vec<(String, Id)>) -> Self {
+    pub(crate) fn new(program: Program, outputs: Vec<(String, Id)>) -> Self {
         Self {
             program,
             outputs,
@@ -126,7 +126,7 @@ impl Method {
         }
     }
 
-    fn described(mut self, evaluation: &str) -> Self {
+    pub(crate) fn described(mut self, evaluation: &str) -> Self {
         self.evaluation = evaluation.to_string();
         self
     }
@@ -137,14 +137,14 @@ impl Method {
 /// the longest chain of dependent operations (latency the out-of-order core cannot hide).
 /// The chain is weighted one: weighted two, the expanded three-link torques beat the
 /// Newton-Euler recursion on paper but measured slower (docs/performance.md).
-fn cost(m: &Method) -> usize {
+pub(crate) fn cost(m: &Method) -> usize {
     let count = m.op_count();
     count.mul + count.add + 4 * count.div + 20 * count.sin_cos + m.depth()
 }
 
 /// The cheapest candidate by [`cost`]; the first one on a tie (candidates are listed with the
 /// term-by-term form first, so that form is kept when nothing beats it).
-fn cheapest(candidates: Vec<Method>) -> Method {
+pub(crate) fn cheapest(candidates: Vec<Method>) -> Method {
     let mut best: Option<(usize, Method)> = None;
     for m in candidates {
         let c = cost(&m);
@@ -433,7 +433,7 @@ impl<C: Emit> Derived<C> {
     /// `M11 M22 - M12^2 = (a d - e^2 - f^2) + f^2 sin^2 q2`, where `det0 = det M(q2 = 0) > 0`.
     /// Both terms are non-negative, so unlike `M11 M22 - M12^2` it never cancels to zero or
     /// below. `None` if `M` does not have that form.
-    fn two_link_det(&self, p: &mut Program) -> Option<Id> {
+    pub(crate) fn two_link_det(&self, p: &mut Program) -> Option<Id> {
         use crate::trig::Trig;
         let q2 = Angle::new(vec![0, 1]);
         let zero = || C::from_rational(Rational::zero());

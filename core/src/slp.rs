@@ -345,6 +345,12 @@ impl Program {
         (c, s)
     }
 
+    /// The trigonometric atoms built so far by [`trig_pair`](Self::trig_pair): each angle
+    /// with its `(cos, sin)` nodes.
+    pub fn trig_atoms(&self) -> impl Iterator<Item = (&Angle, (Id, Id))> {
+        self.trig.iter().map(|(a, &pair)| (a, pair))
+    }
+
     /// The value of a trig atom.
     pub fn atom(&mut self, t: &Trig) -> Id {
         match t {
@@ -430,6 +436,55 @@ impl Program {
             outer.push((neg, self.mul(poly, mono)));
         }
         self.signed_sum(&outer)
+    }
+
+    /// Copies the part of `other` that `roots` need into this program, each input of `other`
+    /// replaced by the node `input` gives for it (or taken as the same input when it gives
+    /// `None`; parameters are matched by name); returns the roots' nodes here. The copies are
+    /// rebuilt with the folding constructors, so they share every node this program already
+    /// has and fold what the substitution makes constant.
+    pub fn graft(
+        &mut self,
+        other: &Program,
+        roots: &[Id],
+        input: &dyn Fn(Input) -> Option<Id>,
+    ) -> Vec<Id> {
+        let uses = other.use_counts(roots);
+        let mut map: Vec<Option<Id>> = vec![None; other.nodes.len()];
+        for (i, node) in other.nodes.iter().enumerate() {
+            if uses[i] == 0 {
+                continue;
+            }
+            let at = |x: Id| map[x.0 as usize].expect("children come first");
+            let id = match *node {
+                Node::Input(Input::Param(k)) => self.param(&other.params[k]),
+                Node::Input(i) => input(i).unwrap_or_else(|| self.input(i)),
+                Node::Const(ref r) => self.constant(r.clone()),
+                Node::Sin(_) | Node::Cos(_) => self.intern(node.clone()),
+                Node::Add(a, b) => self.add(at(a), at(b)),
+                Node::Sub(a, b) => self.sub(at(a), at(b)),
+                Node::Mul(a, b) => self.mul(at(a), at(b)),
+                Node::Div(a, b) => self.div(at(a), at(b)),
+                Node::Neg(a) => self.neg(at(a)),
+                Node::Max(a, b) => self.max(at(a), at(b)),
+                Node::Sign(a) => self.sign(at(a)),
+            };
+            map[i] = Some(id);
+        }
+        for (&from, name) in &other.names {
+            if let Some(to) = map[from.0 as usize] {
+                self.set_name(to, name.clone());
+            }
+        }
+        for (angle, &(c, s)) in &other.trig {
+            if let (Some(c), Some(s)) = (map[c.0 as usize], map[s.0 as usize]) {
+                self.trig.entry(angle.clone()).or_insert((c, s));
+            }
+        }
+        roots
+            .iter()
+            .map(|r| map[r.0 as usize].expect("roots are live"))
+            .collect()
     }
 
     /// Interprets the program: the value of every node, given the inputs and joint angles.
