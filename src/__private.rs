@@ -92,3 +92,18 @@ impl<const K: usize> Default for Block<K> {
         Self([0.0; K])
     }
 }
+
+/// What a link field's type must be: the derive cannot resolve names, so it emits
+/// `link_field::<FieldType>()` and the compiler checks that the type is [`crate::Revolute`]
+/// (through any alias or path), not a user type that merely shares the name.
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` is not `planar_arm::Revolute`",
+    label = "link fields must have type `planar_arm::Revolute`",
+    note = "the link's parameters go in its #[arm(...)]; a field of another type is a run-time parameter or data and takes no #[arm(...)]"
+)]
+pub trait LinkField {}
+
+impl LinkField for crate::Revolute {}
+
+#[inline(always)]
+pub const fn link_field<T: LinkField>() {}

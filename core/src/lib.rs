@@ -61,6 +61,7 @@ pub mod frozen;
 pub mod generate;
 pub mod identification;
 pub mod methods;
+pub mod paths;
 pub mod regressor;
 pub mod slp;
 mod unrolled;

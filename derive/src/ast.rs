@@ -84,7 +84,9 @@ impl<'a> Arm<'a> {
                 others.push(field);
                 continue;
             }
-            if !is_revolute(&field.ty) {
+            // A path type (an alias, a re-export) may still be `Revolute`: the generated code
+            // asserts it (`__private::LinkField`). Anything else cannot be.
+            if !matches!(strip(&field.ty), syn::Type::Path(_)) || is_primitive(&field.ty) {
                 cx.error_spanned_by(
                     &field.ty,
                     "link fields must have type `planar_arm::Revolute`, the only joint kind so far; the link's parameters go in its #[arm(...)]",
@@ -200,10 +202,40 @@ pub fn is_link_field(f: &syn::Field) -> bool {
 
 fn is_f64(ty: &syn::Type) -> bool {
     match ty {
-        syn::Type::Path(p) => p.qself.is_none() && p.path.is_ident("f64"),
+        // f64, or the primitive by its path (core::primitive::f64), for crates that shadow it
+        syn::Type::Path(p) => {
+            let names: Vec<String> = p
+                .path
+                .segments
+                .iter()
+                .map(|s| s.ident.to_string())
+                .collect();
+            p.qself.is_none()
+                && (p.path.is_ident("f64")
+                    || matches!(names.as_slice(), [root, prim, f] if (root == "core" || root == "std") && prim == "primitive" && f == "f64"))
+        }
         syn::Type::Group(g) => is_f64(&g.elem),
         syn::Type::Paren(p) => is_f64(&p.elem),
         _ => false,
+    }
+}
+
+/// Whether the type is a primitive's bare name (`f64`), which no alias of `Revolute` takes.
+fn is_primitive(ty: &syn::Type) -> bool {
+    const PRIMITIVES: &[&str] = &[
+        "f64", "f32", "i8", "i16", "i32", "i64", "i128", "isize", "u8", "u16", "u32", "u64",
+        "u128", "usize", "bool", "char", "str",
+    ];
+    matches!(strip(ty), syn::Type::Path(p) if p.qself.is_none()
+        && PRIMITIVES.iter().any(|name| p.path.is_ident(name)))
+}
+
+/// The type inside invisible groups and parentheses.
+fn strip(ty: &syn::Type) -> &syn::Type {
+    match ty {
+        syn::Type::Group(g) => strip(&g.elem),
+        syn::Type::Paren(p) => strip(&p.elem),
+        other => other,
     }
 }
 

@@ -22,8 +22,9 @@ pub const FRICTIONLOSS: &str = "frictionloss";
 pub const PAYLOAD: &str = "payload";
 pub const PAYLOAD_INERTIA: &str = "payload_inertia";
 pub const PAYLOAD_COM: &str = "payload_com";
+pub const CRATE: &str = "crate";
 
-pub const STRUCT_KEYS: &[&str] = &[GRAVITY, PAYLOAD, PAYLOAD_INERTIA, PAYLOAD_COM];
+pub const STRUCT_KEYS: &[&str] = &[GRAVITY, PAYLOAD, PAYLOAD_INERTIA, PAYLOAD_COM, CRATE];
 pub const FIELD_KEYS: &[&str] = &[LENGTH, MASS, INERTIA, COM, ARMATURE, DAMPING, FRICTIONLOSS];
 /// Keys whose value may be a pair `(x, y)`.
 const PAIR_KEYS: &[&str] = &[COM, PAYLOAD_COM];
@@ -64,6 +65,8 @@ pub struct Attrs {
     pub malformed: bool,
     /// The first `#[arm(...)]`, for errors about the list as a whole.
     pub tokens: TokenStream,
+    /// `#[arm(crate = "path")]`: the path of `planar_arm` in the user's crate.
+    pub krate: Option<syn::Path>,
 }
 
 impl Attrs {
@@ -86,9 +89,33 @@ pub fn parse(cx: &Ctxt, attrs: &[syn::Attribute], place: Place) -> Option<Attrs>
             out.tokens = attr.to_token_stream();
         }
         found = true;
-        if !matches!(attr.meta, syn::Meta::List(_)) {
+        let list = match &attr.meta {
+            syn::Meta::List(list) => list,
             // #[arm] or #[arm = ...]
-            cx.error_spanned_by(attr, expected_syntax(place));
+            _ => {
+                cx.error_spanned_by(attr, expected_syntax(place));
+                out.malformed = true;
+                continue;
+            }
+        };
+        // #[arm[...]] or #[arm{...}]
+        if !matches!(list.delimiter, syn::MacroDelimiter::Paren(_)) {
+            cx.error_spanned_by(
+                attr,
+                format!(
+                    "use parentheses: {}",
+                    expected_syntax(place).trim_start_matches("expected ")
+                ),
+            );
+            out.malformed = true;
+            continue;
+        }
+        // #[arm()] on the struct says nothing; on a field the missing keys are reported.
+        if list.tokens.is_empty() && place == Place::Struct {
+            cx.error_spanned_by(
+                attr,
+                "empty #[arm()]; give the arm's properties, e.g. #[arm(gravity = 9.81)], or remove it",
+            );
             out.malformed = true;
             continue;
         }
@@ -135,6 +162,10 @@ fn path_text(path: &syn::Path) -> String {
 fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut Attrs) {
     let path = &meta.path;
     let key = path_text(path);
+    if key == CRATE && place == Place::Struct {
+        parse_crate(cx, meta, out);
+        return;
+    }
     // Consume the value first so that parsing can go on to the next key after an error.
     let value = match meta.value().and_then(|v| v.parse::<syn::Expr>()) {
         Ok(expr) => Some(expr),
@@ -159,6 +190,10 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
                     "`{key}` is a property of the whole arm; it belongs in #[arm({key} = ...)] on the struct, not on a link field"
                 ),
             }
+        } else if let Some(&lower) = own.iter().find(|k| k.eq_ignore_ascii_case(&key)) {
+            // #[arm(MASS = 1)]
+            out.mentioned.push(lower);
+            format!("unknown key `{key}`; keys are lowercase: `{lower}`")
         } else if let Some(best) = nearest(&key, own) {
             out.mentioned.push(best);
             format!("unknown key `{key}`; did you mean `{best}`?")
@@ -215,6 +250,33 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
             },
         }),
         Err(err) => cx.syn_error(err),
+    }
+}
+
+/// `#[arm(crate = "path")]`: the path of `planar_arm` where the user renamed the dependency.
+fn parse_crate(cx: &Ctxt, meta: &ParseNestedMeta<'_>, out: &mut Attrs) {
+    out.mentioned.push(CRATE);
+    let lit = match meta.value().and_then(|v| v.parse::<syn::LitStr>()) {
+        Ok(lit) => lit,
+        Err(_) => {
+            skip_to_comma(meta.input);
+            cx.error_spanned_by(
+                &meta.path,
+                "expected `crate = \"path\"`, the path of planar_arm in this crate, for example `crate = \"arm\"`",
+            );
+            return;
+        }
+    };
+    if out.krate.is_some() {
+        cx.error_spanned_by(&meta.path, "duplicate key `crate`; give it once");
+        return;
+    }
+    match lit.parse::<syn::Path>() {
+        Ok(path) => out.krate = Some(path),
+        Err(_) => cx.error_spanned_by(
+            &lit,
+            "expected a path such as \"arm\" or \"::my_deps::planar_arm\"",
+        ),
     }
 }
 

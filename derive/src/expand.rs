@@ -17,13 +17,26 @@ use crate::check::check;
 use crate::ctxt::Ctxt;
 
 pub fn derive(input: &DeriveInput) -> TokenStream {
-    match try_derive(input) {
+    let tokens = match try_derive(input) {
         Ok(tokens) => tokens,
         Err(errors) => {
             let fallback = fallback(input);
             quote!(#errors #fallback)
         }
-    }
+    };
+    planar_arm_core::paths::qualify(tokens, krate(input).as_ref())
+}
+
+/// The path of `planar_arm` given by `#[arm(crate = "...")]` (errors in it are reported by
+/// the full parse).
+fn krate(input: &DeriveInput) -> Option<TokenStream> {
+    let cx = Ctxt::new();
+    let path = crate::attr::parse(&cx, &input.attrs, crate::attr::Place::Struct)
+        .and_then(|a| a.krate)
+        .map(|p| p.to_token_stream());
+    // Reported again, with the rest, by `try_derive`.
+    let _ = cx.check();
+    path
 }
 
 fn header(input: &DeriveInput) -> Header {
@@ -68,7 +81,17 @@ fn emit<C: Emit>(
         planar_arm_core::identification::identification(&derived, header)
             .map_err(|e| emit_error(arm, &derived, &e).to_compile_error())?,
     );
+    tokens.extend(link_types(arm));
     Ok(tokens)
+}
+
+/// The check that every link field is `planar_arm::Revolute`, each error at the field's type.
+fn link_types(arm: &Arm<'_>) -> TokenStream {
+    let checks = arm.links.iter().map(|l| {
+        let ty = &l.field.ty;
+        quote::quote_spanned!(syn::spanned::Spanned::span(ty)=> ::planar_arm::__private::link_field::<#ty>();)
+    });
+    quote!(const _: () = { #(#checks)* };)
 }
 
 /// The arm over the rationals, if no value names a run-time parameter.

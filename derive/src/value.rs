@@ -102,6 +102,24 @@ fn is_self(e: &Expr) -> bool {
     matches!(e, Expr::Path(p) if p.qself.is_none() && p.path.is_ident("self"))
 }
 
+/// The most digits, and the largest exponent, of one literal. Exact arithmetic on a value
+/// costs time in its size: with this bound every value is at most a few thousand bits per
+/// literal in it, where `1e100000` multiplied sixteen times took minutes.
+const MAX_DIGITS: usize = 400;
+
+fn ordinary_size(digits: &str) -> bool {
+    let (mantissa, exponent) = match digits.find(['e', 'E']) {
+        Some(i) => (&digits[..i], Some(&digits[i + 1..])),
+        None => (digits, None),
+    };
+    let exponent_ok = exponent.is_none_or(|e| {
+        let e = e.trim_start_matches(['+', '-']).trim_start_matches('0');
+        // An empty exponent is zero; syn has checked that the rest are digits.
+        e.len() <= 3 && e.parse::<usize>().map_or(true, |v| v <= MAX_DIGITS)
+    });
+    exponent_ok && mantissa.bytes().filter(u8::is_ascii_digit).count() <= MAX_DIGITS
+}
+
 fn literal(digits: &str, suffix: &str, span: &Lit) -> syn::Result<Poly> {
     if !matches!(
         suffix,
@@ -110,6 +128,15 @@ fn literal(digits: &str, suffix: &str, span: &Lit) -> syn::Result<Poly> {
         return Err(syn::Error::new_spanned(
             span,
             format!("unsupported suffix `{suffix}`; write the number without it"),
+        ));
+    }
+    if !ordinary_size(digits) {
+        return Err(syn::Error::new_spanned(
+            span,
+            format!(
+                "number out of range; a literal may have at most {MAX_DIGITS} digits and an \
+                 exponent of at most {MAX_DIGITS} (f64 spans about 1e-324 to 1e308)"
+            ),
         ));
     }
     parse_decimal(digits).map(Poly::constant).ok_or_else(|| {
@@ -142,6 +169,11 @@ mod tests {
         assert!(ev("1/0").is_err());
         assert!(ev("\"1\"").is_err());
         assert!(ev("foo").is_err());
+        assert_eq!(ev("1e400 / 1e400").unwrap(), Poly::constant(ratio(1, 1)));
+        assert_eq!(ev("2.5E-0").unwrap(), Poly::constant(ratio(5, 2)));
+        assert!(ev("1e401").is_err());
+        assert!(ev("1e-401").is_err());
+        assert!(ev(&"7".repeat(401)).is_err());
     }
 
     #[test]

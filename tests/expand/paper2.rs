@@ -1,7 +1,7 @@
 #[automatically_derived]
 impl ::planar_arm::PlanarArm<2> for Paper2 {
     const EXACT: ::planar_arm::exact::Derivation<2> = {
-        const __NAMES: &[&str] = &[];
+        const __NAMES: &[&::core::primitive::str] = &[];
         ::planar_arm::exact::Derivation {
             kinetic_energy: ::planar_arm::__private::terms(
                 b"AKMBACABCECACBACAACGCABCBABCECACCABCBAACMBCCA",
@@ -350,8 +350,8 @@ Cost: 4 multiplications, 4 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
     fn tip_pose(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
-    ) -> ::planar_arm::nalgebra::Isometry2<f64> {
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+    ) -> ::planar_arm::nalgebra::Isometry2<::core::primitive::f64> {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
         let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
             __q1,
@@ -419,7 +419,10 @@ r^2 = 2 + 2 c2
 
 Cost: 5 multiplications, 5 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
-    fn tip_polar(&self, __q: &::planar_arm::nalgebra::SVector<f64, 2>) -> (f64, f64) {
+    fn tip_polar(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+    ) -> (::core::primitive::f64, ::core::primitive::f64) {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
         let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
             __q1,
@@ -438,10 +441,10 @@ Cost: 8 multiplications, 10 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
     fn joint_torques(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
-        __force: &::planar_arm::nalgebra::Vector2<f64>,
-        __torque: f64,
-    ) -> ::planar_arm::nalgebra::SVector<f64, 2> {
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+        __force: &::planar_arm::nalgebra::Vector2<::core::primitive::f64>,
+        __torque: ::core::primitive::f64,
+    ) -> ::planar_arm::nalgebra::SVector<::core::primitive::f64, 2> {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
         let [__u, __v] = ::planar_arm::__private::unpack(__force);
         let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
@@ -454,19 +457,146 @@ Cost: 8 multiplications, 10 additions, 0 divisions, 2 sin_cos pairs.*/
         let __tau2 = __torque + __u * (-__s12) + __v * __c12;
         ::planar_arm::__private::vector([__tau1, __tau2])
     }
+    /**The partial derivatives of `inverse_dynamics`, `(dtau/dq, dtau/dqd)` (`dtau/dqdd` is `mass_matrix`), straight-line code differentiated exactly at compile time. Coulomb friction contributes 0 to `dtau/dqd`, also at `qd_i = 0` where it jumps.
+
+Differentiated exactly at compile time: each torque's expanded formula differentiated symbolically (exact rational coefficients), evaluated term by term.
+
+Cost: 17 multiplications, 13 additions, 0 divisions, 2 sin_cos pairs.*/
+    #[inline]
+    fn inverse_dynamics_derivatives(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+        __qdd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+    ) -> (
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
+    ) {
+        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
+        let [__qdd1, __qdd2] = ::planar_arm::__private::unpack(__qdd);
+        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+        ]);
+        let __s12 = __s1 * __c2 + __c1 * __s2;
+        let __t1 = (981.0 / 200.0) * __s12;
+        let __dtau1_dq1 = -((2943.0 / 200.0) * __s1) - __t1;
+        let __t2 = (1.0 / 2.0) * __s2;
+        let __t3 = (1.0 / 2.0) * __c2;
+        let __dtau2_dq1 = -__t1;
+        let __dtau1_dq2 = __dtau2_dq1
+            - (__c2 * __qd1 * __qd2 + __t3 * __qd2 * __qd2 + __s2 * __qdd1
+                + __t2 * __qdd2);
+        let __dtau2_dq2 = __t3 * __qd1 * __qd1 - (__t1 + __qdd1 * __t2);
+        let __t4 = __s2 * __qd2;
+        let __dtau1_dqd1 = -__t4;
+        let __dtau2_dqd1 = __s2 * __qd1;
+        let __dtau1_dqd2 = -__dtau2_dqd1 - __t4;
+        let __dtau2_dqd2 = 0.0;
+        (
+            ::planar_arm::__private::matrix([
+                [__dtau1_dq1, __dtau1_dq2],
+                [__dtau2_dq1, __dtau2_dq2],
+            ]),
+            ::planar_arm::__private::matrix([
+                [__dtau1_dqd1, __dtau1_dqd2],
+                [__dtau2_dqd1, __dtau2_dqd2],
+            ]),
+        )
+    }
+    /**The partial derivatives of `forward_dynamics`, `(dqdd/dq, dqdd/dqd, dqdd/dtau)`, straight-line code built at compile time. Coulomb friction as in `inverse_dynamics_derivatives`.
+
+qdd from the forward dynamics program; dtau/dq and dtau/dqd at that qdd as `inverse_dynamics_derivatives` computes them; M^-1 by Cramer's rule with 1 / det M computed once; then dqdd/dq = -M^-1 dtau/dq and dqdd/dqd = -M^-1 dtau/dqd as products.
+
+Cost: 47 multiplications, 36 additions, 3 divisions, 2 sin_cos pairs.*/
+    #[inline]
+    fn forward_dynamics_derivatives(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+        __tau: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+    ) -> (
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
+    ) {
+        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
+        let [__tau1, __tau2] = ::planar_arm::__private::unpack(__tau);
+        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+        ]);
+        let __t1 = (5.0 / 3.0) + __c2;
+        let __t2 = (1.0 / 2.0) * __c2;
+        let __t3 = (1.0 / 3.0) + __t2;
+        let __t4 = __qd1 * __qd2;
+        let __t5 = (1.0 / 2.0) * __s2;
+        let __t6 = __qd2 * __qd2;
+        let __t7 = __qd1 * __qd1;
+        let __c12 = __c2 * __c1 - __s2 * __s1;
+        let __s12 = __c2 * __s1 + __s2 * __c1;
+        let __t8 = (981.0 / 200.0) * __c12;
+        let __rhs1 = __tau1 - (-(__s2 * __t4) - __t5 * __t6)
+            - ((2943.0 / 200.0) * __c1 + __t8);
+        let __rhs2 = __tau2 - __t5 * __t7 - __t8;
+        let __det = (7.0 / 36.0) + (1.0 / 4.0) * __s2 * __s2;
+        let __t9 = ((1.0 / 3.0) * __rhs1 - __t3 * __rhs2) / __det;
+        let __t10 = (981.0 / 200.0) * __s12;
+        let __t11 = -((2943.0 / 200.0) * __s1) - __t10;
+        let __t12 = -__t10;
+        let __t13 = __t12
+            - (__c2 * __t4 + __t2 * __t6 + __s2 * __t9
+                + __t5 * (__t1 * __rhs2 - __t3 * __rhs1) / __det);
+        let __t14 = __t2 * __t7 - (__t10 + __t5 * __t9);
+        let __t15 = __s2 * __qd2;
+        let __t16 = -__t15;
+        let __t17 = __s2 * __qd1;
+        let __t18 = -__t17 - __t15;
+        let __inv_det = 1.0 / __det;
+        let __dqdd1_dtau1 = (1.0 / 3.0) * __inv_det;
+        let __dqdd1_dtau2 = __inv_det * (-__t3);
+        let __dqdd2_dtau2 = __t1 * __inv_det;
+        let __t19 = -__dqdd1_dtau1;
+        let __t20 = -__dqdd1_dtau2;
+        let __t21 = -__dqdd2_dtau2;
+        let __dqdd1_dq1 = __t11 * __t19 + __t12 * __t20;
+        let __dqdd2_dq1 = __t11 * __t20 + __t12 * __t21;
+        let __dqdd1_dq2 = __t13 * __t19 + __t14 * __t20;
+        let __dqdd2_dq2 = __t13 * __t20 + __t14 * __t21;
+        let __dqdd1_dqd1 = __t16 * __t19 + __t17 * __t20;
+        let __dqdd2_dqd1 = __t16 * __t20 + __t17 * __t21;
+        let __dqdd1_dqd2 = __t18 * __t19;
+        let __dqdd2_dqd2 = __t18 * __t20;
+        (
+            ::planar_arm::__private::matrix([
+                [__dqdd1_dq1, __dqdd1_dq2],
+                [__dqdd2_dq1, __dqdd2_dq2],
+            ]),
+            ::planar_arm::__private::matrix([
+                [__dqdd1_dqd1, __dqdd1_dqd2],
+                [__dqdd2_dqd1, __dqdd2_dqd2],
+            ]),
+            ::planar_arm::__private::matrix([
+                [__dqdd1_dtau1, __dqdd1_dtau2],
+                [__dqdd1_dtau2, __dqdd2_dtau2],
+            ]),
+        )
+    }
     #[doc(hidden)]
     type __Frozen = ::planar_arm::__private::Block<0>;
 }
 #[automatically_derived]
 impl ::planar_arm::kinematics::ClosedFormIk<2> for Paper2 {
-    type Target = ::planar_arm::nalgebra::Point2<f64>;
+    type Target = ::planar_arm::nalgebra::Point2<::core::primitive::f64>;
     ///The paper's closed form for two equal links: cos(q2/2) = r / 2l, q1 + q2/2 = atan2(y, x).
     #[inline]
     fn inverse_kinematics(
         &self,
-        __target: &::planar_arm::nalgebra::Point2<f64>,
+        __target: &::planar_arm::nalgebra::Point2<::core::primitive::f64>,
     ) -> ::core::result::Result<
-        [::planar_arm::nalgebra::SVector<f64, 2>; 2],
+        [::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>; 2],
         ::planar_arm::ArmError,
     > {
         ::planar_arm::kinematics::ik2_equal(1.0, __target)
@@ -477,10 +607,10 @@ impl ::planar_arm::kinematics::TipForce for Paper2 {
     #[inline]
     fn tip_force(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 2>,
-        __tau: &::planar_arm::nalgebra::SVector<f64, 2>,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+        __tau: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
     ) -> ::core::result::Result<
-        ::planar_arm::nalgebra::Vector2<f64>,
+        ::planar_arm::nalgebra::Vector2<::core::primitive::f64>,
         ::planar_arm::ArmError,
     > {
         ::planar_arm::kinematics::tip_force2(1.0, 1.0, __q, __tau)

@@ -1,7 +1,7 @@
 #[automatically_derived]
 impl ::planar_arm::PlanarArm<3> for Paper3 {
     const EXACT: ::planar_arm::exact::Derivation<3> = {
-        const __NAMES: &[&str] = &[];
+        const __NAMES: &[&::core::primitive::str] = &[];
         ::planar_arm::exact::Derivation {
             kinetic_energy: ::planar_arm::__private::terms(
                 b"AECBACABGECACBACABCEDACCBACABCEDAACBACAAKGCABCBABGECACCABCBABCEDACCCABCBABCCDAACCABCBAACGCABEBABCEDACCCABEBABCEDAACCABEBAAKMBCCABCEDAACBCCAACGCCBEBABCEDAACCCBEBAACMBECA",
@@ -586,8 +586,8 @@ Cost: 8 multiplications, 8 additions, 0 divisions, 3 sin_cos pairs.*/
     #[inline]
     fn tip_pose(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
-    ) -> ::planar_arm::nalgebra::Isometry2<f64> {
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+    ) -> ::planar_arm::nalgebra::Isometry2<::core::primitive::f64> {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
             __q1,
@@ -678,7 +678,10 @@ r^2 = 3 + 2 c2 + 2 c23 + 2 c3
 
 Cost: 13 multiplications, 12 additions, 0 divisions, 3 sin_cos pairs.*/
     #[inline]
-    fn tip_polar(&self, __q: &::planar_arm::nalgebra::SVector<f64, 3>) -> (f64, f64) {
+    fn tip_polar(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+    ) -> (::core::primitive::f64, ::core::primitive::f64) {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
             __q1,
@@ -701,10 +704,10 @@ Cost: 14 multiplications, 19 additions, 0 divisions, 3 sin_cos pairs.*/
     #[inline]
     fn joint_torques(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
-        __force: &::planar_arm::nalgebra::Vector2<f64>,
-        __torque: f64,
-    ) -> ::planar_arm::nalgebra::SVector<f64, 3> {
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+        __force: &::planar_arm::nalgebra::Vector2<::core::primitive::f64>,
+        __torque: ::core::primitive::f64,
+    ) -> ::planar_arm::nalgebra::SVector<::core::primitive::f64, 3> {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [__u, __v] = ::planar_arm::__private::unpack(__force);
         let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
@@ -722,20 +725,285 @@ Cost: 14 multiplications, 19 additions, 0 divisions, 3 sin_cos pairs.*/
         let __tau3 = __torque + __u * (-__s123) + __v * __c123;
         ::planar_arm::__private::vector([__tau1, __tau2, __tau3])
     }
+    /**The partial derivatives of `inverse_dynamics`, `(dtau/dq, dtau/dqd)` (`dtau/dqdd` is `mass_matrix`), straight-line code differentiated exactly at compile time. Coulomb friction contributes 0 to `dtau/dqd`, also at `qd_i = 0` where it jumps.
+
+Differentiated exactly at compile time: each torque's expanded formula differentiated symbolically (exact rational coefficients), evaluated term by term.
+
+Cost: 68 multiplications, 76 additions, 0 divisions, 3 sin_cos pairs.*/
+    #[inline]
+    fn inverse_dynamics_derivatives(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+        __qdd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+    ) -> (
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 3, 3>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 3, 3>,
+    ) {
+        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
+        let [__qdd1, __qdd2, __qdd3] = ::planar_arm::__private::unpack(__qdd);
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+        ]);
+        let __c12 = __c1 * __c2 - __s1 * __s2;
+        let __s12 = __s1 * __c2 + __c1 * __s2;
+        let __t1 = (2943.0 / 200.0) * __s12;
+        let __s123 = __s12 * __c3 + __c12 * __s3;
+        let __t2 = (981.0 / 200.0) * __s123;
+        let __dtau1_dq1 = -((981.0 / 40.0) * __s1) - (__t1 + __t2);
+        let __dtau2_dq1 = -__t1 - __t2;
+        let __t3 = 3.0 * __s2;
+        let __c23 = __c2 * __c3 - __s2 * __s3;
+        let __s23 = __s2 * __c3 + __c2 * __s3;
+        let __t4 = -__t3 - __s23;
+        let __t5 = (1.0 / 2.0) * __s23;
+        let __t6 = -((3.0 / 2.0) * __s2) - __t5;
+        let __t7 = __qd1 * __qd2;
+        let __t8 = __qd1 * __qd3;
+        let __t9 = (3.0 / 2.0) * __c2;
+        let __t10 = (1.0 / 2.0) * __c23;
+        let __t11 = __qd2 * __qd2;
+        let __t12 = __qd2 * __qd3;
+        let __t13 = __qd3 * __qd3;
+        let __dtau1_dq2 = __t6 * __qdd2 + __dtau2_dq1 + __t4 * __qdd1
+            + (-(3.0 * __c2) - __c23) * __t7 + (-__t9 - __t10) * __t11
+            - (__t5 * __qdd3 + __c23 * __t8 + __c23 * __t12 + __t10 * __t13);
+        let __t14 = -__s23 - __s3;
+        let __t15 = -__t5;
+        let __t16 = __t15 - __s3;
+        let __t17 = (1.0 / 2.0) * __s3;
+        let __t18 = __t15 - __t17;
+        let __t19 = -__c23 - __c3;
+        let __t20 = (1.0 / 2.0) * __c3;
+        let __dtau1_dq3 = __qdd3 * __t18 + __qdd1 * __t14 + __qdd2 * __t16
+            + __t13 * (-__t10 - __t20) + __t8 * __t19 + __t12 * __t19
+            - (__t10 * __t11 + __t2 + __c23 * __t7);
+        let __t21 = __qd1 * __qd1;
+        let __dtau2_dq2 = (__t9 + __t10) * __t21 + __dtau2_dq1 + __qdd1 * __t6;
+        let __t22 = __t10 * __t21;
+        let __dtau2_dq3 = __qdd1 * __t16 + __t22
+            - (__qdd3 * __t17 + __t2 + __s3 * __qdd2 + __t13 * __t20 + __c3 * __t8
+                + __c3 * __t12);
+        let __dtau3_dq1 = -__t2;
+        let __dtau3_dq2 = __t22 - (__t2 + __qdd1 * __t5);
+        let __dtau3_dq3 = __qdd1 * __t18 + (__t10 + __t20) * __t21 + __c3 * __t7
+            + __t11 * __t20 - (__t2 + __qdd2 * __t17);
+        let __t23 = __t4 * __qd2;
+        let __t24 = __qd3 * __t14;
+        let __dtau1_dqd1 = __t23 + __t24;
+        let __dtau1_dqd2 = __t24 + __t23 + __t4 * __qd1;
+        let __dtau1_dqd3 = __t24 + __qd1 * __t14 + __qd2 * __t14;
+        let __t25 = __s3 * __qd3;
+        let __dtau2_dqd1 = (__t3 + __s23) * __qd1 - __t25;
+        let __dtau2_dqd2 = -__t25;
+        let __t26 = __s3 * __qd1;
+        let __t27 = __s3 * __qd2;
+        let __dtau3_dqd2 = __t26 + __t27;
+        let __dtau2_dqd3 = -__t26 - (__t25 + __t27);
+        let __dtau3_dqd1 = __t27 + __qd1 * (__s3 + __s23);
+        let __dtau3_dqd3 = 0.0;
+        (
+            ::planar_arm::__private::matrix([
+                [__dtau1_dq1, __dtau1_dq2, __dtau1_dq3],
+                [__dtau2_dq1, __dtau2_dq2, __dtau2_dq3],
+                [__dtau3_dq1, __dtau3_dq2, __dtau3_dq3],
+            ]),
+            ::planar_arm::__private::matrix([
+                [__dtau1_dqd1, __dtau1_dqd2, __dtau1_dqd3],
+                [__dtau2_dqd1, __dtau2_dqd2, __dtau2_dqd3],
+                [__dtau3_dqd1, __dtau3_dqd2, __dtau3_dqd3],
+            ]),
+        )
+    }
+    /**The partial derivatives of `forward_dynamics`, `(dqdd/dq, dqdd/dqd, dqdd/dtau)`, straight-line code built at compile time. Coulomb friction as in `inverse_dynamics_derivatives`.
+
+qdd from the forward dynamics program; dtau/dq and dtau/dqd at that qdd as `inverse_dynamics_derivatives` computes them; M^-1 by an unrolled L D L^T factorisation of M, computed once; then dqdd/dq = -M^-1 dtau/dq and dqdd/dqd = -M^-1 dtau/dqd as products.
+
+Cost: 171 multiplications, 178 additions, 3 divisions, 3 sin_cos pairs.*/
+    #[inline]
+    fn forward_dynamics_derivatives(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+        __tau: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+    ) -> (
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 3, 3>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 3, 3>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 3, 3>,
+    ) {
+        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
+        let [__tau1, __tau2, __tau3] = ::planar_arm::__private::unpack(__tau);
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+        ]);
+        let __t1 = 3.0 * __c2;
+        let __c23 = __c2 * __c3 - __s2 * __s3;
+        let __s23 = __s2 * __c3 + __c2 * __s3;
+        let __t2 = (3.0 / 2.0) * __c2;
+        let __t3 = (1.0 / 2.0) * __c23;
+        let __t4 = (5.0 / 3.0) + __t2 + __c3 + __t3;
+        let __t5 = (1.0 / 2.0) * __c3;
+        let __t6 = __t5 + __t3 + (1.0 / 3.0);
+        let __t7 = __qd1 * __qd1;
+        let __ex1 = -__t7;
+        let __ax2 = __c2 * __ex1;
+        let __t8 = __s2 * __ex1;
+        let __ay2 = -__t8;
+        let __w2 = __qd1 + __qd2;
+        let __t9 = __w2 * __w2;
+        let __ex2 = __ax2 - __t9;
+        let __ax3 = __c3 * __ex2 + __s3 * __ay2;
+        let __ay3 = __c3 * __ay2 - __s3 * __ex2;
+        let __w3 = __w2 + __qd3;
+        let __fx3 = __ax3 - (1.0 / 2.0) * __w3 * __w3;
+        let __t10 = (1.0 / 2.0) * __ay3;
+        let __t11 = __s3 * __fx3 + __c3 * __ay3;
+        let __fx2 = __ax2 - (1.0 / 2.0) * __t9 + __c3 * __fx3 - __s3 * __ay3;
+        let __fy2 = __t11 - __t8;
+        let __t12 = __t10 + (1.0 / 2.0) * __ay2 + __t11;
+        let __fy1 = __s2 * __fx2 + __c2 * __fy2;
+        let __c12 = __c2 * __c1 - __s2 * __s1;
+        let __s12 = __c2 * __s1 + __s2 * __c1;
+        let __t13 = (2943.0 / 200.0) * __c12;
+        let __c123 = __c3 * __c12 - __s3 * __s12;
+        let __s123 = __c3 * __s12 + __s3 * __c12;
+        let __t14 = (981.0 / 200.0) * __c123;
+        let __rhs1 = __tau1 - (__t12 + __fy1) - (__t14 + (981.0 / 40.0) * __c1 + __t13);
+        let __rhs2 = __tau2 - __t12 - (__t13 + __t14);
+        let __rhs3 = __tau3 - __t10 - __t14;
+        let __d1 = (4.0 + __t1 + __c3 + __c23).max((9.0 / 4503599627370496.0));
+        let __inv_d1 = 1.0 / __d1;
+        let __l21 = __t4 * __inv_d1;
+        let __d2 = (__c3 + (5.0 / 3.0) - __t4 * __l21).max((1.0 / 1688849860263936.0));
+        let __inv_d2 = 1.0 / __d2;
+        let __l31 = __t6 * __inv_d1;
+        let __t15 = (1.0 / 3.0) + __t5 - __t4 * __l31;
+        let __l32 = __inv_d2 * __t15;
+        let __d3 = ((1.0 / 3.0) - __t6 * __l31 - __t15 * __l32)
+            .max(0.00000000000000007401486830834377);
+        let __dqdd3_dtau3 = 1.0 / __d3;
+        let __t16 = __rhs2 - __rhs1 * __l21;
+        let __t17 = __dqdd3_dtau3 * (__rhs3 - __rhs1 * __l31 - __l32 * __t16);
+        let __t18 = __inv_d2 * __t16 - __l32 * __t17;
+        let __t19 = __rhs1 * __inv_d1 - __l21 * __t18 - __l31 * __t17;
+        let __t20 = (2943.0 / 200.0) * __s12;
+        let __t21 = (981.0 / 200.0) * __s123;
+        let __t22 = -((981.0 / 40.0) * __s1) - (__t20 + __t21);
+        let __t23 = -__t20 - __t21;
+        let __t24 = 3.0 * __s2;
+        let __t25 = -__t24 - __s23;
+        let __t26 = (1.0 / 2.0) * __s23;
+        let __t27 = -((3.0 / 2.0) * __s2) - __t26;
+        let __t28 = __qd1 * __qd2;
+        let __t29 = __qd1 * __qd3;
+        let __t30 = __qd2 * __qd2;
+        let __t31 = __qd2 * __qd3;
+        let __t32 = __qd3 * __qd3;
+        let __t33 = __t18 * __t27 + __t23 + __t19 * __t25 + (-__t1 - __c23) * __t28
+            + (-__t2 - __t3) * __t30
+            - (__t17 * __t26 + __c23 * __t29 + __c23 * __t31 + __t3 * __t32);
+        let __t34 = -__s23 - __s3;
+        let __t35 = -__t26;
+        let __t36 = __t35 - __s3;
+        let __t37 = (1.0 / 2.0) * __s3;
+        let __t38 = __t35 - __t37;
+        let __t39 = -__c23 - __c3;
+        let __t40 = __t17 * __t38 + __t19 * __t34 + __t18 * __t36
+            + __t32 * (-__t3 - __t5) + __t29 * __t39 + __t31 * __t39
+            - (__t3 * __t30 + __t21 + __c23 * __t28);
+        let __t41 = __t7 * (__t2 + __t3) + __t23 + __t19 * __t27;
+        let __t42 = __t3 * __t7;
+        let __t43 = __t19 * __t36 + __t42
+            - (__t17 * __t37 + __t21 + __s3 * __t18 + __t5 * __t32 + __c3 * __t29
+                + __c3 * __t31);
+        let __t44 = -__t21;
+        let __t45 = __t42 - (__t21 + __t19 * __t26);
+        let __t46 = __t19 * __t38 + __t7 * (__t3 + __t5) + __c3 * __t28 + __t5 * __t30
+            - (__t21 + __t18 * __t37);
+        let __t47 = __qd2 * __t25;
+        let __t48 = __qd3 * __t34;
+        let __t49 = __t47 + __t48;
+        let __t50 = __t48 + __t47 + __qd1 * __t25;
+        let __t51 = __t48 + __qd1 * __t34 + __qd2 * __t34;
+        let __t52 = __s3 * __qd3;
+        let __t53 = __qd1 * (__s23 + __t24) - __t52;
+        let __t54 = -__t52;
+        let __t55 = __s3 * __qd1;
+        let __t56 = __s3 * __qd2;
+        let __t57 = __t55 + __t56;
+        let __t58 = -__t55 - (__t52 + __t56);
+        let __t59 = __t56 + __qd1 * (__s3 + __s23);
+        let __t60 = -__l21;
+        let __dqdd3_dtau1 = __dqdd3_dtau3 * (-__l31 - __l32 * __t60);
+        let __dqdd2_dtau1 = __inv_d2 * __t60 - __l32 * __dqdd3_dtau1;
+        let __dqdd1_dtau1 = __inv_d1 - __l21 * __dqdd2_dtau1 - __l31 * __dqdd3_dtau1;
+        let __dqdd3_dtau2 = __dqdd3_dtau3 * (-__l32);
+        let __dqdd2_dtau2 = __inv_d2 - __l32 * __dqdd3_dtau2;
+        let __dqdd1_dtau2 = -(__l21 * __dqdd2_dtau2) - __l31 * __dqdd3_dtau2;
+        let __dqdd2_dtau3 = -(__l32 * __dqdd3_dtau3);
+        let __dqdd1_dtau3 = -(__l21 * __dqdd2_dtau3) - __l31 * __dqdd3_dtau3;
+        let __t61 = -__dqdd1_dtau1;
+        let __t62 = -__dqdd2_dtau1;
+        let __t63 = -__dqdd3_dtau1;
+        let __t64 = -__dqdd2_dtau2;
+        let __t65 = -__dqdd3_dtau2;
+        let __t66 = -__dqdd3_dtau3;
+        let __dqdd1_dq1 = __t44 * __t63 + __t22 * __t61 + __t23 * __t62;
+        let __dqdd2_dq1 = __t44 * __t65 + __t22 * __t62 + __t23 * __t64;
+        let __dqdd3_dq1 = __t44 * __t66 + __t22 * __t63 + __t23 * __t65;
+        let __dqdd1_dq2 = __t45 * __t63 + __t33 * __t61 + __t41 * __t62;
+        let __dqdd2_dq2 = __t45 * __t65 + __t33 * __t62 + __t41 * __t64;
+        let __dqdd3_dq2 = __t45 * __t66 + __t33 * __t63 + __t41 * __t65;
+        let __dqdd1_dq3 = __t46 * __t63 + __t40 * __t61 + __t43 * __t62;
+        let __dqdd2_dq3 = __t46 * __t65 + __t40 * __t62 + __t43 * __t64;
+        let __dqdd3_dq3 = __t46 * __t66 + __t40 * __t63 + __t43 * __t65;
+        let __dqdd1_dqd1 = __t59 * __t63 + __t49 * __t61 + __t53 * __t62;
+        let __dqdd2_dqd1 = __t59 * __t65 + __t49 * __t62 + __t53 * __t64;
+        let __dqdd3_dqd1 = __t59 * __t66 + __t49 * __t63 + __t53 * __t65;
+        let __dqdd1_dqd2 = __t57 * __t63 + __t50 * __t61 + __t54 * __t62;
+        let __dqdd2_dqd2 = __t57 * __t65 + __t50 * __t62 + __t54 * __t64;
+        let __dqdd3_dqd2 = __t57 * __t66 + __t50 * __t63 + __t54 * __t65;
+        let __dqdd1_dqd3 = __t51 * __t61 + __t58 * __t62;
+        let __dqdd2_dqd3 = __t51 * __t62 + __t58 * __t64;
+        let __dqdd3_dqd3 = __t51 * __t63 + __t58 * __t65;
+        (
+            ::planar_arm::__private::matrix([
+                [__dqdd1_dq1, __dqdd1_dq2, __dqdd1_dq3],
+                [__dqdd2_dq1, __dqdd2_dq2, __dqdd2_dq3],
+                [__dqdd3_dq1, __dqdd3_dq2, __dqdd3_dq3],
+            ]),
+            ::planar_arm::__private::matrix([
+                [__dqdd1_dqd1, __dqdd1_dqd2, __dqdd1_dqd3],
+                [__dqdd2_dqd1, __dqdd2_dqd2, __dqdd2_dqd3],
+                [__dqdd3_dqd1, __dqdd3_dqd2, __dqdd3_dqd3],
+            ]),
+            ::planar_arm::__private::matrix([
+                [__dqdd1_dtau1, __dqdd1_dtau2, __dqdd1_dtau3],
+                [__dqdd2_dtau1, __dqdd2_dtau2, __dqdd2_dtau3],
+                [__dqdd3_dtau1, __dqdd3_dtau2, __dqdd3_dtau3],
+            ]),
+        )
+    }
     #[doc(hidden)]
     type __Frozen = ::planar_arm::__private::Block<0>;
 }
 #[automatically_derived]
 impl ::planar_arm::kinematics::ClosedFormIk<3> for Paper3 {
-    type Target = ::planar_arm::nalgebra::Isometry2<f64>;
+    type Target = ::planar_arm::nalgebra::Isometry2<::core::primitive::f64>;
     /// Through the wrist point, as in the paper: the two-link solution for
     /// (x - l3 cos phi, y - l3 sin phi), then q3 = phi - q1 - q2.
     #[inline]
     fn inverse_kinematics(
         &self,
-        __target: &::planar_arm::nalgebra::Isometry2<f64>,
+        __target: &::planar_arm::nalgebra::Isometry2<::core::primitive::f64>,
     ) -> ::core::result::Result<
-        [::planar_arm::nalgebra::SVector<f64, 3>; 2],
+        [::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>; 2],
         ::planar_arm::ArmError,
     > {
         ::planar_arm::kinematics::ik3(1.0, 1.0, 1.0, __target)
@@ -746,10 +1014,13 @@ impl ::planar_arm::kinematics::TipWrench for Paper3 {
     #[inline]
     fn tip_wrench(
         &self,
-        __q: &::planar_arm::nalgebra::SVector<f64, 3>,
-        __tau: &::planar_arm::nalgebra::SVector<f64, 3>,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+        __tau: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
     ) -> ::core::result::Result<
-        (::planar_arm::nalgebra::Vector2<f64>, f64),
+        (
+            ::planar_arm::nalgebra::Vector2<::core::primitive::f64>,
+            ::core::primitive::f64,
+        ),
         ::planar_arm::ArmError,
     > {
         ::planar_arm::kinematics::tip_wrench3(1.0, 1.0, 1.0, __q, __tau)
