@@ -248,3 +248,57 @@ fn terms_print_and_read_in_const_contexts() {
     let carried = <Carrier as PlanarArm<2>>::EXACT.mass_matrix[1][1].to_string();
     assert!(carried.contains("load"), "{carried}");
 }
+
+#[derive(PlanarArm)]
+#[arm(gravity = 0, payload = self.load)]
+struct PaperRods {
+    #[arm(length = 1, mass = 1)]
+    upper: Revolute,
+    #[arm(length = 1, mass = 1)]
+    fore: Revolute,
+    load: f64,
+}
+
+#[test]
+fn the_derivation_prints_as_formulas_and_latex() {
+    let d = <PaperRods as PlanarArm<2>>::EXACT;
+    let text = d.to_string();
+    let lines: Vec<&str> = text.lines().collect();
+    // T, V, the upper triangle of M, c1, c2, g1, g2.
+    assert_eq!(lines.len(), 2 + 3 + 2 + 2, "{text}");
+    // The paper's mass matrix for two unit rods (m = l = 1) with a point load at the tip:
+    // the rods give 5/3 + cos q2, 1/3 + 1/2 cos q2 and 1/3; the load adds
+    // load (|r1 + r2|^2, r2 . (r1 + r2), |r2|^2) = load (2 + 2 cos q2, 1 + cos q2, 1).
+    assert!(
+        lines.contains(&"M11 = 5/3 + 2 load + cos(q2) + 2 load cos(q2)"),
+        "{text}"
+    );
+    assert!(
+        lines.contains(&"M12 = 1/3 + load + 1/2 cos(q2) + load cos(q2)"),
+        "{text}"
+    );
+    assert!(lines.contains(&"M22 = 1/3 + load"), "{text}");
+    assert!(
+        lines.contains(&"g1 = 0") && lines.contains(&"V = 0"),
+        "{text}"
+    );
+    assert!(!text.contains("Rational") && !text.contains("numer"));
+
+    let latex = d.latex().to_string();
+    assert!(latex.starts_with("\\begin{aligned}\n") && latex.ends_with("\\end{aligned}"));
+    assert!(
+        latex.contains(
+            r"M_{11} &= \frac{5}{3} + 2 \mathrm{load} + \cos q_{2} + 2 \mathrm{load} \cos q_{2} \\"
+        ),
+        "{latex}"
+    );
+    // Every formula on its own line, each but the last ended by a LaTeX line break.
+    assert_eq!(latex.matches(" &= ").count(), lines.len());
+    assert_eq!(latex.matches(" \\\\\n").count(), lines.len() - 1);
+    // The velocity products: rates as dots, squares as exponents.
+    let c1 = d.coriolis[0].latex().to_string();
+    assert!(
+        c1.contains(r"\sin q_{2} \dot{q}_{2}^{2}") && c1.contains(r"\dot{q}_{1} \dot{q}_{2}"),
+        "{c1}"
+    );
+}

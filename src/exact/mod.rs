@@ -35,6 +35,9 @@
 
 #[cfg(not(feature = "std"))]
 use num_traits::Float as _;
+
+mod render;
+pub use render::Latex;
 /// An exact fraction with `i128` parts, reduced, denominator positive.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Rational {
@@ -100,16 +103,6 @@ impl Rational {
     #[allow(clippy::cast_precision_loss)] // documented: a float view of an exact value
     pub fn to_f64(self) -> f64 {
         self.numer as f64 / self.denom as f64
-    }
-}
-
-impl core::fmt::Display for Rational {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        if self.denom == 1 {
-            write!(f, "{}", self.numer)
-        } else {
-            write!(f, "{}/{}", self.numer, self.denom)
-        }
     }
 }
 
@@ -325,73 +318,6 @@ impl core::fmt::Debug for Terms {
     }
 }
 
-impl core::fmt::Display for Terms {
-    /// `5/3 + cos(q2) - 1/2 m2 sin(q2 + q3) qd1 qd2`.
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        let mut first = true;
-        for t in self.iter() {
-            let negative = t.coeff.numer < 0;
-            match (first, negative) {
-                (true, true) => write!(f, "-")?,
-                (true, false) => {}
-                (false, true) => write!(f, " - ")?,
-                (false, false) => write!(f, " + ")?,
-            }
-            first = false;
-            let magnitude = Rational {
-                numer: t.coeff.numer.abs(),
-                denom: t.coeff.denom,
-            };
-            let mut factors = 0;
-            if magnitude.numer != magnitude.denom {
-                write!(f, "{magnitude}")?;
-                factors += 1;
-            }
-            let mut sep = |f: &mut core::fmt::Formatter<'_>| {
-                factors += 1;
-                if factors > 1 {
-                    write!(f, " ")
-                } else {
-                    Ok(())
-                }
-            };
-            for (name, e) in t.params {
-                sep(f)?;
-                write!(f, "{name}")?;
-                if e > 1 {
-                    write!(f, "^{e}")?;
-                }
-            }
-            if let Trig::Cos(a) | Trig::Sin(a) = t.trig {
-                sep(f)?;
-                let fun = if matches!(t.trig, Trig::Cos(_)) {
-                    "cos"
-                } else {
-                    "sin"
-                };
-                write!(f, "{fun}({a})")?;
-            }
-            for (v, e) in t.powers {
-                sep(f)?;
-                match v {
-                    Var::Qd(j) => write!(f, "qd{}", j + 1)?,
-                    Var::Qdd(j) => write!(f, "qdd{}", j + 1)?,
-                }
-                if e > 1 {
-                    write!(f, "^{e}")?;
-                }
-            }
-            if factors == 0 {
-                write!(f, "1")?;
-            }
-        }
-        if first {
-            write!(f, "0")?;
-        }
-        Ok(())
-    }
-}
-
 /// An integer combination of joint angles, `k . q`, with `k[0]` multiplying q1.
 #[derive(Clone, Copy, PartialEq, Eq, Hash)]
 pub struct Angle {
@@ -443,27 +369,6 @@ impl Angle {
 impl core::fmt::Debug for Angle {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.debug_list().entries(self.coefficients()).finish()
-    }
-}
-
-impl core::fmt::Display for Angle {
-    /// `q2 + q3`, `q1 - 2 q2`.
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        let mut first = true;
-        for (j, k) in self.coefficients().enumerate().filter(|&(_, k)| k != 0) {
-            match (first, k < 0) {
-                (true, true) => write!(f, "-")?,
-                (true, false) => {}
-                (false, true) => write!(f, " - ")?,
-                (false, false) => write!(f, " + ")?,
-            }
-            first = false;
-            if k.abs() != 1 {
-                write!(f, "{} ", k.abs())?;
-            }
-            write!(f, "q{}", j + 1)?;
-        }
-        Ok(())
     }
 }
 
