@@ -36,6 +36,18 @@ struct Paper3 {
     hand: Revolute,
 }
 
+/// Three links with a short hand (1, 1, 1/2), the paper's example of a usable work-space.
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81)]
+struct ShortHand {
+    #[arm(length = 1, mass = 1)]
+    upper: Revolute,
+    #[arm(length = 1, mass = 1)]
+    fore: Revolute,
+    #[arm(length = 1/2, mass = 1/2)]
+    hand: Revolute,
+}
+
 fn cos(k: &[i32]) -> Trig {
     Trig::Cos(Angle::new(k.to_vec()))
 }
@@ -262,7 +274,7 @@ fn kinematics_and_statics() {
     let target = Point2::new(1.2, 0.9);
     match two.inverse_kinematics(&target) {
         Ok([up, down]) => println!(
-            "Inverse kinematics of the paper's two links to (1.2, 0.9): elbow q = ({:.4}, {:.4}) or ({:.4}, {:.4})",
+            "Inverse kinematics of the paper's two links to (1.2, 0.9): q = ({:.4}, {:.4}) or ({:.4}, {:.4})",
             up[0], up[1], down[0], down[1]
         ),
         Err(e) => println!("inverse kinematics failed: {e}"),
@@ -273,18 +285,83 @@ fn kinematics_and_statics() {
     }
     let q = Vector2::new(0.4, 1.1);
     let tau = two.joint_torques(&q, &Vector2::new(1.0, -2.0), 0.0);
-    let back = two.tip_force(&q, &tau).map(|f| (f.x, f.y));
-    println!("Statics at q = (0.4, 1.1): tip force (1, -2) needs tau = ({:.4}, {:.4}); inverted back: {back:.4?}", tau[0], tau[1]);
+    match two.tip_force(&q, &tau) {
+        Ok(f) => println!(
+            "Statics of the two links at q = (0.4, 1.1): the tip force (1, -2) needs tau = ({:.4}, {:.4}); \
+             inverted back, the force is ({:.4}, {:.4})",
+            tau[0], tau[1], f.x, f.y
+        ),
+        Err(e) => println!("inverse statics failed: {e}"),
+    }
+
+    let three = Paper3::default();
+    let pose = Isometry2::new(Vector2::new(1.5, 1.0), 0.3);
+    match three.inverse_kinematics(&pose) {
+        Ok([a, b]) => println!(
+            "Inverse kinematics of the paper's three links to (1.5, 1) at 0.3 rad: q = ({:.4}, {:.4}, {:.4}) or ({:.4}, {:.4}, {:.4})",
+            a[0], a[1], a[2], b[0], b[1], b[2]
+        ),
+        Err(e) => println!("three-link inverse kinematics failed: {e}"),
+    }
     println!(
-        "Work-spaces: two equal links reach a disk of radius {} (inner radius {});",
-        two.workspace().outer_radius(),
-        two.workspace().inner_radius()
+        "Work-spaces: the two equal links reach radii {} to {};",
+        two.workspace().inner_radius(),
+        two.workspace().outer_radius()
     );
-    let d = DexterousWorkspace::of_lengths(1.0, 1.0, 0.5);
-    println!(
-        "  three links 1, 1, 1/2 reach every orientation within radius {:?} (paper: 2l - l3 = 1.5)",
-        d.disk_radius()
-    );
+    let usable = ShortHand::default().dexterous_workspace();
+    match usable.disk_radius() {
+        Some(r) => println!(
+            "  links 1, 1, 1/2 reach every orientation within radius {r} (paper: 2l - l3 = 1.5)"
+        ),
+        None => println!("  links 1, 1, 1/2 have no disk of every orientation"),
+    }
+
+    section("A short simulation");
+    simulate(&two);
+}
+
+/// The two rods released from rest, q = (-1, 0.4), swing for 5 s under gravity; RK4 at 1 ms
+/// keeps their energy (no friction) to about 1e-11 J.
+fn simulate(arm: &Paper2) {
+    use planar_arm::sim::{from_fn, Rk4, Simulator};
+    let energy =
+        |q: &Vector2<f64>, qd: &Vector2<f64>| arm.kinetic_energy(q, qd) + arm.potential_energy(q);
+    let start = Vector2::new(-1.0, 0.4);
+    let e0 = energy(&start, &Vector2::zeros());
+    let run = Simulator::new(Rk4, 1e-3)
+        .and_then(|sim| sim.with_control_period(0.5))
+        .and_then(|sim| {
+            let free = from_fn(|_, _: &Vector2<f64>, _: &Vector2<f64>| Vector2::zeros());
+            sim.run(arm, start, Vector2::zeros(), 5.0, free)
+        });
+    let run = match run {
+        Ok(run) => run,
+        Err(e) => {
+            println!("simulation failed: {e}");
+            return;
+        }
+    };
+    println!("   t       q1       q2      tip x    tip y    energy drift");
+    for state in run {
+        match state {
+            Ok(s) => {
+                let tip = arm.tip_pose(&s.q).translation;
+                println!(
+                    "{:5.2} {:8.4} {:8.4} {:8.4} {:8.4}    {:9.2e} J",
+                    s.t,
+                    s.q[0],
+                    s.q[1],
+                    tip.x,
+                    tip.y,
+                    energy(&s.q, &s.qd) - e0
+                );
+            }
+            Err(e) => {
+                println!("simulation stopped: {e}");
+                return;
+            }
+        }
+    }
 }
 
 /// The largest relative difference between generated and reference dynamics.
