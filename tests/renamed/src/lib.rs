@@ -1,7 +1,6 @@
 //! A crate that knows `planar_arm` as `arm` (renamed in its Cargo.toml), so generated code
 //! that named `::planar_arm` would not compile: `#[arm(crate = "arm")]` tells the derive.
 
-use arm::nalgebra::Vector2;
 use arm::{PlanarArm, Revolute};
 
 /// Two links; the path to the library is the renamed one.
@@ -17,6 +16,7 @@ pub struct Renamed {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use arm::nalgebra::Vector2;
 
     #[test]
     fn the_renamed_crate_derives_and_runs() {
