@@ -210,7 +210,10 @@ pub use linear::Linearize;
 pub use link::{Link, Revolute};
 pub use model::{Model, Payload};
 pub use nalgebra;
+// Inlined, so that the crate page's links to it resolve wherever planar_arm's docs are built
+// alone (docs.rs, `cargo doc -p planar_arm`), not only beside planar_arm_core's.
 #[cfg(feature = "symbolic")]
+#[doc(inline)]
 pub use planar_arm_core as symbolic;
 pub use planar_arm_derive::PlanarArm;
 pub use real::Real;
