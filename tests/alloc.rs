@@ -8,6 +8,10 @@ use std::cell::Cell;
 use std::hint::black_box;
 
 use planar_arm::prelude::*;
+use planar_arm::sim::{
+    ComputedTorque, Integrator, PdGravity, Quintic, Rk4, SemiImplicitEuler, Simulator, TipLine,
+    Trajectory, Variational4, VariationalMidpoint, ViaPoints,
+};
 
 struct Counting;
 
@@ -308,4 +312,65 @@ fn closed_form_inverse_kinematics_and_statics_do_not_allocate() {
     };
     calls();
     assert_no_allocation("closed-form inverse kinematics and statics", calls);
+}
+
+/// The simulation loop, both controllers, the integrators' steps, a tip-line sample and the
+/// step-size bound.
+#[test]
+fn simulating_does_not_allocate() {
+    let arm = TwoEqual::default();
+    let path = Quintic::rest_to_rest(Vector2::new(-1.2, 0.3), Vector2::new(0.6, 1.4), 1.0).unwrap();
+    let via = ViaPoints::new(
+        [0.0, 0.5, 1.0],
+        [
+            Vector2::new(0.0, 0.5),
+            Vector2::new(0.4, 0.9),
+            Vector2::new(0.8, 0.2),
+        ],
+    )
+    .unwrap();
+    let line = TipLine::new(&arm, Vector2::new(-0.5, 1.5), Point2::new(0.2, 1.4), 1.0).unwrap();
+    let n = allocations(|| {
+        let sim = Simulator::new(Rk4, 1e-3)
+            .unwrap()
+            .with_control_period(5e-3)
+            .unwrap();
+        let ct = ComputedTorque::critically_damped(&arm, path, 20.0);
+        for s in sim
+            .run(&arm, path.start().q, Vector2::zeros(), 0.2, ct)
+            .unwrap()
+        {
+            black_box(s.unwrap());
+        }
+        let pd = PdGravity::new(&arm, via, Vector2::new(50.0, 20.0), Vector2::new(5.0, 2.0));
+        let sim = Simulator::new(Variational4::default(), 1e-3).unwrap();
+        for s in sim
+            .run(&arm, Vector2::new(0.0, 0.5), Vector2::zeros(), 0.05, pd)
+            .unwrap()
+        {
+            black_box(s.unwrap());
+        }
+        let (q, qd, tau) = (
+            Vector2::new(0.1, 0.2),
+            Vector2::new(0.3, -0.1),
+            Vector2::new(1.0, 0.5),
+        );
+        black_box(SemiImplicitEuler.step(&arm, &q, &qd, &tau, 1e-3).unwrap());
+        black_box(
+            VariationalMidpoint::default()
+                .step(&arm, &q, &qd, &tau, 1e-3)
+                .unwrap(),
+        );
+        black_box(line.sample(0.4));
+        black_box(
+            planar_arm::sim::fastest_rate(
+                &arm,
+                &q,
+                &Vector2::new(10.0, 5.0),
+                &Vector2::new(1.0, 1.0),
+            )
+            .unwrap(),
+        );
+    });
+    assert_eq!(n, 0, "{n} allocations");
 }

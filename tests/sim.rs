@@ -1,6 +1,6 @@
 //! `planar_arm::sim`: the integrators' orders and energy behaviour, the controllers' tracking
 //! with an exact and a wrong model, the trajectories' boundary conditions and continuity, and
-//! bad input; and that none of it allocates.
+//! bad input. That none of it allocates is in `tests/alloc.rs`.
 
 use planar_arm::nalgebra::Vector3;
 use planar_arm::prelude::*;
@@ -43,60 +43,6 @@ struct Three {
 }
 
 type V2 = Vector2<f64>;
-
-/// Counts this thread's allocations (per thread, so the harness's other threads do not count).
-mod counting {
-    use std::alloc::{GlobalAlloc, Layout, System};
-    use std::cell::Cell;
-
-    pub struct Counting;
-
-    thread_local! {
-        static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
-    }
-
-    fn count() {
-        // `try_with`: the thread-local may already be gone while a thread shuts down.
-        let _ = ALLOCATIONS.try_with(|c| c.set(c.get() + 1));
-    }
-
-    // SAFETY: every call is forwarded unchanged to the system allocator; counting touches only
-    // a `const`-initialised thread-local `Cell`, which never allocates.
-    unsafe impl GlobalAlloc for Counting {
-        unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-            count();
-            // SAFETY: the caller upholds `GlobalAlloc::alloc`'s contract, passed on unchanged.
-            unsafe { System.alloc(layout) }
-        }
-
-        unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
-            count();
-            // SAFETY: as for `alloc`.
-            unsafe { System.alloc_zeroed(layout) }
-        }
-
-        unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-            count();
-            // SAFETY: as for `alloc`; `ptr` came from this allocator, which is `System`.
-            unsafe { System.realloc(ptr, layout, new_size) }
-        }
-
-        unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-            // SAFETY: `ptr` came from this allocator, which is `System`.
-            unsafe { System.dealloc(ptr, layout) }
-        }
-    }
-
-    /// The number of allocations `f` makes on this thread.
-    pub fn allocations(f: impl FnOnce()) -> usize {
-        let before = ALLOCATIONS.with(Cell::get);
-        f();
-        ALLOCATIONS.with(Cell::get) - before
-    }
-}
-
-#[global_allocator]
-static GLOBAL: counting::Counting = counting::Counting;
 
 fn energy<A: PlanarArm<N>, const N: usize>(
     arm: &A,
@@ -492,47 +438,4 @@ fn bad_input_is_an_error_not_a_panic() {
         "{:?}",
         through.as_ref().err()
     );
-}
-
-#[test]
-fn simulating_does_not_allocate() {
-    let arm = Rods::default();
-    let path = swing();
-    let via = ViaPoints::new(
-        [0.0, 0.5, 1.0],
-        [V2::new(0.0, 0.5), V2::new(0.4, 0.9), V2::new(0.8, 0.2)],
-    )
-    .unwrap();
-    let line = TipLine::new(&arm, V2::new(-0.5, 1.5), Point2::new(0.2, 1.4), 1.0).unwrap();
-    let n = counting::allocations(|| {
-        let sim = Simulator::new(Rk4, 1e-3)
-            .unwrap()
-            .with_control_period(5e-3)
-            .unwrap();
-        let ct = ComputedTorque::critically_damped(&arm, path, 20.0);
-        for s in sim.run(&arm, path.start().q, V2::zeros(), 0.2, ct).unwrap() {
-            std::hint::black_box(s.unwrap());
-        }
-        let pd = PdGravity::new(&arm, via, V2::new(50.0, 20.0), V2::new(5.0, 2.0));
-        let sim = Simulator::new(Variational4::default(), 1e-3).unwrap();
-        for s in sim
-            .run(&arm, V2::new(0.0, 0.5), V2::zeros(), 0.05, pd)
-            .unwrap()
-        {
-            std::hint::black_box(s.unwrap());
-        }
-        let (q, qd, tau) = (V2::new(0.1, 0.2), V2::new(0.3, -0.1), V2::new(1.0, 0.5));
-        std::hint::black_box(SemiImplicitEuler.step(&arm, &q, &qd, &tau, 1e-3).unwrap());
-        std::hint::black_box(
-            VariationalMidpoint::default()
-                .step(&arm, &q, &qd, &tau, 1e-3)
-                .unwrap(),
-        );
-        std::hint::black_box(line.sample(0.4));
-        std::hint::black_box(
-            planar_arm::sim::fastest_rate(&arm, &q, &V2::new(10.0, 5.0), &V2::new(1.0, 1.0))
-                .unwrap(),
-        );
-    });
-    assert_eq!(n, 0, "{n} allocations");
 }
