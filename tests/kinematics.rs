@@ -13,6 +13,11 @@ use planar_arm::nalgebra::Vector3;
 use planar_arm::prelude::*;
 
 mod common;
+
+#[path = "common/arms.rs"]
+mod arms;
+
+use arms::Six;
 use common::Rng;
 
 /// The paper's two equal links.
@@ -95,24 +100,6 @@ struct Four {
     l3: Revolute,
     #[arm(length = 2/5, mass = 1/2)]
     l4: Revolute,
-}
-
-/// Six tapering links.
-#[derive(PlanarArm, Default, Debug, Clone, Copy)]
-#[arm(gravity = 9.81)]
-struct Six {
-    #[arm(length = 1, mass = 3)]
-    l1: Revolute,
-    #[arm(length = 4/5, mass = 2)]
-    l2: Revolute,
-    #[arm(length = 3/5, mass = 3/2)]
-    l3: Revolute,
-    #[arm(length = 1/2, mass = 1)]
-    l4: Revolute,
-    #[arm(length = 2/5, mass = 1/2)]
-    l5: Revolute,
-    #[arm(length = 3/10, mass = 1/4)]
-    l6: Revolute,
 }
 
 /// Runs `$check(&arm, &mut $rng)` for every arm above.

@@ -11,6 +11,11 @@ use planar_arm::nalgebra::{SMatrix, Vector3};
 use planar_arm::prelude::*;
 
 mod common;
+
+#[path = "common/arms.rs"]
+mod arms;
+
+use arms::Six;
 use common::Rng;
 
 #[derive(PlanarArm, Default)]
@@ -47,22 +52,6 @@ struct Four {
     l3: Revolute,
     #[arm(length = 2/5, mass = 1/2)]
     l4: Revolute,
-}
-
-#[derive(PlanarArm, Default)]
-struct Six {
-    #[arm(length = 1, mass = 3)]
-    l1: Revolute,
-    #[arm(length = 4/5, mass = 2)]
-    l2: Revolute,
-    #[arm(length = 3/5, mass = 3/2)]
-    l3: Revolute,
-    #[arm(length = 1/2, mass = 1)]
-    l4: Revolute,
-    #[arm(length = 2/5, mass = 1/2)]
-    l5: Revolute,
-    #[arm(length = 3/10, mass = 1/4)]
-    l6: Revolute,
 }
 
 /// A six-link arm whose lengths are run-time parameters.

@@ -72,3 +72,21 @@ pub struct Eight {
     #[arm(length = 16/5, mass = 33/8, inertia = 3/10, com = 96/25, frictionloss = 1/3)]
     h: Revolute,
 }
+
+/// Six tapering links (kinematics and statics).
+#[derive(PlanarArm, Default, Debug, Clone, Copy)]
+#[arm(gravity = 9.81)]
+pub struct Six {
+    #[arm(length = 1, mass = 3)]
+    pub l1: Revolute,
+    #[arm(length = 4/5, mass = 2)]
+    pub l2: Revolute,
+    #[arm(length = 3/5, mass = 3/2)]
+    pub l3: Revolute,
+    #[arm(length = 1/2, mass = 1)]
+    pub l4: Revolute,
+    #[arm(length = 2/5, mass = 1/2)]
+    pub l5: Revolute,
+    #[arm(length = 3/10, mass = 1/4)]
+    pub l6: Revolute,
+}
