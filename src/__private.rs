@@ -107,3 +107,17 @@ impl LinkField for crate::Revolute {}
 
 #[inline(always)]
 pub const fn link_field<T: LinkField>() {}
+
+/// As [`LinkField`], for a field the derive read as prismatic (its type's last segment is
+/// `Prismatic`).
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` is not `planar_arm::Prismatic`",
+    label = "a field whose type is named `Prismatic` must have type `planar_arm::Prismatic`",
+    note = "the derive reads a link's joint kind from its type's name: `Revolute` or `Prismatic`"
+)]
+pub trait PrismaticField {}
+
+impl PrismaticField for crate::Prismatic {}
+
+#[inline(always)]
+pub const fn prismatic_field<T: PrismaticField>() {}

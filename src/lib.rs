@@ -207,7 +207,7 @@ pub use identification::Identification;
 pub use jet::Jet;
 pub use kinematics::DynArm;
 pub use linear::Linearize;
-pub use link::{Link, Revolute};
+pub use link::{Joint, Link, Prismatic, Revolute};
 pub use model::{Model, Payload};
 pub use nalgebra;
 // Inlined, so that the crate page's links to it resolve wherever planar_arm's docs are built
@@ -230,8 +230,8 @@ pub mod prelude {
         DexterousWorkspaceExt, DynArm, InverseStatics, RedundantTipWrench, Skeleton, StaticWrench,
     };
     pub use crate::{
-        ArmError, Frozen, Identification, Linearize, Link, Model, Payload, PlanarArm, Real,
-        Revolute,
+        ArmError, Frozen, Identification, Joint, Linearize, Link, Model, Payload, PlanarArm,
+        Prismatic, Real, Revolute,
     };
     pub use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2};
 }

@@ -7,6 +7,28 @@ use nalgebra::Vector2;
 #[derive(Default, Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Revolute;
 
+/// The zero-sized marker type of a prismatic (sliding) link field in a `#[derive(PlanarArm)]`
+/// struct.
+///
+/// Its joint slides the link along the previous link's direction (for the first link, +x of
+/// the base) by `q_i` metres without turning it: the link's frame origin is at the previous
+/// link's end plus `q_i` along that direction. The joint's generalised force is a force
+/// (newtons), its armature a reflected mass (kg), its damping N s/m and its frictionloss N.
+#[derive(Default, Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Prismatic;
+
+/// The kind of a link's joint.
+#[derive(Default, Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Joint {
+    /// A hinge: `q_i` is the link's angle relative to the previous link, radians; its
+    /// generalised force is a torque.
+    #[default]
+    Revolute,
+    /// A slider along the previous link's direction: `q_i` is the displacement, metres; its
+    /// generalised force is a force (see [`Prismatic`]).
+    Prismatic,
+}
+
 /// The numeric parameters of one link and of the joint that drives it, in SI units, as `f64`.
 ///
 /// A derived arm exposes them as [`PlanarArm::links`](crate::PlanarArm::links) so that numeric
@@ -55,6 +77,12 @@ pub struct Link {
     /// MuJoCo's `frictionloss`: Coulomb (dry) friction, a torque
     /// `frictionloss * sign(qd_i)` with `sign(0) = 0`, N m.
     pub frictionloss: f64,
+    /// The kind of the joint that drives the link. For a [`Joint::Prismatic`] joint the
+    /// armature is a reflected mass (kg), the damping N s/m and the frictionloss N.
+    pub joint: Joint,
+    /// The joint's range `(lower, upper)`, radians or metres, if it has one: used by the
+    /// work-spaces, inverse kinematics and documentation, never to clamp the dynamics.
+    pub range: Option<(f64, f64)>,
 }
 
 impl Link {
@@ -70,6 +98,23 @@ impl Link {
             armature: 0.0,
             damping: 0.0,
             frictionloss: 0.0,
+            joint: Joint::Revolute,
+            range: None,
+        }
+    }
+
+    /// The same link driven by a joint of the given kind.
+    #[must_use]
+    pub const fn with_joint(self, joint: Joint) -> Self {
+        Self { joint, ..self }
+    }
+
+    /// The same link with the joint range `lower..=upper` (radians or metres).
+    #[must_use]
+    pub const fn with_range(self, lower: f64, upper: f64) -> Self {
+        Self {
+            range: Some((lower, upper)),
+            ..self
         }
     }
 

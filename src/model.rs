@@ -137,7 +137,7 @@ impl<const N: usize> Model<N> {
 
     /// Checks that the model is physical: every value finite, lengths and masses positive,
     /// inertias, armatures, damping, frictionloss, the payload's mass and inertia and gravity
-    /// not negative. What the derive checks at compile time for literal values, for values
+    /// not negative, a joint range finite with `lower < upper`. What the derive checks at compile time for literal values, for values
     /// that are read at run time (identified, loaded from a file).
     ///
     /// # Errors
@@ -173,6 +173,18 @@ impl<const N: usize> Model<N> {
                     || (!signed && !positive && value < 0.0)
                 {
                     return fail(what, Some(i), value);
+                }
+            }
+            if let Some((lower, upper)) = l.range {
+                if !lower.is_finite() || !upper.is_finite() {
+                    return fail(
+                        "range",
+                        Some(i),
+                        if lower.is_finite() { upper } else { lower },
+                    );
+                }
+                if lower >= upper {
+                    return fail("range", Some(i), lower);
                 }
             }
         }

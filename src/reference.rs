@@ -611,6 +611,8 @@ mod tests {
                     armature: self.often(|r| r.uniform(0.0, 0.5)),
                     damping: self.often(|r| r.uniform(0.0, 2.0)),
                     frictionloss: self.often(|r| r.uniform(0.0, 1.0)),
+                    joint: crate::Joint::Revolute,
+                    range: None,
                 }
             })
         }
@@ -677,6 +679,8 @@ mod tests {
             armature: 0.05,
             damping: 0.3,
             frictionloss: 0.4,
+            joint: crate::Joint::Revolute,
+            range: None,
         };
         let model = Model::new([link], 9.81);
         let (cx, cy) = (0.55, -0.2);

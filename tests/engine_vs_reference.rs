@@ -8,7 +8,7 @@ use planar_arm::symbolic::frozen::freeze;
 use planar_arm::symbolic::methods::{Derived, Method};
 use planar_arm::symbolic::ring::{ratio, to_f64, Rational};
 use planar_arm::symbolic::slp::{Emit, Input};
-use planar_arm::symbolic::{ArmSpec, LinkSpec, PayloadSpec, Poly};
+use planar_arm::symbolic::{ArmSpec, JointKind, LinkSpec, PayloadSpec, Poly};
 use planar_arm::{Link, Model, Payload};
 use proptest::prelude::*;
 
@@ -40,6 +40,8 @@ fn link() -> impl Strategy<Value = LinkSpec> {
                 armature: ratio(a, 10),
                 damping: ratio(b, 10),
                 frictionloss: ratio(f, 10),
+                joint: JointKind::Revolute,
+                range: None,
             }
         })
 }
@@ -74,6 +76,11 @@ fn numeric<const N: usize>(spec: &ArmSpec) -> Model<N> {
             armature: f(&l.armature),
             damping: f(&l.damping),
             frictionloss: f(&l.frictionloss),
+            joint: match l.joint {
+                JointKind::Revolute => planar_arm::Joint::Revolute,
+                JointKind::Prismatic => planar_arm::Joint::Prismatic,
+            },
+            range: None,
         }
     });
     let payload = spec.payload.as_ref().map_or(Payload::NONE, |p| Payload {

@@ -11,7 +11,7 @@ use planar_arm::prelude::*;
 use planar_arm::symbolic::compact::encode;
 use planar_arm::symbolic::ring::{ratio, to_i128_pair};
 use planar_arm::symbolic::slp::Emit;
-use planar_arm::symbolic::{ArmSpec, Dynamics, Expr, LinkSpec, PayloadSpec, Trig, Var};
+use planar_arm::symbolic::{ArmSpec, Dynamics, Expr, JointKind, LinkSpec, PayloadSpec, Trig, Var};
 
 /// One term as comparable plain data: coefficient, kind, angle, powers, parameters.
 type Plain = (
@@ -106,6 +106,8 @@ fn random_arm(rng: &mut Rng, n: usize) -> ArmSpec {
             armature: ratio(r(0, 3), 10),
             damping: ratio(0, 1),
             frictionloss: ratio(0, 1),
+            joint: JointKind::Revolute,
+            range: None,
         })
         .collect();
     ArmSpec {

@@ -10,7 +10,7 @@ use common::Rng;
 use planar_arm::nalgebra::DMatrix;
 use planar_arm::symbolic::regressor::{base_parameters, regressor};
 use planar_arm::symbolic::ring::{ratio, to_f64};
-use planar_arm::symbolic::{ArmSpec, LinkSpec, PayloadSpec, Poly};
+use planar_arm::symbolic::{ArmSpec, JointKind, LinkSpec, PayloadSpec, Poly};
 
 fn random_arm(rng: &mut Rng, n: usize, gravity: bool, extras: bool) -> ArmSpec<Poly> {
     #[allow(clippy::cast_possible_truncation)]
@@ -28,6 +28,8 @@ fn random_arm(rng: &mut Rng, n: usize, gravity: bool, extras: bool) -> ArmSpec<P
             armature: if extras { r(0.05, 0.2) } else { zero() },
             damping: if extras { r(0.05, 1.0) } else { zero() },
             frictionloss: zero(),
+            joint: JointKind::Revolute,
+            range: None,
         })
         .collect();
     ArmSpec {

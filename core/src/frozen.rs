@@ -186,7 +186,7 @@ mod tests {
     use crate::methods::Derived;
     use crate::poly::{Param, Poly};
     use crate::ring::ratio;
-    use crate::{ArmSpec, LinkSpec};
+    use crate::{ArmSpec, JointKind, LinkSpec};
 
     fn arm(n: usize) -> ArmSpec<Poly> {
         let lit = ArmSpec::paper(n);
@@ -204,6 +204,8 @@ mod tests {
                     armature: Poly::constant(ratio(0, 1)),
                     damping: p("d", i),
                     frictionloss: Poly::constant(ratio(0, 1)),
+                    joint: JointKind::Revolute,
+                    range: None,
                 })
                 .collect(),
             gravity: Poly::constant(ratio(981, 100)),

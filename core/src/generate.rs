@@ -7,10 +7,11 @@ use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
 use crate::emit::{
-    check_representable, coefficient_tokens, formula_doc, input_name, local, render, EmitError,
-    Scalar,
+    check_representable, coefficient_tokens, f64_tokens, formula_doc, input_name, local, render,
+    EmitError, Scalar,
 };
 use crate::expr::Expr;
+use crate::mechanics::JointKind;
 use crate::methods::{Derived, Method};
 use crate::slp::Emit;
 use crate::slp::Input;
@@ -214,9 +215,21 @@ fn model_tokens<C: Emit>(d: &Derived<C>) -> Result<TokenStream, EmitError> {
                 (v(&l.length)?, v(&l.mass)?, v(&l.inertia)?, vec2(&l.com)?);
             let (armature, damping, frictionloss) =
                 (v(&l.armature)?, v(&l.damping)?, v(&l.frictionloss)?);
+            let joint = match l.joint {
+                JointKind::Revolute => quote!(::planar_arm::Joint::Revolute),
+                JointKind::Prismatic => quote!(::planar_arm::Joint::Prismatic),
+            };
+            let range = match &l.range {
+                None => quote!(::core::option::Option::None),
+                Some((lo, hi)) => {
+                    let (lo, hi) = (f64_tokens(lo)?, f64_tokens(hi)?);
+                    quote!(::core::option::Option::Some((#lo, #hi)))
+                }
+            };
             Ok(quote!(::planar_arm::Link {
                 length: #length, mass: #mass, inertia: #inertia, com: #com,
                 armature: #armature, damping: #damping, frictionloss: #frictionloss,
+                joint: #joint, range: #range,
             }))
         })
         .collect::<Result<Vec<_>, EmitError>>()?;

@@ -42,6 +42,8 @@ pub(crate) fn poly_arm<C: Emit>(arm: &ArmSpec<C>) -> ArmSpec<Poly> {
                 armature: to_poly(&l.armature),
                 damping: to_poly(&l.damping),
                 frictionloss: to_poly(&l.frictionloss),
+                joint: l.joint,
+                range: l.range.clone(),
             })
             .collect(),
         gravity: to_poly(&arm.gravity),

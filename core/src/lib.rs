@@ -50,7 +50,7 @@ pub mod ring;
 pub mod trig;
 
 pub use expr::{Expr, Monomial, Var};
-pub use mechanics::{ArmSpec, Body, Dynamics, Kinematics, LinkSpec, PayloadSpec};
+pub use mechanics::{ArmSpec, Body, Dynamics, JointKind, Kinematics, LinkSpec, PayloadSpec};
 pub use poly::{Param, Poly};
 pub use ring::{Coefficient, Rational};
 pub use trig::{Angle, Trig};

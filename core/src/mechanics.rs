@@ -12,7 +12,18 @@ use crate::poly::{Param, Poly};
 use crate::ring::{int, ratio, Coefficient, Rational};
 use crate::trig::Angle;
 
-/// One revolute link: exact parameters (or polynomials in run-time parameters).
+/// The kind of a link's joint.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum JointKind {
+    /// A hinge: `q_i` is the link's angle relative to the previous link.
+    #[default]
+    Revolute,
+    /// A slider along the previous link's direction (for the first link, +x of the base):
+    /// `q_i` is the displacement; the link does not turn.
+    Prismatic,
+}
+
+/// One link and its joint: exact parameters (or polynomials in run-time parameters).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct LinkSpec<C = Rational> {
     /// Joint-to-joint length.
@@ -31,6 +42,10 @@ pub struct LinkSpec<C = Rational> {
     pub damping: C,
     /// Coulomb friction at this link's joint: torque `frictionloss sign(qd_i)`.
     pub frictionloss: C,
+    /// The joint's kind.
+    pub joint: JointKind,
+    /// The joint's range `(lower, upper)`, if given: kinematics only, never the dynamics.
+    pub range: Option<(Rational, Rational)>,
 }
 
 impl<C: Coefficient> LinkSpec<C> {
@@ -47,6 +62,8 @@ impl<C: Coefficient> LinkSpec<C> {
             armature: zero.clone(),
             damping: zero.clone(),
             frictionloss: zero,
+            joint: JointKind::Revolute,
+            range: None,
         }
     }
 }
@@ -111,6 +128,8 @@ impl ArmSpec<Rational> {
                 armature: param(&l.armature),
                 damping: param(&l.damping),
                 frictionloss: param(&l.frictionloss),
+                joint: l.joint,
+                range: l.range.clone(),
             })
             .collect();
         let gravity = param(&self.gravity);

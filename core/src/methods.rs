@@ -734,7 +734,7 @@ fn matrix_outputs(m: &[Vec<Id>]) -> Vec<(String, Id)> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::mechanics::LinkSpec;
+    use crate::mechanics::{JointKind, LinkSpec};
     use crate::poly::Poly;
     use crate::ring::ratio;
 
@@ -752,6 +752,8 @@ mod tests {
                     armature: ratio(k(i), 7),
                     damping: ratio(1, k(i) + 2),
                     frictionloss: ratio(k(i % 2), 3),
+                    joint: JointKind::Revolute,
+                    range: None,
                 })
                 .collect(),
             gravity: ratio(981, 100),

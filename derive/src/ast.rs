@@ -1,5 +1,6 @@
 //! The parsed struct: its links and gravity, each value with the tokens it came from.
 
+use planar_arm_core::JointKind;
 use syn::{Data, DeriveInput, Fields};
 
 use crate::attr::{self, Attrs, Place, Value};
@@ -9,6 +10,8 @@ use crate::ctxt::Ctxt;
 pub struct Link<'a> {
     pub field: &'a syn::Field,
     pub attrs: Attrs,
+    /// Read from the type's name: `Prismatic`, else revolute (the compiler checks the type).
+    pub joint: JointKind,
 }
 
 impl Link<'_> {
@@ -79,7 +82,7 @@ impl<'a> Arm<'a> {
         let mut others = Vec::new();
         for field in &named.named {
             let attrs = attr::parse(cx, &field.attrs, Place::Field);
-            if attrs.is_none() && !is_revolute(&field.ty) {
+            if attrs.is_none() && joint_kind(&field.ty).is_none() {
                 // Not a link: a parameter, a label, anything the user keeps in the struct.
                 others.push(field);
                 continue;
@@ -89,11 +92,15 @@ impl<'a> Arm<'a> {
             if !matches!(strip(&field.ty), syn::Type::Path(_)) || is_primitive(&field.ty) {
                 cx.error_spanned_by(
                     &field.ty,
-                    "link fields must have type `planar_arm::Revolute`, the only joint kind so far; the link's parameters go in its #[arm(...)]",
+                    "link fields must have type `planar_arm::Revolute` or `planar_arm::Prismatic`; the link's parameters go in its #[arm(...)]",
                 );
             }
             match attrs {
-                Some(attrs) => links.push(Link { field, attrs }),
+                Some(attrs) => links.push(Link {
+                    field,
+                    attrs,
+                    joint: joint_kind(&field.ty).unwrap_or_default(),
+                }),
                 None => cx.error_spanned_by(
                     &field.ident,
                     format!(
@@ -195,9 +202,9 @@ impl<'a> Arm<'a> {
     }
 }
 
-/// Whether a field is a link: of type `Revolute`, or carrying `#[arm(...)]`.
+/// Whether a field is a link: of type `Revolute` or `Prismatic`, or carrying `#[arm(...)]`.
 pub fn is_link_field(f: &syn::Field) -> bool {
-    is_revolute(&f.ty) || f.attrs.iter().any(|a| a.path().is_ident(attr::ARM))
+    joint_kind(&f.ty).is_some() || f.attrs.iter().any(|a| a.path().is_ident(attr::ARM))
 }
 
 fn is_f64(ty: &syn::Type) -> bool {
@@ -239,15 +246,24 @@ fn strip(ty: &syn::Type) -> &syn::Type {
     }
 }
 
-fn is_revolute(ty: &syn::Type) -> bool {
+/// The joint kind a type names by its last segment, `Revolute` or `Prismatic`: the derive
+/// cannot resolve names, so an alias of either is a revolute link if it carries
+/// `#[arm(...)]`, and the compiler's check (`__private::LinkField`) says so if it is not.
+pub fn joint_kind(ty: &syn::Type) -> Option<JointKind> {
     match ty {
-        syn::Type::Path(p) => p
-            .path
-            .segments
-            .last()
-            .is_some_and(|s| s.ident == "Revolute" && s.arguments.is_empty()),
-        syn::Type::Group(g) => is_revolute(&g.elem),
-        syn::Type::Paren(p) => is_revolute(&p.elem),
-        _ => false,
+        syn::Type::Path(p) => p.path.segments.last().and_then(|s| {
+            if !s.arguments.is_empty() {
+                None
+            } else if s.ident == "Revolute" {
+                Some(JointKind::Revolute)
+            } else if s.ident == "Prismatic" {
+                Some(JointKind::Prismatic)
+            } else {
+                None
+            }
+        }),
+        syn::Type::Group(g) => joint_kind(&g.elem),
+        syn::Type::Paren(p) => joint_kind(&p.elem),
+        _ => None,
     }
 }

@@ -23,9 +23,19 @@ pub const PAYLOAD: &str = "payload";
 pub const PAYLOAD_INERTIA: &str = "payload_inertia";
 pub const PAYLOAD_COM: &str = "payload_com";
 pub const CRATE: &str = "crate";
+pub const RANGE: &str = "range";
 
 pub const STRUCT_KEYS: &[&str] = &[GRAVITY, PAYLOAD, PAYLOAD_INERTIA, PAYLOAD_COM, CRATE];
-pub const FIELD_KEYS: &[&str] = &[LENGTH, MASS, INERTIA, COM, ARMATURE, DAMPING, FRICTIONLOSS];
+pub const FIELD_KEYS: &[&str] = &[
+    LENGTH,
+    MASS,
+    INERTIA,
+    COM,
+    ARMATURE,
+    DAMPING,
+    FRICTIONLOSS,
+    RANGE,
+];
 /// Keys whose value may be a pair `(x, y)`.
 const PAIR_KEYS: &[&str] = &[COM, PAYLOAD_COM];
 
@@ -225,6 +235,13 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
     let mut params = Vec::new();
     let parsed = match &expr {
         // #[arm(com = (0.11, 0.005))]
+        // #[arm(range = (0, 0.6))]
+        syn::Expr::Tuple(t) if known == RANGE && t.elems.len() == 2 => value::eval(&t.elems[0], &mut params)
+            .and_then(|x| value::eval(&t.elems[1], &mut params).map(|y| (x, Some(y)))),
+        _ if known == RANGE => Err(syn::Error::new_spanned(
+            &expr,
+            "`range` takes a pair `(lower, upper)` of numbers, radians for a revolute joint and metres for a prismatic one, for example `range = (0, 0.6)`",
+        )),
         syn::Expr::Tuple(t) if PAIR_KEYS.contains(&known) && t.elems.len() == 2 => {
             value::eval(&t.elems[0], &mut params)
                 .and_then(|x| value::eval(&t.elems[1], &mut params).map(|y| (x, Some(y))))

@@ -7,12 +7,12 @@
 
 use num_traits::{Signed, Zero};
 use planar_arm_core::ring::{parse_decimal, ratio, to_f64, Rational};
-use planar_arm_core::{ArmSpec, LinkSpec, PayloadSpec, Poly};
+use planar_arm_core::{ArmSpec, JointKind, LinkSpec, PayloadSpec, Poly};
 
 use crate::ast::{Arm, Link};
 use crate::attr::{
     Value, ARMATURE, COM, DAMPING, FRICTIONLOSS, GRAVITY, INERTIA, LENGTH, MASS, PAYLOAD,
-    PAYLOAD_COM, PAYLOAD_INERTIA,
+    PAYLOAD_COM, PAYLOAD_INERTIA, RANGE,
 };
 use crate::ctxt::Ctxt;
 
@@ -234,6 +234,11 @@ fn check_link(cx: &Ctxt, link: &Link<'_>) -> Option<LinkSpec<Poly>> {
         ok &= good;
         good.then(|| (c.value.clone(), c.y.clone().unwrap_or_default()))
     });
+    let range = a.get(RANGE).and_then(|v| {
+        let good = check_range(cx, &name, link.joint, v);
+        ok &= good.is_some();
+        good
+    });
     if !ok {
         return None;
     }
@@ -241,7 +246,11 @@ fn check_link(cx: &Ctxt, link: &Link<'_>) -> Option<LinkSpec<Poly>> {
     let inertia = inertia.unwrap_or(rod.inertia);
     let com = com.unwrap_or(rod.com);
     let literal_zero = |p: &Poly| planar_arm_core::Coefficient::is_zero(p);
-    if literal_zero(&inertia) && literal_zero(&com.0) && literal_zero(&com.1) {
+    if link.joint == JointKind::Revolute
+        && literal_zero(&inertia)
+        && literal_zero(&com.0)
+        && literal_zero(&com.1)
+    {
         // Joint k then moves none of link k's mass: with nothing after it (or nothing after it
         // that resists) M is singular and forward dynamics undefined. Both keys are explicit
         // here, since a positive rod's defaults are positive.
@@ -266,5 +275,47 @@ fn check_link(cx: &Ctxt, link: &Link<'_>) -> Option<LinkSpec<Poly>> {
         armature: armature.unwrap_or_default(),
         damping: damping.unwrap_or_default(),
         frictionloss: frictionloss.unwrap_or_default(),
+        joint: link.joint,
+        range,
     })
+}
+
+/// `range = (lower, upper)`: two numbers (no run-time parameters: the bounds are documented and
+/// shape the work-spaces), `lower < upper`.
+fn check_range(cx: &Ctxt, name: &str, joint: JointKind, v: &Value) -> Option<(Rational, Rational)> {
+    let unit = match joint {
+        JointKind::Revolute => "radians",
+        JointKind::Prismatic => "metres",
+    };
+    let (Some(lower), Some(upper)) = (
+        v.value.as_rational(),
+        v.y.as_ref().and_then(Poly::as_rational),
+    ) else {
+        cx.error_spanned_by(
+            &v.tokens,
+            format!(
+                "link `{name}`: a range's bounds must be numbers ({unit}), not run-time parameters"
+            ),
+        );
+        return None;
+    };
+    if !representable(cx, "range", v) {
+        return None;
+    }
+    if lower >= upper {
+        cx.error_spanned_by(
+            &v.tokens,
+            format!(
+                "link `{name}`: a range needs lower < upper ({unit}), found ({}, {})",
+                show_f64(&lower),
+                show_f64(&upper)
+            ),
+        );
+        return None;
+    }
+    Some((lower, upper))
+}
+
+fn show_f64(r: &Rational) -> String {
+    to_f64(r).map_or_else(|| r.to_string(), |x| format!("{x}"))
 }

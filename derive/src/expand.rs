@@ -10,7 +10,7 @@ use planar_arm_core::generate::{generate, Header};
 use planar_arm_core::methods::Derived;
 use planar_arm_core::ring::{to_i128_pair, Rational};
 use planar_arm_core::slp::Emit;
-use planar_arm_core::{ArmSpec, Expr, LinkSpec, PayloadSpec, Poly};
+use planar_arm_core::{ArmSpec, Expr, JointKind, LinkSpec, PayloadSpec, Poly};
 
 use crate::ast::Arm;
 use crate::check::check;
@@ -89,7 +89,11 @@ fn emit<C: Emit>(
 fn link_types(arm: &Arm<'_>) -> TokenStream {
     let checks = arm.links.iter().map(|l| {
         let ty = &l.field.ty;
-        quote::quote_spanned!(syn::spanned::Spanned::span(ty)=> ::planar_arm::__private::link_field::<#ty>();)
+        let check = match l.joint {
+            JointKind::Revolute => quote!(link_field),
+            JointKind::Prismatic => quote!(prismatic_field),
+        };
+        quote::quote_spanned!(syn::spanned::Spanned::span(ty)=> ::planar_arm::__private::#check::<#ty>();)
     });
     quote!(const _: () = { #(#checks)* };)
 }
@@ -111,6 +115,8 @@ fn literal(spec: &ArmSpec<Poly>) -> Option<ArmSpec<Rational>> {
                     armature: r(&l.armature)?,
                     damping: r(&l.damping)?,
                     frictionloss: r(&l.frictionloss)?,
+                    joint: l.joint,
+                    range: l.range.clone(),
                 })
             })
             .collect::<Option<Vec<_>>>()?,

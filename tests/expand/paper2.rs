@@ -43,6 +43,8 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
                     armature: 0.0,
                     damping: 0.0,
                     frictionloss: 0.0,
+                    joint: ::planar_arm::Joint::Revolute,
+                    range: ::core::option::Option::None,
                 },
                 ::planar_arm::Link {
                     length: 1.0,
@@ -52,6 +54,8 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
                     armature: 0.0,
                     damping: 0.0,
                     frictionloss: 0.0,
+                    joint: ::planar_arm::Joint::Revolute,
+                    range: ::core::option::Option::None,
                 },
             ],
             gravity: (981.0 / 100.0),

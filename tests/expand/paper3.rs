@@ -73,6 +73,8 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     armature: 0.0,
                     damping: 0.0,
                     frictionloss: 0.0,
+                    joint: ::planar_arm::Joint::Revolute,
+                    range: ::core::option::Option::None,
                 },
                 ::planar_arm::Link {
                     length: 1.0,
@@ -82,6 +84,8 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     armature: 0.0,
                     damping: 0.0,
                     frictionloss: 0.0,
+                    joint: ::planar_arm::Joint::Revolute,
+                    range: ::core::option::Option::None,
                 },
                 ::planar_arm::Link {
                     length: 1.0,
@@ -91,6 +95,8 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     armature: 0.0,
                     damping: 0.0,
                     frictionloss: 0.0,
+                    joint: ::planar_arm::Joint::Revolute,
+                    range: ::core::option::Option::None,
                 },
             ],
             gravity: (981.0 / 100.0),
