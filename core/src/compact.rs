@@ -7,8 +7,9 @@
 //!
 //! Each term is a sequence of numbers: the atom's kind (0 for `1`, 1 for `cos`, 2 for
 //! `sin`), the coefficient's numerator and denominator (signed), for `cos` and `sin` the
-//! angle's length and coefficients (signed), the number of rate and acceleration factors and
-//! for each `2 j` (`qd_j`) or `2 j + 1` (`qdd_j`) with its exponent, the number of run-time
+//! angle's length and coefficients (signed), the number of rate, acceleration and prismatic
+//! displacement factors and for each `3 j` (`qd_j`), `3 j + 1` (`qdd_j`) or `3 j + 2` (`q_j`
+//! of a prismatic joint) with its exponent, the number of run-time
 //! parameters and for each its index in the derivation's name table with its exponent.
 //! Numbers are written in digits of five bits, low first, with bit 5 set when more follow, as
 //! the 64 printable characters of [`ALPHABET`] (no escapes in the literal); signed numbers
@@ -74,8 +75,9 @@ pub fn encode<C: Emit>(e: &Expr<C>, names: &mut Vec<String>) -> Result<Vec<u8>, 
             push_usize(&mut out, powers.len());
             for (v, e) in powers {
                 let code = match v {
-                    Var::Qd(j) => 2 * j,
-                    Var::Qdd(j) => 2 * j + 1,
+                    Var::Qd(j) => 3 * j,
+                    Var::Qdd(j) => 3 * j + 1,
+                    Var::Q(j) => 3 * j + 2,
                 };
                 push_usize(&mut out, code);
                 push(&mut out, u128::from(e));

@@ -1,5 +1,8 @@
 //! The canonical form: sums of `coefficient x trig atom x monomial in joint rates`.
 //!
+//! Trig atoms come only from revolute angles; a prismatic joint's displacement enters the
+//! monomial as the variable [`Var::Q`], so the form is polynomial in it.
+//!
 //! An [`Expr`] is an ordered map from `(monomial, atom)` to a non-zero coefficient, so two
 //! expressions are equal exactly when they are the same function. Differentiation in `q`, in
 //! the rates, and `d/dt` by the chain rule act on this form directly.
@@ -10,13 +13,16 @@ use std::fmt;
 use crate::ring::{int, Coefficient, Rational};
 use crate::trig::{Angle, Trig};
 
-/// A variable of the polynomial part: a joint rate or a joint acceleration (0-based joint).
+/// A variable of the polynomial part: a joint rate, a joint acceleration or a prismatic
+/// joint's displacement (0-based joint).
 #[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Debug)]
 pub enum Var {
     /// `qd_j`, the rate of joint `j`.
     Qd(usize),
     /// `qdd_j`, the acceleration of joint `j`.
     Qdd(usize),
+    /// `q_j` of a prismatic joint `j` (a revolute joint's angle appears only inside trig atoms).
+    Q(usize),
 }
 
 impl fmt::Display for Var {
@@ -24,6 +30,7 @@ impl fmt::Display for Var {
         match self {
             Var::Qd(j) => write!(f, "qd{}", j + 1),
             Var::Qdd(j) => write!(f, "qdd{}", j + 1),
+            Var::Q(j) => write!(f, "q{}", j + 1),
         }
     }
 }
@@ -148,6 +155,27 @@ impl Monomial {
         }
     }
 
+    /// `(positions, rest)`: the prismatic displacements' factors and the rates' and
+    /// accelerations'.
+    #[must_use]
+    pub fn split_positions(&self) -> (Self, Self) {
+        let (p, r): (Vec<_>, Vec<_>) = self
+            .powers
+            .iter()
+            .partition(|(v, _)| matches!(v, Var::Q(_)));
+        let degree = |v: &[(Var, u32)]| v.iter().map(|(_, e)| e).sum();
+        (
+            Self {
+                degree: degree(&p),
+                powers: p,
+            },
+            Self {
+                degree: degree(&r),
+                powers: r,
+            },
+        )
+    }
+
     /// `d/dv`: `(exponent, monomial / v)`, or `None` when `v` does not occur.
     fn diff(&self, v: Var) -> Option<(u32, Self)> {
         let k = self.powers.binary_search_by(|p| p.0.cmp(&v)).ok()?;
@@ -167,14 +195,15 @@ impl Monomial {
         ))
     }
 
-    /// Numeric value given the rates and accelerations.
+    /// Numeric value given the joint positions, rates and accelerations.
     #[must_use]
-    pub fn eval(&self, qd: &[f64], qdd: &[f64]) -> f64 {
+    pub fn eval(&self, q: &[f64], qd: &[f64], qdd: &[f64]) -> f64 {
         self.powers()
             .map(|(v, e)| {
                 let x = match v {
                     Var::Qd(j) => qd[j],
                     Var::Qdd(j) => qdd[j],
+                    Var::Q(j) => q[j],
                 };
                 x.powi(i32::try_from(e).unwrap_or(i32::MAX))
             })
@@ -382,13 +411,17 @@ impl<C: Coefficient> Expr<C> {
         out
     }
 
-    /// `d/dq_j` (0-based joint).
+    /// `d/dq_j` (0-based joint): through the trig atoms for a revolute joint, through the
+    /// monomials for a prismatic one (whichever `q_j` occurs in).
     #[must_use]
     pub fn diff_q(&self, j: usize) -> Self {
         let mut out = Self::zero();
         for ((m, t), c) in &self.terms {
             if let Some((k, dt)) = t.diff(j) {
                 out.add_term(c.scale(&int(i64::from(k))), dt, m.clone());
+            }
+            if let Some((e, dm)) = m.diff(Var::Q(j)) {
+                out.add_term(c.scale(&int(i64::from(e))), t.clone(), dm);
             }
         }
         out
@@ -404,6 +437,9 @@ impl<C: Coefficient> Expr<C> {
             for (j, rate) in rates.iter().enumerate() {
                 if let Some((k, dt)) = t.diff(j) {
                     out.add_term(c.scale(&int(i64::from(k))), dt, m.mul(rate));
+                }
+                if let Some((e, dm)) = m.diff(Var::Q(j)) {
+                    out.add_term(c.scale(&int(i64::from(e))), t.clone(), dm.mul(rate));
                 }
             }
         }
@@ -438,7 +474,7 @@ impl<C: Coefficient> Expr<C> {
         debug_assert!(self
             .terms
             .keys()
-            .all(|(m, _)| m.powers().all(|(v, _)| matches!(v, Var::Qd(_)))));
+            .all(|(m, _)| m.powers().all(|(v, _)| !matches!(v, Var::Qdd(_)))));
         let mut out = Self::zero();
         for j in 0..n {
             out.add_assign(&self.diff_q(j).mul_var(Var::Qd(j)));
@@ -447,13 +483,15 @@ impl<C: Coefficient> Expr<C> {
         out
     }
 
-    /// The part multiplying exactly `monomial`, as an expression in `q` alone.
+    /// The part multiplying exactly `monomial` in the rates and accelerations, as an
+    /// expression in `q` alone (prismatic displacements kept).
     #[must_use]
     pub fn coefficient_of(&self, monomial: &Monomial) -> Self {
         let mut out = Self::zero();
         for ((m, t), c) in &self.terms {
-            if m == monomial {
-                out.add_term(c.clone(), t.clone(), Monomial::one());
+            let (positions, rates) = m.split_positions();
+            if rates == *monomial {
+                out.add_term(c.clone(), t.clone(), positions);
             }
         }
         out
@@ -498,7 +536,7 @@ impl Expr<Rational> {
     pub fn eval(&self, q: &[f64], qd: &[f64], qdd: &[f64]) -> f64 {
         self.terms()
             .map(|(m, t, c)| {
-                crate::ring::to_f64(c).unwrap_or(f64::NAN) * t.eval(q) * m.eval(qd, qdd)
+                crate::ring::to_f64(c).unwrap_or(f64::NAN) * t.eval(q) * m.eval(q, qd, qdd)
             })
             .sum()
     }

@@ -180,7 +180,8 @@ pub struct Dynamics<C = Rational> {
 pub struct Kinematics<C = Rational> {
     /// Number of joints.
     pub n: usize,
-    /// Joint positions `(x, y)`, joint 1 at the origin, then the tip last (n + 1 entries).
+    /// Each link's frame origin `(x, y)` (its joint; for a prismatic joint the slid carriage,
+    /// so joint 1 is at the origin unless it is prismatic), then the tip last (n + 1 entries).
     pub points: Vec<(Expr<C>, Expr<C>)>,
     /// The absolute angle of the last link.
     pub tip_angle: Angle,
@@ -194,28 +195,52 @@ fn rate(j: usize) -> Var {
     Var::Qd(j)
 }
 
-/// Absolute angle of link `i` (0-based): `q_1 + ... + q_{i+1}`.
-fn link_angle(i: usize) -> Angle {
-    Angle::range(0, i + 1)
+/// Absolute angle of link `i` (0-based): the sum of the revolute joints' angles up to it,
+/// `q_1 + ... + q_{i+1}` when all are revolute (a prismatic joint does not turn its link).
+fn link_angle<C>(arm: &ArmSpec<C>, i: usize) -> Angle {
+    Angle::new(
+        arm.links[..=i]
+            .iter()
+            .map(|l| i32::from(l.joint == JointKind::Revolute))
+            .collect(),
+    )
 }
 
-/// `(x, y)` of the point `at` (in link `i`'s frame, from its joint) of link `i`, all earlier
-/// links full length.
+impl<C> ArmSpec<C> {
+    /// Whether every joint is revolute (the paper's arms).
+    #[must_use]
+    pub fn all_revolute(&self) -> bool {
+        self.links.iter().all(|l| l.joint == JointKind::Revolute)
+    }
+}
+
+/// `(x, y)` of the point `at` (in link `i`'s frame, from its own frame's origin) of link `i`:
+/// the earlier links full length, and each prismatic joint up to `i` sliding its link by `q_k`
+/// along the link's direction.
 fn point_on_link<C: Coefficient>(arm: &ArmSpec<C>, i: usize, at: &(C, C)) -> (Expr<C>, Expr<C>) {
     let mut x = Expr::zero();
     let mut y = Expr::zero();
     for (j, link) in arm.links.iter().enumerate().take(i) {
-        x = x.add(&Expr::cos(link.length.clone(), link_angle(j)));
-        y = y.add(&Expr::sin(link.length.clone(), link_angle(j)));
+        x = x.add(&Expr::cos(link.length.clone(), link_angle(arm, j)));
+        y = y.add(&Expr::sin(link.length.clone(), link_angle(arm, j)));
+    }
+    let one = C::from_rational(int(1));
+    for (k, link) in arm.links.iter().enumerate().take(i + 1) {
+        if link.joint == JointKind::Prismatic {
+            let slide = Var::Q(k);
+            x = x.add(&Expr::cos(one.clone(), link_angle(arm, k)).mul_var(slide));
+            y = y.add(&Expr::sin(one.clone(), link_angle(arm, k)).mul_var(slide));
+        }
     }
     // R(phi_i) (a, b) = (a cos - b sin, a sin + b cos)
     let (a, b) = at;
+    let angle = link_angle(arm, i);
     x = x
-        .add(&Expr::cos(a.clone(), link_angle(i)))
-        .sub(&Expr::sin(b.clone(), link_angle(i)));
+        .add(&Expr::cos(a.clone(), angle.clone()))
+        .sub(&Expr::sin(b.clone(), angle.clone()));
     y = y
-        .add(&Expr::sin(a.clone(), link_angle(i)))
-        .add(&Expr::cos(b.clone(), link_angle(i)));
+        .add(&Expr::sin(a.clone(), angle.clone()))
+        .add(&Expr::cos(b.clone(), angle));
     (x, y)
 }
 
@@ -276,8 +301,8 @@ fn potential_energy<C: Coefficient>(arm: &ArmSpec<C>, bodies: &[Body<C>]) -> Exp
         let (mx, my) = &body.first_moment;
         let y = y_joint
             .scale_by(&body.mass)
-            .add(&Expr::sin(mx.clone(), link_angle(i)))
-            .add(&Expr::cos(my.clone(), link_angle(i)));
+            .add(&Expr::sin(mx.clone(), link_angle(arm, i)))
+            .add(&Expr::cos(my.clone(), link_angle(arm, i)));
         potential.add_assign(&y.scale_by(&arm.gravity));
     }
     potential
@@ -329,6 +354,9 @@ fn kinetic_energy<C: Coefficient>(
     bodies: &[Body<C>],
     rates: &mut RateProducts<C>,
 ) -> Expr<C> {
+    if !arm.all_revolute() {
+        return kinetic_energy_of_velocities(arm, bodies);
+    }
     let n = arm.links.len();
     let zero = || C::from_rational(int(0));
     // diag[a]: twice the coefficient of omega_a^2; cross[a][b] (a > b): (A, B).
@@ -377,6 +405,51 @@ fn kinetic_energy<C: Coefficient>(
     kinetic
 }
 
+/// The kinetic energy from each body's frame-origin velocity `v` (the chain rule on its
+/// position), for any mix of joints: `m |v|^2 / 2 + omega v . perp(R h) + J omega^2 / 2` per
+/// body, with `h` its first moment and `J` its inertia about the frame origin, so it stays
+/// linear in the standard parameters; plus the rotors. The pairwise form of the revolute arms
+/// rests on every link length being constant.
+fn kinetic_energy_of_velocities<C: Coefficient>(arm: &ArmSpec<C>, bodies: &[Body<C>]) -> Expr<C> {
+    let n = arm.links.len();
+    let half = ratio(1, 2);
+    let zero = || C::from_rational(int(0));
+    let one = C::from_rational(int(1));
+    let mut kinetic = Expr::zero();
+    for body in bodies {
+        let i = body.link;
+        let (x, y) = point_on_link(arm, i, &(zero(), zero()));
+        let (vx, vy) = (x.dt(n), y.dt(n));
+        let mut omega = Expr::zero();
+        for (j, link) in arm.links.iter().enumerate().take(i + 1) {
+            if link.joint == JointKind::Revolute {
+                omega.add_assign(&Expr::var(rate(j)));
+            }
+        }
+        let angle = link_angle(arm, i);
+        let (cu, su) = (
+            Expr::cos(one.clone(), angle.clone()),
+            Expr::sin(one.clone(), angle),
+        );
+        let v2 = vx.mul(&vx).add(&vy.mul(&vy));
+        kinetic.add_assign(&v2.scale_by(&body.mass).scale(&half));
+        let (hx, hy) = &body.first_moment;
+        // v . perp(R h) = hx v . perp(u) - hy v . u
+        let along = vx.mul(&cu).add(&vy.mul(&su));
+        let across = vy.mul(&cu).sub(&vx.mul(&su));
+        let coupling = across.scale_by(hx).sub(&along.scale_by(hy));
+        kinetic.add_assign(&omega.mul(&coupling));
+        kinetic.add_assign(&omega.mul(&omega).scale_by(&body.joint_inertia).scale(&half));
+    }
+    for (i, link) in arm.links.iter().enumerate() {
+        if !link.armature.is_zero() {
+            let qd = Expr::var(rate(i));
+            kinetic.add_assign(&qd.mul(&qd).scale_by(&link.armature).scale(&half));
+        }
+    }
+    kinetic
+}
+
 /// The end of link `i` in its own frame.
 fn link_end<C: Coefficient>(link: &LinkSpec<C>) -> (C, C) {
     (link.length.clone(), C::from_rational(int(0)))
@@ -387,23 +460,37 @@ impl<C: Coefficient> Kinematics<C> {
     #[must_use]
     pub fn derive(arm: &ArmSpec<C>) -> Self {
         let n = arm.links.len();
-        let mut points = vec![(Expr::zero(), Expr::zero())];
-        for i in 0..n {
-            points.push(point_on_link(arm, i, &link_end(&arm.links[i])));
+        let zero = || C::from_rational(int(0));
+        // Each link's frame origin (a prismatic joint's carriage), then the tip.
+        let mut points: Vec<_> = (0..n)
+            .map(|i| point_on_link(arm, i, &(zero(), zero())))
+            .collect();
+        if let Some(last) = arm.links.last() {
+            points.push(point_on_link(arm, n - 1, &link_end(last)));
+        } else {
+            points.push((Expr::zero(), Expr::zero()));
         }
         let (x, y) = points[n].clone();
         let jacobian = vec![
             (0..n).map(|j| x.diff_q(j)).collect(),
             (0..n).map(|j| y.diff_q(j)).collect(),
-            (0..n)
-                .map(|_| Expr::constant(C::from_rational(int(1))))
+            arm.links
+                .iter()
+                .map(|l| match l.joint {
+                    JointKind::Revolute => Expr::constant(C::from_rational(int(1))),
+                    JointKind::Prismatic => Expr::zero(),
+                })
                 .collect(),
         ];
         let radius_squared = x.mul(&x).add(&y.mul(&y));
         Self {
             n,
             points,
-            tip_angle: link_angle(n.saturating_sub(1)),
+            tip_angle: if n == 0 {
+                Angle::new(Vec::new())
+            } else {
+                link_angle(arm, n - 1)
+            },
             jacobian,
             radius_squared,
         }
@@ -573,9 +660,19 @@ mod tests {
         assert_eq!(d.mass_matrix[0][1], d.mass_matrix[1][0]);
     }
 
+    /// Joint kinds from the bits of `pattern` (bit `i` set: joint `i` prismatic).
+    fn with_joints<C>(mut arm: ArmSpec<C>, pattern: u32) -> ArmSpec<C> {
+        for (i, l) in arm.links.iter_mut().enumerate() {
+            if pattern >> i & 1 == 1 {
+                l.joint = JointKind::Prismatic;
+            }
+        }
+        arm
+    }
+
     #[test]
     fn mass_matrix_two_ways_agree_and_c_is_christoffel() {
-        for n in 1..=4 {
+        for (n, pattern) in (1..=4).flat_map(|n| (0..1u32 << n).map(move |p| (n, p))) {
             let mut arm = ArmSpec::paper(n);
             arm.gravity = ratio(981, 100);
             for (i, l) in arm.links.iter_mut().enumerate() {
@@ -588,6 +685,7 @@ mod tests {
                     ..LinkSpec::rod(int(1), int(1))
                 };
             }
+            let arm = with_joints(arm, pattern);
             let d = Dynamics::derive(&arm);
             assert_eq!(d.mass_matrix, d.mass_matrix_from_lagrange(), "n = {n}");
             assert_eq!(d.coriolis_matrix, christoffel(&d.mass_matrix), "n = {n}");
@@ -655,7 +753,9 @@ mod tests {
             kinetic.add_assign(&v2.scale_by(mass).scale(&half));
             let mut w = Expr::zero();
             for j in 0..=i {
-                w = w.add(&Expr::var(rate(j)));
+                if arm.links[j].joint == JointKind::Revolute {
+                    w = w.add(&Expr::var(rate(j)));
+                }
             }
             kinetic.add_assign(&w.mul(&w).scale_by(inertia).scale(&half));
         }
@@ -664,6 +764,99 @@ mod tests {
             kinetic.add_assign(&qd.mul(&qd).scale_by(&link.armature).scale(&half));
         }
         kinetic
+    }
+
+    #[test]
+    fn kinetic_energy_of_any_joints_is_the_squared_velocities() {
+        for (n, pattern) in (1..=4).flat_map(|n| (0..1u32 << n).map(move |p| (n, p))) {
+            let mut arm = ArmSpec::paper(n);
+            for (i, l) in arm.links.iter_mut().enumerate() {
+                let i = i as i64;
+                *l = LinkSpec {
+                    length: ratio(i + 2, 3),
+                    mass: ratio(2 * i + 1, 2),
+                    inertia: ratio(1, i + 5),
+                    com: (ratio(1 - i, i + 2), ratio(1 - i, 7)),
+                    armature: ratio(i, 10),
+                    ..LinkSpec::rod(int(1), int(1))
+                };
+            }
+            arm.payload = Some(PayloadSpec {
+                mass: ratio(3, 4),
+                inertia: ratio(1, 9),
+                com: (ratio(1, 5), ratio(-2, 7)),
+            });
+            let arm = with_joints(arm, pattern);
+            let bodies = standard_bodies(&arm);
+            let by_velocities = kinetic_energy_by_velocities(&arm);
+            assert_eq!(
+                kinetic_energy_of_velocities(&arm, &bodies),
+                by_velocities,
+                "n = {n}, joints {pattern:b}"
+            );
+            if pattern == 0 {
+                let pairwise = kinetic_energy(&arm, &bodies, &mut RateProducts::new());
+                assert_eq!(pairwise, by_velocities, "n = {n}");
+            }
+        }
+    }
+
+    /// The polar arm (revolute, then prismatic) by hand: with `r = l1 + q2 + c2` the distance
+    /// of the boom's centre from the axis, `T = (I1 + m1 c1^2 + I2 + m2 r^2) qd1^2 / 2 + m2
+    /// qd2^2 / 2` (the boom's centre moves radially at `qd2`, tangentially at `r qd1`), and
+    /// `V = g (m1 c1 + m2 r) sin q1`.
+    #[test]
+    fn polar_arm_by_hand() {
+        let (l1, c1, m1, i1) = (ratio(1, 5), ratio(1, 10), int(3), ratio(1, 100));
+        let (c2, m2, i2) = (ratio(1, 4), ratio(3, 2), ratio(1, 32));
+        let g = ratio(981, 100);
+        let arm = ArmSpec {
+            links: vec![
+                LinkSpec {
+                    inertia: i1.clone(),
+                    com: (c1.clone(), int(0)),
+                    ..LinkSpec::rod(l1.clone(), m1.clone())
+                },
+                LinkSpec {
+                    inertia: i2.clone(),
+                    com: (c2.clone(), int(0)),
+                    joint: JointKind::Prismatic,
+                    ..LinkSpec::rod(ratio(1, 2), m2.clone())
+                },
+            ],
+            gravity: g.clone(),
+            payload: None,
+        };
+        let d = Dynamics::derive(&arm);
+        let q2 = Expr::<Rational>::var(Var::Q(1));
+        let r = q2.add(&Expr::constant(l1.clone() + c2.clone()));
+        let m11 = r.mul(&r).scale(&m2).add(&Expr::constant(
+            i1 + m1.clone() * c1.clone() * c1.clone() + i2,
+        ));
+        assert_eq!(d.mass_matrix[0][0], m11);
+        assert_eq!(d.mass_matrix[0][1], Expr::zero());
+        assert_eq!(d.mass_matrix[1][1], Expr::constant(m2.clone()));
+        // c = (2 m2 r qd1 qd2, -m2 r qd1^2)
+        let (qd1, qd2) = (Expr::var(Var::Qd(0)), Expr::var(Var::Qd(1)));
+        assert_eq!(
+            d.coriolis[0],
+            r.mul(&qd1).mul(&qd2).scale(&(int(2) * m2.clone()))
+        );
+        assert_eq!(d.coriolis[1], r.mul(&qd1).mul(&qd1).scale(&(-m2.clone())));
+        // g = (g (m1 c1 + m2 r) cos q1, g m2 sin q1)
+        let q1 = Angle::new(vec![1]);
+        let moment = r.scale(&m2).add(&Expr::constant(m1 * c1));
+        assert_eq!(d.gravity[0], moment.mul(&Expr::cos(g.clone(), q1.clone())));
+        assert_eq!(d.gravity[1], Expr::sin(g * m2, q1));
+        let k = Kinematics::derive(&arm);
+        // tip = (l1 + q2 + l2) (cos q1, sin q1); the Jacobian's last row (1, 0)
+        let reach = q2.add(&Expr::constant(l1 + ratio(1, 2)));
+        assert_eq!(
+            k.points[2].0,
+            reach.mul(&Expr::cos(int(1), Angle::new(vec![1])))
+        );
+        assert_eq!(k.jacobian[2], vec![Expr::constant(int(1)), Expr::zero()]);
+        assert_eq!(k.jacobian[0][1], Expr::cos(int(1), Angle::new(vec![1])));
     }
 
     #[test]

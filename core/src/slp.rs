@@ -367,6 +367,7 @@ impl Program {
             let x = match v {
                 Var::Qd(j) => self.input(Input::Qd(j)),
                 Var::Qdd(j) => self.input(Input::Qdd(j)),
+                Var::Q(j) => self.input(Input::Q(j)),
             };
             for _ in 0..e {
                 acc = self.mul(acc, x);

@@ -106,13 +106,15 @@ impl Rational {
     }
 }
 
-/// A joint rate or acceleration (0-based joint).
+/// A joint rate or acceleration, or a prismatic joint's displacement (0-based joint).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Var {
     /// `qd[j]`.
     Qd(usize),
     /// `qdd[j]`.
     Qdd(usize),
+    /// `q[j]` of a prismatic joint (revolute angles appear only inside `cos` and `sin`).
+    Q(usize),
 }
 
 /// The digits of the encoding: printable, so the literal needs no escapes.
@@ -383,7 +385,7 @@ pub enum Trig {
     Sin(Angle),
 }
 
-/// Rates and accelerations with their exponents.
+/// Rates, accelerations and prismatic displacements with their exponents.
 #[derive(Clone, Copy, PartialEq, Eq, Hash)]
 pub struct Powers {
     code: &'static [u8],
@@ -392,7 +394,7 @@ pub struct Powers {
 }
 
 impl Powers {
-    /// Whether there is none (the term is a function of `q` alone).
+    /// Whether there is none (the term is a function of revolute angles alone).
     #[must_use]
     pub const fn is_empty(&self) -> bool {
         self.len == 0
@@ -408,8 +410,12 @@ impl IntoIterator for Powers {
             pos: self.pos,
             left: self.len,
             make: |v, e, _| {
-                let j = usize::try_from(v / 2).unwrap_or(usize::MAX);
-                let var = if v % 2 == 0 { Var::Qd(j) } else { Var::Qdd(j) };
+                let j = usize::try_from(v / 3).unwrap_or(usize::MAX);
+                let var = match v % 3 {
+                    0 => Var::Qd(j),
+                    1 => Var::Qdd(j),
+                    _ => Var::Q(j),
+                };
                 (var, u32::try_from(e).unwrap_or(u32::MAX))
             },
             names: &[],
@@ -506,7 +512,7 @@ pub struct Term {
     pub coeff: Rational,
     /// The trigonometric atom.
     pub trig: Trig,
-    /// Rates and accelerations with their exponents (empty for a function of `q` alone).
+    /// Rates, accelerations and prismatic displacements with their exponents.(empty for a function of `q` alone).
     pub powers: Powers,
     /// Run-time parameters with their exponents; empty for a term whose coefficient is a
     /// number.
@@ -534,6 +540,7 @@ impl Term {
             .into_iter()
             .map(|(v, e)| match v {
                 Var::Qd(j) => qd[j].powi(i32::try_from(e).unwrap_or(i32::MAX)),
+                Var::Q(j) => q[j].powi(i32::try_from(e).unwrap_or(i32::MAX)),
                 Var::Qdd(_) => f64::NAN,
             })
             .product();

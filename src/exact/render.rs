@@ -177,6 +177,7 @@ fn term_magnitude(f: &mut Formatter<'_>, t: &Term, style: Style) -> fmt::Result 
             (Var::Qdd(j), Style::Plain) => joint(f, "qdd", j, style)?,
             (Var::Qd(j), Style::Latex) => joint(f, "\\dot{q}", j, style)?,
             (Var::Qdd(j), Style::Latex) => joint(f, "\\ddot{q}", j, style)?,
+            (Var::Q(j), _) => joint(f, "q", j, style)?,
         }
         exponent(f, e, style)?;
     }
