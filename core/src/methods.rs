@@ -902,6 +902,65 @@ mod tests {
         }
     }
 
+    /// The arm with the joints whose bit is set in `pattern` prismatic.
+    fn mixed(n: usize, pattern: u32) -> ArmSpec {
+        let mut a = arm(n);
+        for (i, l) in a.links.iter_mut().enumerate() {
+            if pattern >> i & 1 == 1 {
+                l.joint = JointKind::Prismatic;
+            }
+        }
+        a
+    }
+
+    /// For every joint pattern of 1-4 links and a few longer ones, the unrolled recursions
+    /// (the Newton-Euler torques, the mass matrix by unit accelerations) and forward dynamics
+    /// agree with the expanded Lagrangian, over the rationals and over parameters.
+    #[test]
+    fn prismatic_candidates_agree() {
+        let patterns = (1..=4)
+            .flat_map(|n| (1..1u32 << n).map(move |p| (n, p)))
+            .chain([(6, 0b10_1010), (7, 0b110_0001)]);
+        for (n, pattern) in patterns {
+            let spec = mixed(n, pattern);
+            let d = Derived::new(&spec);
+            let what = format!("n = {n}, joints {pattern:b}");
+            let tau = eval(&d.inverse_dynamics_lagrange_method(), n);
+            same(
+                &tau,
+                &eval(&d.inverse_dynamics_newton_euler_method(), n),
+                &what,
+            );
+            let m = eval(&d.mass_matrix_expanded_method(), n);
+            same(&m, &eval(&d.mass_matrix_composite_method(), n), &what);
+            same(
+                &eval(&d.vector_method("c", &d.dynamics.coriolis), n),
+                &eval(&d.newton_euler_method("c", Terms::CORIOLIS), n),
+                &what,
+            );
+            same(
+                &eval(&d.vector_method("g", &d.dynamics.gravity), n),
+                &eval(&d.newton_euler_method("g", Terms::GRAVITY), n),
+                &what,
+            );
+            let fd = eval(&d.forward_dynamics_with(false, false, false), n);
+            for k in 1..8 {
+                let with = d.forward_dynamics_with(k & 1 == 1, k & 2 == 2, k & 4 == 4);
+                same(&fd, &eval(&with, n), &what);
+            }
+            if n <= 3 {
+                let (symbolic, values) = parameterised(&spec);
+                let s = Derived::new(&symbolic);
+                same(
+                    &tau,
+                    &eval_with(&s.inverse_dynamics_newton_euler_method(), n, &values),
+                    &what,
+                );
+                same(&m, &eval_with(&s.mass_matrix_method(), n, &values), &what);
+            }
+        }
+    }
+
     #[test]
     #[ignore = "prints a table"]
     fn print_op_counts() {

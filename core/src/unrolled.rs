@@ -6,7 +6,7 @@
 use num_traits::{One, Signed, Zero};
 
 use crate::expr::Expr;
-use crate::mechanics::ArmSpec;
+use crate::mechanics::{ArmSpec, JointKind};
 use crate::methods::two;
 use crate::ring::Rational;
 use crate::slp::{Emit, Id, Input, Program};
@@ -128,7 +128,10 @@ fn body_nodes<C: Emit>(p: &mut Program, arm: &ArmSpec<C>) -> Vec<BodyNodes> {
 /// each joint's rotor adds `armature qdd_i`.
 pub(crate) fn newton_euler<C: Emit>(p: &mut Program, arm: &ArmSpec<C>, terms: Terms) -> Vec<Id> {
     let bodies = body_nodes(p, arm);
-    newton_euler_of(p, arm, &bodies, None, terms)
+    let qdd: Vec<Id> = (0..arm.links.len())
+        .map(|j| p.input(Input::Qdd(j)))
+        .collect();
+    newton_euler_of(p, arm, &bodies, None, terms, &qdd)
 }
 
 /// Which standard parameter is one in [`newton_euler_unit`].
@@ -158,7 +161,32 @@ pub(crate) fn newton_euler_unit<C: Emit>(p: &mut Program, arm: &ArmSpec<C>, unit
         })
         .collect();
     let armature: Vec<Id> = (0..n).map(|j| pick(unit == Unit::Armature(j))).collect();
-    newton_euler_of(p, arm, &bodies, Some(&armature), Terms::ALL)
+    let qdd: Vec<Id> = (0..n).map(|j| p.input(Input::Qdd(j))).collect();
+    newton_euler_of(p, arm, &bodies, Some(&armature), Terms::ALL, &qdd)
+}
+
+/// The mass matrix column by column, each the recursion's torques for a unit acceleration of
+/// one joint (no rates, no gravity): what an arm with prismatic joints uses in place of the
+/// composite-rigid-body form, whose tail inertias assume fixed link lengths.
+fn unit_acceleration_mass_matrix<C: Emit>(p: &mut Program, arm: &ArmSpec<C>) -> Vec<Vec<Id>> {
+    let n = arm.links.len();
+    let bodies = body_nodes(p, arm);
+    let (zero, one) = (p.constant(Rational::zero()), p.constant(Rational::one()));
+    let accelerations = Terms {
+        rates: false,
+        accelerations: true,
+        gravity: false,
+    };
+    let columns: Vec<Vec<Id>> = (0..n)
+        .map(|j| {
+            let qdd: Vec<Id> = (0..n).map(|k| if k == j { one } else { zero }).collect();
+            newton_euler_of(p, arm, &bodies, None, accelerations, &qdd)
+        })
+        .collect();
+    // Symmetric: the upper triangle's nodes serve both halves.
+    (0..n)
+        .map(|i| (0..n).map(|j| columns[i.max(j)][i.min(j)]).collect())
+        .collect()
 }
 
 fn newton_euler_of<C: Emit>(
@@ -167,6 +195,7 @@ fn newton_euler_of<C: Emit>(
     bodies: &[BodyNodes],
     armature: Option<&[Id]>,
     terms: Terms,
+    qdd: &[Id],
 ) -> Vec<Id> {
     let n = arm.links.len();
     let zero = p.constant(Rational::zero());
@@ -175,28 +204,52 @@ fn newton_euler_of<C: Emit>(
     } else {
         zero
     };
+    let prismatic = |i: usize| arm.links[i].joint == JointKind::Prismatic;
     // Acceleration of the current joint in the previous link's frame.
     let mut end: V2 = (zero, g);
     let (mut w, mut al) = (zero, zero);
-    let mut trig = Vec::with_capacity(n);
+    // A revolute joint's rotation; `None` for a prismatic joint, which does not turn.
+    let mut trig: Vec<Option<V2>> = Vec::with_capacity(n);
     let mut force = Vec::with_capacity(n);
     let mut alpha = Vec::with_capacity(n);
     let mut accel = Vec::with_capacity(n);
     for (i, (link, body)) in arm.links.iter().zip(bodies).enumerate() {
-        let cs = joint_trig(p, i);
-        let a = rotate_back(p, cs, end);
+        let (cs, a) = if prismatic(i) {
+            // The joint slides along the previous link's axis, which turns at w: its origin
+            // accelerates by (qdd - q w^2, 2 qd w + q al) there, in a frame of the same
+            // orientation.
+            let q = p.input(Input::Q(i));
+            let mut a = end;
+            if terms.rates {
+                let w2 = p.mul(w, w);
+                let qw2 = p.mul(q, w2);
+                let qd = p.input(Input::Qd(i));
+                let qdw = p.mul(qd, w);
+                let two = p.constant(Rational::from_integer(2.into()));
+                let coriolis = p.mul(two, qdw);
+                a = (p.sub(a.0, qw2), p.add(a.1, coriolis));
+            }
+            if terms.accelerations {
+                let qal = p.mul(q, al);
+                a = (p.add(a.0, qdd[i]), p.add(a.1, qal));
+            }
+            (None, a)
+        } else {
+            let cs = joint_trig(p, i);
+            let a = rotate_back(p, cs, end);
+            if terms.rates {
+                let qd = p.input(Input::Qd(i));
+                w = p.add(w, qd);
+                p.set_name(w, format!("w{}", i + 1));
+            }
+            if terms.accelerations {
+                al = p.add(al, qdd[i]);
+                p.set_name(al, format!("al{}", i + 1));
+            }
+            (Some(cs), a)
+        };
         p.set_name(a.0, format!("ax{}", i + 1));
         p.set_name(a.1, format!("ay{}", i + 1));
-        if terms.rates {
-            let qd = p.input(Input::Qd(i));
-            w = p.add(w, qd);
-            p.set_name(w, format!("w{}", i + 1));
-        }
-        if terms.accelerations {
-            let qdd = p.input(Input::Qdd(i));
-            al = p.add(al, qdd);
-            p.set_name(al, format!("al{}", i + 1));
-        }
         let w2 = p.mul(w, w);
         // The force on the body, m a + (-w^2 hx - al hy, -w^2 hy + al hx) with h = m com.
         let (m, (hx, hy)) = (body.mass, body.first);
@@ -239,9 +292,17 @@ fn newton_euler_of<C: Emit>(
         here = p.sub(here, t);
         let mut f = force[i];
         if let Some(child) = tail {
-            // The force the tail exerts at the far end of the link, in this link's frame.
-            let r = rotate(p, trig[i + 1], child);
-            let l = p.coefficient(&link.length);
+            // The force the tail exerts at its joint, in this link's frame: at the link's far
+            // end, or slid beyond it by a prismatic joint.
+            let r = match trig[i + 1] {
+                Some(cs) => rotate(p, cs, child),
+                None => child,
+            };
+            let mut l = p.coefficient(&link.length);
+            if prismatic(i + 1) {
+                let q = p.input(Input::Q(i + 1));
+                l = p.add(l, q);
+            }
             let lever = p.mul(l, r.1);
             here = p.add(here, lever);
             f = (p.add(f.0, r.0), p.add(f.1, r.1));
@@ -249,16 +310,16 @@ fn newton_euler_of<C: Emit>(
         p.set_name(f.0, format!("fx{}", i + 1));
         p.set_name(f.1, format!("fy{}", i + 1));
         moment = p.add(moment, here);
-        tau[i] = moment;
+        // A revolute joint carries the moment about it, a prismatic one the force along it.
+        tau[i] = if prismatic(i) { f.0 } else { moment };
         if terms.accelerations {
             // The rotor turns with the joint's own rate: its torque is not transmitted inwards.
             let armature = match armature {
                 Some(a) => a[i],
                 None => p.coefficient(&link.armature),
             };
-            let qdd = p.input(Input::Qdd(i));
-            let rotor = p.mul(armature, qdd);
-            tau[i] = p.add(moment, rotor);
+            let rotor = p.mul(armature, qdd[i]);
+            tau[i] = p.add(tau[i], rotor);
         }
         tail = Some(f);
     }
@@ -270,6 +331,9 @@ fn newton_euler_of<C: Emit>(
 /// rotational inertia about joint `j` (`M_jj`, plus the joint's armature);
 /// `M_ij = M_(i+1)j + l_i (h in link i's frame).x`.
 pub(crate) fn composite_mass_matrix<C: Emit>(p: &mut Program, arm: &ArmSpec<C>) -> Vec<Vec<Id>> {
+    if !arm.all_revolute() {
+        return unit_acceleration_mass_matrix(p, arm);
+    }
     let n = arm.links.len();
     let zero = p.constant(Rational::zero());
     let trig: Vec<V2> = (0..n).map(|j| joint_trig(p, j)).collect();
