@@ -19,7 +19,7 @@ use std::collections::BTreeMap;
 use num_traits::{One, Zero};
 
 use crate::expr::{Expr, Monomial};
-use crate::mechanics::{ArmSpec, Body, Dynamics, LinkSpec, RateProducts};
+use crate::mechanics::{ArmSpec, Body, Dynamics, JointKind, LinkSpec, RateProducts};
 use crate::poly::{Param, ParamMonomial, Poly};
 use crate::ring::{Coefficient, Rational};
 use crate::slp::Emit;
@@ -478,11 +478,14 @@ pub fn base_parameters_from_energies(
         .map(|l| l.length.as_rational())
         .collect::<Option<Vec<_>>>()
         .zip(arm.gravity.as_rational());
+    let joints: Vec<JointKind> = arm.links.iter().map(|l| l.joint).collect();
     let base = match rational {
-        Some((lengths, gravity)) => energy_elimination(&lengths, gravity, &parameters)?.into_poly(),
+        Some((lengths, gravity)) => {
+            energy_elimination(&lengths, &joints, gravity, &parameters)?.into_poly()
+        }
         None => {
             let lengths: Vec<Poly> = arm.links.iter().map(|l| l.length.clone()).collect();
-            energy_elimination(&lengths, arm.gravity.clone(), &parameters)?
+            energy_elimination(&lengths, &joints, arm.gravity.clone(), &parameters)?
         }
     };
     Some((parameters, base))
@@ -491,6 +494,7 @@ pub fn base_parameters_from_energies(
 /// [`base_parameters_from_energies`] for an arm of these lengths and gravity.
 fn energy_elimination<C: Emit>(
     lengths: &[C],
+    joints: &[JointKind],
     gravity: C,
     parameters: &[Standard],
 ) -> Option<BaseParameters<C>> {
@@ -499,8 +503,10 @@ fn energy_elimination<C: Emit>(
     let geometry = ArmSpec {
         links: lengths
             .iter()
-            .map(|l| LinkSpec {
+            .zip(joints)
+            .map(|(l, &joint)| LinkSpec {
                 length: l.clone(),
+                joint,
                 ..LinkSpec::rod(num(Rational::one()), num(Rational::one()))
             })
             .collect(),
@@ -518,7 +524,10 @@ fn energy_elimination<C: Emit>(
     // the derive of a 30-link arm half a minute.
     let mut mass_columns: Vec<Expr<C>> = vec![Expr::zero()];
     let half = Rational::new(1.into(), 2.into());
-    for a in 0..n {
+    // With prismatic joints the lengths vary: each unit mass's energies come from the general
+    // route below instead.
+    let revolute = geometry.all_revolute();
+    for a in (0..n).filter(|_| revolute) {
         let la = &geometry.links[a].length;
         let mut step = rates
             .product(a, a)
@@ -538,7 +547,7 @@ fn energy_elimination<C: Emit>(
     let constant = |m: &Monomial, t: &Trig| m.degree() == 0 && *t == Trig::One;
     for (k, s) in parameters.iter().enumerate() {
         let link = s.link.unwrap_or(n - 1);
-        if s.kind == Kind::Mass {
+        if s.kind == Kind::Mass && revolute {
             let mut v: Sparse<C> = BTreeMap::new();
             for (m, t, c) in mass_columns[link].terms() {
                 if !constant(m, t) {
@@ -635,15 +644,34 @@ mod tests {
             .collect()
     }
 
+    /// Joint patterns to test (bit `i` set: joint `i` prismatic): all of them up to three
+    /// links.
+    fn patterns(n: usize) -> Vec<u32> {
+        if n <= 3 {
+            (0..1 << n).collect()
+        } else {
+            vec![0, 0b0101, 0b1010]
+        }
+    }
+
+    fn with_joints(mut a: ArmSpec, pattern: u32) -> ArmSpec {
+        for (i, l) in a.links.iter_mut().enumerate() {
+            if pattern >> i & 1 == 1 {
+                l.joint = crate::mechanics::JointKind::Prismatic;
+            }
+        }
+        a
+    }
+
     #[test]
     fn regressor_times_standard_parameters_is_the_torque_exactly() {
-        for n in 1..=4 {
+        for (n, pattern) in (1..=4).flat_map(|n| patterns(n).into_iter().map(move |p| (n, p))) {
             for (g, a, p) in [
                 (true, false, false),
                 (true, true, true),
                 (false, true, false),
             ] {
-                let literal = arm(n, g, a, p);
+                let literal = with_joints(arm(n, g, a, p), pattern);
                 let reg = regressor(&poly_arm(&literal));
                 let values = standard_values(&literal, &reg.parameters);
                 let torques = Dynamics::derive(&poly_arm(&literal)).torques;
@@ -670,13 +698,13 @@ mod tests {
 
     #[test]
     fn energies_give_the_torques_base_parameters() {
-        for n in 1..=4 {
+        for (n, pattern) in (1..=4).flat_map(|n| patterns(n).into_iter().map(move |p| (n, p))) {
             for (g, a, p) in [
                 (true, false, false),
                 (true, true, true),
                 (false, true, true),
             ] {
-                let arm = poly_arm(&arm(n, g, a, p));
+                let arm = poly_arm(&with_joints(arm(n, g, a, p), pattern));
                 let reg = regressor(&arm);
                 let from_torques = base_parameters(&reg).expect("rational");
                 let (params, from_energies) =
