@@ -121,3 +121,47 @@ impl PrismaticField for crate::Prismatic {}
 
 #[inline(always)]
 pub const fn prismatic_field<T: PrismaticField>() {}
+
+/// Inverse statics from the generated Jacobian, for two- and three-link arms with prismatic
+/// joints (the revolute ones have the paper's closed forms): the tip wrench `w` with
+/// `J^T w = tau`, `J` the task rows (position for two links, position and angle for three).
+/// Singular when `|det J|` is below `SINGULAR_THRESHOLD` times the product of its columns'
+/// norms (Hadamard's bound on it), reported as `measure = det J`.
+macro_rules! by_jacobian {
+    ($name:ident, $n:literal) => {
+        pub fn $name(
+            jacobian: &SMatrix<f64, 3, $n>,
+            q: &SVector<f64, $n>,
+            tau: &SVector<f64, $n>,
+        ) -> Result<SVector<f64, $n>, crate::ArmError> {
+            use crate::ArmError;
+            if !q.iter().all(|x| x.is_finite()) {
+                return Err(ArmError::NonFinite { argument: "q" });
+            }
+            if !tau.iter().all(|x| x.is_finite()) {
+                return Err(ArmError::NonFinite { argument: "tau" });
+            }
+            let j: SMatrix<f64, $n, $n> = SMatrix::from_fn(|r, c| jacobian[(r, c)]);
+            let det = j.determinant();
+            let bound: f64 = j.column_iter().map(|c| c.norm()).product();
+            let threshold = crate::kinematics::SINGULAR_THRESHOLD * bound;
+            let singular = ArmError::Singular {
+                measure: det,
+                threshold,
+            };
+            // Also NaN: a non-finite Jacobian from finite but huge q.
+            if !(det.abs() >= threshold) || bound == 0.0 {
+                return Err(singular);
+            }
+            let w = j.transpose().lu().solve(tau).ok_or(singular)?;
+            if w.iter().all(|x| x.is_finite()) {
+                Ok(w)
+            } else {
+                Err(ArmError::NonFinite { argument: "result" })
+            }
+        }
+    };
+}
+
+by_jacobian!(tip_force_by_jacobian, 2);
+by_jacobian!(tip_wrench_by_jacobian, 3);

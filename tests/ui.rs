@@ -11,6 +11,7 @@ fn ui() {
     t.compile_fail("tests/ui/value/*.rs");
     t.compile_fail("tests/ui/physics/*.rs");
     t.compile_fail("tests/ui/param/*.rs");
+    t.compile_fail("tests/ui/range/*.rs");
     t.compile_fail("tests/ui/stub/*.rs");
     t.pass("tests/ui/pass/*.rs");
 }

@@ -714,6 +714,9 @@ pub fn closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
         .collect();
     let target = local("target");
     let (q, tau) = (local("q"), local("tau"));
+    if !d.arm.all_revolute() {
+        return mixed_closed_forms(d, header);
+    }
     match lengths.as_slice() {
         [l1, l2] => {
             let equal = d.arm.links[0].length == d.arm.links[1].length;
@@ -766,6 +769,50 @@ pub fn closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
                 fn tip_wrench(&self, #q: &::planar_arm::nalgebra::SVector<f64, 3>, #tau: &::planar_arm::nalgebra::SVector<f64, 3>)
                     -> ::core::result::Result<(::planar_arm::nalgebra::Vector2<f64>, f64), ::planar_arm::ArmError> {
                     ::planar_arm::kinematics::tip_wrench3(#l1, #l2, #l3, #q, #tau)
+                }
+            }
+        },
+        _ => TokenStream::new(),
+    }
+}
+
+/// [`closed_forms`] of a two- or three-link arm with a prismatic joint: the statics by the
+/// generated Jacobian (`J^T w = tau`, no closed form from the paper).
+fn mixed_closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
+    let Header {
+        impl_generics,
+        ty,
+        where_clause,
+        ..
+    } = header;
+    let (q, tau) = (local("q"), local("tau"));
+    let solve = |f: TokenStream| quote!(::planar_arm::__private::#f(&::planar_arm::PlanarArm::jacobian(self, #q), #q, #tau));
+    let (force, wrench) = (
+        solve(quote!(tip_force_by_jacobian)),
+        solve(quote!(tip_wrench_by_jacobian)),
+    );
+    match d.arm.links.len() {
+        2 => quote! {
+            #[automatically_derived]
+            impl #impl_generics ::planar_arm::kinematics::TipForce for #ty #where_clause {
+                /// By the generated Jacobian: `J^T F = tau`, a prismatic joint's entry of
+                /// `tau` a force along it.
+                #[inline]
+                fn tip_force(&self, #q: &::planar_arm::nalgebra::SVector<f64, 2>, #tau: &::planar_arm::nalgebra::SVector<f64, 2>)
+                    -> ::core::result::Result<::planar_arm::nalgebra::Vector2<f64>, ::planar_arm::ArmError> {
+                    #force.map(|w| ::planar_arm::nalgebra::Vector2::new(w[0], w[1]))
+                }
+            }
+        },
+        3 => quote! {
+            #[automatically_derived]
+            impl #impl_generics ::planar_arm::kinematics::TipWrench for #ty #where_clause {
+                /// By the generated Jacobian: `J^T (F, T) = tau`, a prismatic joint's entry of
+                /// `tau` a force along it.
+                #[inline]
+                fn tip_wrench(&self, #q: &::planar_arm::nalgebra::SVector<f64, 3>, #tau: &::planar_arm::nalgebra::SVector<f64, 3>)
+                    -> ::core::result::Result<(::planar_arm::nalgebra::Vector2<f64>, f64), ::planar_arm::ArmError> {
+                    #wrench.map(|w| (::planar_arm::nalgebra::Vector2::new(w[0], w[1]), w[2]))
                 }
             }
         },
