@@ -7,25 +7,47 @@
 
 use planar_arm::symbolic::generate::{closed_forms, generate, Header};
 use planar_arm::symbolic::methods::Derived;
-use planar_arm::symbolic::ring::ratio;
-use planar_arm::symbolic::ArmSpec;
+use planar_arm::symbolic::ring::{int, ratio};
+use planar_arm::symbolic::{ArmSpec, JointKind, LinkSpec};
 use proc_macro2::{Ident, Span};
 use quote::quote;
 
+/// The paper's equal rods (two or three), or with `n = 0` the polar arm: a turret and a
+/// prismatic boom with a range.
 fn expand(n: usize) -> String {
-    let mut arm = ArmSpec::paper(n);
-    arm.gravity = ratio(981, 100);
+    let arm = if n == 0 {
+        ArmSpec {
+            links: vec![
+                LinkSpec::rod(ratio(1, 5), int(3)),
+                LinkSpec {
+                    joint: JointKind::Prismatic,
+                    range: Some((int(0), ratio(3, 5))),
+                    ..LinkSpec::rod(ratio(1, 2), ratio(3, 2))
+                },
+            ],
+            gravity: ratio(981, 100),
+            payload: None,
+        }
+    } else {
+        let mut arm = ArmSpec::paper(n);
+        arm.gravity = ratio(981, 100);
+        arm
+    };
     let derived = Derived::new(&arm);
-    let names = ["upper", "fore", "hand"];
+    let names: &[&str] = if n == 0 {
+        &["turret", "boom"]
+    } else {
+        &["upper", "fore", "hand"]
+    };
     let header = Header {
         impl_generics: quote!(),
-        ty: if n == 2 {
-            quote!(Paper2)
-        } else {
-            quote!(Paper3)
+        ty: match n {
+            0 => quote!(Polar),
+            2 => quote!(Paper2),
+            _ => quote!(Paper3),
         },
         where_clause: quote!(),
-        fields: names[..n]
+        fields: names[..arm.links.len()]
             .iter()
             .map(|s| Ident::new(s, Span::call_site()))
             .collect(),
@@ -73,4 +95,9 @@ fn paper_two_links() {
 #[test]
 fn paper_three_links() {
     snapshot("paper3.rs", 3);
+}
+
+#[test]
+fn polar_arm() {
+    snapshot("polar.rs", 0);
 }

@@ -4,7 +4,7 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
         const __NAMES: &[&::core::primitive::str] = &[];
         ::planar_arm::exact::Derivation {
             kinetic_energy: ::planar_arm::__private::terms(
-                b"AKMBACABCECACBACAACGCABCBABCECACCABCBAACMBCCA",
+                b"AKMBACABCECACBACAACGCABDBABCECACCABDBAACMBDCA",
                 __NAMES,
             ),
             potential_energy: ::planar_arm::__private::terms(
@@ -22,7 +22,7 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
                 ],
             ],
             coriolis: [
-                ::planar_arm::__private::terms(b"CBCCACCABCBACBECACBCCA", __NAMES),
+                ::planar_arm::__private::terms(b"CBCCACCABDBACBECACBDCA", __NAMES),
                 ::planar_arm::__private::terms(b"CCECACBACA", __NAMES),
             ],
             gravity: [

@@ -4,7 +4,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
         const __NAMES: &[&::core::primitive::str] = &[];
         ::planar_arm::exact::Derivation {
             kinetic_energy: ::planar_arm::__private::terms(
-                b"AECBACABGECACBACABCEDACCBACABCEDAACBACAAKGCABCBABGECACCABCBABCEDACCCABCBABCCDAACCABCBAACGCABEBABCEDACCCABEBABCEDAACCABEBAAKMBCCABCEDAACBCCAACGCCBEBABCEDAACCCBEBAACMBECA",
+                b"AECBACABGECACBACABCEDACCBACABCEDAACBACAAKGCABDBABGECACCABDBABCEDACCCABDBABCCDAACCABDBAACGCABGBABCEDACCCABGBABCEDAACCABGBAAKMBDCABCEDAACBDCAACGCDBGBABCEDAACCDBGBAACMBGCA",
                 __NAMES,
             ),
             potential_energy: ::planar_arm::__private::terms(
@@ -39,15 +39,15 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
             ],
             coriolis: [
                 ::planar_arm::__private::terms(
-                    b"CFCCACCABCBACBCDACCCABCBACBCDACCCABEBACBCDAACCABEBACFECACBCCACBEDACCBCCACBCDACCCCBEBACBCDAACCCBEBACBEDACCBECACBEDAACBECA",
+                    b"CFCCACCABDBACBCDACCCABDBACBCDACCCABGBACBCDAACCABGBACFECACBDCACBEDACCBDCACBCDACCCDBGBACBCDAACCDBGBACBEDACCBGCACBEDAACBGCA",
                     __NAMES,
                 ),
                 ::planar_arm::__private::terms(
-                    b"CGECACBACACCEDACCBACACBCDAACCABEBACBCDAACCCBEBACBEDAACBECA",
+                    b"CGECACBACACCEDACCBACACBCDAACCABGBACBCDAACCDBGBACBEDAACBGCA",
                     __NAMES,
                 ),
                 ::planar_arm::__private::terms(
-                    b"CCEDACCBACACCEDAACBACACCCDAACCABCBACCEDAACBCCA",
+                    b"CCEDACCBACACCEDAACBACACCCDAACCABDBACCEDAACBDCA",
                     __NAMES,
                 ),
             ],
@@ -419,7 +419,7 @@ Cost: 29 multiplications, 28 additions, 0 divisions, 3 sin_cos pairs.*/
         let __ax1 = __T::from_f64(981.0 / 100.0) * __s1;
         let __ay1 = __T::from_f64(981.0 / 100.0) * __c1;
         let __ex1 = __ax1 - __qd1 * __qd1;
-        let __ey1 = __ay1 + __qdd1;
+        let __ey1 = __qdd1 + __ay1;
         let __ax2 = __ex1 * __c2 + __ey1 * __s2;
         let __ay2 = __ey1 * __c2 - __ex1 * __s2;
         let __w2 = __qd1 + __qd2;
@@ -430,7 +430,7 @@ Cost: 29 multiplications, 28 additions, 0 divisions, 3 sin_cos pairs.*/
         let __ax3 = __ex2 * __c3 + __ey2 * __s3;
         let __ay3 = __ey2 * __c3 - __ex2 * __s3;
         let __w3 = __w2 + __qd3;
-        let __al3 = __al2 + __qdd3;
+        let __al3 = __qdd3 + __al2;
         let __fx3 = __ax3 - __T::from_f64(1.0 / 2.0) * __w3 * __w3;
         let __fy3 = __ay3 + __T::from_f64(1.0 / 2.0) * __al3;
         let __tau3 = __T::from_f64(1.0 / 3.0) * __al3 + __T::from_f64(1.0 / 2.0) * __ay3;
