@@ -93,7 +93,7 @@
 //!   struct: `payload = P` (kg), a body rigidly held at the tip of the last link, with optional
 //!   `payload_inertia = I` (kg m^2, about its own centre) and `payload_com = (x, y)` (m, its
 //!   centre from the tip in the last link's frame).
-//! - Each field of type [`Revolute`] is a link, base first, with
+//! - Each field of type [`Revolute`] or [`Prismatic`] is a link, base first, with
 //!   `#[arm(length = L, mass = M, inertia = I, com = C)]`: `inertia` is the moment of inertia
 //!   about the link's centre of mass (default: uniform rod, `M L^2 / 12`), `com` the centre of
 //!   mass along the link from its own joint (default `L / 2`; it may be negative or beyond the
@@ -101,7 +101,9 @@
 //!   counter-clockwise. `length` and `mass` are required. Joint keys with MuJoCo's names and
 //!   meanings: `armature = A` (reflected rotor inertia, kg m^2, added to M's diagonal),
 //!   `damping = B` (viscous torque `B qd_i`), `frictionloss = F` (Coulomb torque
-//!   `F sign(qd_i)`, `sign(0) = 0`).
+//!   `F sign(qd_i)`, `sign(0) = 0`). `range = (lo, hi)` (optional, numbers) is the joint's
+//!   travel, radians or metres: the work-spaces and inverse kinematics respect it, the
+//!   dynamics never clamp to it.
 //! - Values are exact: integers, decimals (`0.35` is `7/20`, not an `f64`), fractions `a/b`
 //!   and `+ - * /` with parentheses. Nothing passes through a float before the final emission.
 //! - Any value may be a run-time parameter, `self.NAME`: an `f64` field of the struct read when
@@ -140,10 +142,54 @@
 //! assert_eq!(arm.friction(&qd)[1], -0.4);
 //! ```
 //!
+//! # Prismatic joints
+//!
+//! A [`Prismatic`] link slides along the previous link's direction (the first along +x of the
+//! base) by `q_i` metres without turning: its frame starts at the previous link's end plus
+//! `q_i` along that direction. The derivation is the same, exactly: the expressions become
+//! polynomials in the prismatic coordinates (trigonometric atoms still come only from the
+//! revolute angles). The polar arm, a turret and a telescoping boom, by hand: the boom's centre
+//! is `r = l1 + q2 + l2 / 2` from the axis and moves radially at `qd2` and sideways at
+//! `r qd1`, so `M = [[I1 + m1 c1^2 + I2 + m2 r^2, 0], [0, m2]]`, and at `qdd = 0` the slide's
+//! generalised force is the force `-m2 r qd1^2 + g m2 sin q1` (centrifugal and gravity):
+//!
+//! ```
+//! use planar_arm::prelude::*;
+//!
+//! #[derive(PlanarArm)]
+//! #[arm(gravity = 9.81)]
+//! struct Polar {
+//!     #[arm(length = 0.2, mass = 3)]
+//!     turret: Revolute,
+//!     #[arm(length = 0.5, mass = 1.5, range = (0, 0.6))]
+//!     boom: Prismatic,
+//! }
+//!
+//! let arm = Polar { turret: Revolute, boom: Prismatic };
+//! let q = Vector2::new(0.4_f64, 0.25);
+//! let r = 0.2 + q[1] + 0.25;
+//! let m = arm.mass_matrix(&q);
+//! let turret = 3.0 * 0.2 * 0.2 / 12.0 + 3.0 * 0.1 * 0.1;
+//! assert!((m[(0, 0)] - (turret + 1.5 * 0.5 * 0.5 / 12.0 + 1.5 * r * r)).abs() < 1e-14);
+//! assert!(m[(0, 1)] == 0.0 && m[(1, 1)] == 1.5);
+//! let qd = Vector2::new(2.0, 0.0);
+//! let tau = arm.inverse_dynamics(&q, &qd, &Vector2::zeros());
+//! assert!((tau[1] - (-1.5 * r * 4.0 + 9.81 * 1.5 * q[0].sin())).abs() < 1e-13);
+//! // The tip is (l1 + q2 + l2) (cos q1, sin q1); the Jacobian's last row is (1, 0).
+//! let tip = arm.tip_pose(&q).translation.vector;
+//! assert!((tip - 0.95 * Vector2::new(q[0].cos(), q[0].sin())).norm() < 1e-15);
+//! assert_eq!(arm.jacobian(&q)[(2, 1)], 0.0);
+//! assert_eq!(arm.links()[1].joint, Joint::Prismatic);
+//! ```
+//!
+//! For a prismatic joint `tau_i` is a force (N), `armature` a reflected mass (kg), `damping`
+//! N s/m and `frictionloss` N; the statics and the regressors speak of the same forces.
+//!
 //! # Conventions
 //!
-//! `q[0]` is link 1's angle from +x; `q[i]` (i > 0) is link i+1's angle relative to link i;
-//! all zeros is the arm stretched along +x. The equations are `tau = M(q) qdd + c(q, qd) +
+//! `q[0]` is link 1's angle from +x; `q[i]` (i > 0) is link i+1's angle relative to link i
+//! (a prismatic joint's `q[i]` is its displacement, metres); all zeros is the arm stretched
+//! along +x. The equations are `tau = M(q) qdd + c(q, qd) +
 //! g(q)`, with c the velocity-product torques and g the torques that hold the arm against
 //! gravity (`g = dV/dq`). Potential energy is measured from y = 0 at the base. Joint 1 is at
 //! the origin; the tip is the end of the last link; the tip orientation is the last link's
@@ -236,11 +282,12 @@ pub mod prelude {
     pub use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2};
 }
 
-/// A planar serial arm of `N` revolute links whose dynamics, kinematics and statics were
-/// derived at compile time by `#[derive(PlanarArm)]`.
+/// A planar serial arm of `N` links, revolute or prismatic, whose dynamics, kinematics and
+/// statics were derived at compile time by `#[derive(PlanarArm)]`.
 ///
 /// Conventions: `q[0]` is link 1's angle from +x, `q[i]` (i > 0) is link i+1's angle relative to
-/// link i; all zeros is the arm stretched along +x. Gravity acts along -y. The equations of
+/// link i, or for a [`Prismatic`] joint its displacement along the previous link (metres, and
+/// its entry of `tau` a force); all zeros is the arm stretched along +x. Gravity acts along -y. The equations of
 /// motion are `tau = M(q) qdd + c(q, qd) + g(q) + f(qd)`, f the joint friction.
 ///
 /// # Numeric range
