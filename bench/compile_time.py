@@ -16,6 +16,7 @@ Arms: lengths 2/4, 3/4, 4/4, ... and literal masses, inertias and centres of mas
     python3 bench/compile_time.py                 # 6 10 14 20 30 links, literal and parameterised
     python3 bench/compile_time.py 6 10 --runs 3   # chosen sizes, best of three
     python3 bench/compile_time.py 6 10 14 --lengths --repo /tmp/old   # against another checkout
+    python3 bench/compile_time.py 6 10 14 --prismatic   # every second joint prismatic
 """
 
 import argparse
@@ -27,8 +28,11 @@ import tempfile
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def crate(root, n, params, lengths=False, repo=REPO, derivatives=False):
-    name = f"arm{n}{'p' if params else ''}{'l' if lengths else ''}{'d' if derivatives else ''}"
+def crate(root, n, params, lengths=False, repo=REPO, derivatives=False, prismatic=False):
+    name = (
+        f"arm{n}{'p' if params else ''}{'l' if lengths else ''}{'d' if derivatives else ''}"
+        f"{'s' if prismatic else ''}"
+    )
     path = os.path.join(root, name)
     os.makedirs(os.path.join(path, "src"), exist_ok=True)
     with open(os.path.join(path, "Cargo.toml"), "w") as f:
@@ -38,6 +42,7 @@ def crate(root, n, params, lengths=False, repo=REPO, derivatives=False):
         )
     links, fields, values = [], [], []
     for i in range(n):
+        kind = "Prismatic" if prismatic and i % 2 == 1 else "Revolute"
         length = f"{i % 3 + 2}/4"
         if lengths:
             length = f"self.len{i}"
@@ -46,16 +51,16 @@ def crate(root, n, params, lengths=False, repo=REPO, derivatives=False):
         if params:
             links.append(
                 f"    #[arm(length = {length}, mass = self.m{i}, inertia = self.i{i}, com = self.c{i})]\n"
-                f"    l{i}: Revolute,"
+                f"    l{i}: {kind},"
             )
             fields.append(f"    m{i}: f64,\n    i{i}: f64,\n    c{i}: f64,")
             values.append(f"m{i}: {i % 4 + 1}.0 / 2.0, i{i}: 1.0 / {i + 5}.0, c{i}: {i % 3 + 1}.0 / 5.0,")
         else:
             links.append(
                 f"    #[arm(length = {length}, mass = {i % 4 + 1}/2, inertia = 1/{i + 5}, com = {i % 3 + 1}/5)]\n"
-                f"    l{i}: Revolute,"
+                f"    l{i}: {kind},"
             )
-        values.append(f"l{i}: Revolute,")
+        values.append(f"l{i}: {kind},")
     body = "\n".join(links + fields)
     init = " ".join(values)
     with open(os.path.join(path, "src", "main.rs"), "w") as f:
@@ -104,6 +109,10 @@ def main():
         "--derivatives", action="store_true",
         help="also call linearize (so the derivatives are compiled, not only type-checked)",
     )
+    ap.add_argument(
+        "--prismatic", action="store_true",
+        help="every second joint prismatic (links 2, 4, ...)",
+    )
     args = ap.parse_args()
     with tempfile.TemporaryDirectory() as root:
         target = os.path.join(root, "target")
@@ -113,12 +122,15 @@ def main():
             kinds = [False] if args.literal_only or n > 14 else [False, True]
             for params in kinds:
                 name, path = crate(
-                    root, n, params, args.lengths and params, args.repo, args.derivatives
+                    root, n, params, args.lengths and params, args.repo, args.derivatives,
+                    args.prismatic,
                 )
                 env = dict(os.environ, CARGO_TARGET_DIR=target)
                 subprocess.run(["cargo", "build", "-q"], cwd=path, env=env, check=True)
                 best = min(timed_build(path, name, target) for _ in range(args.runs))
                 kind = ("parameters, lengths" if args.lengths else "parameters") if params else "literal"
+                if args.prismatic:
+                    kind += ", every second joint prismatic"
                 print(f"| {n} | {kind} | {best[0]:.2f} | {best[1]:.0f} |", flush=True)
 
 
