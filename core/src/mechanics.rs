@@ -431,15 +431,25 @@ fn kinetic_energy_of_velocities<C: Coefficient>(arm: &ArmSpec<C>, bodies: &[Body
             Expr::cos(one.clone(), angle.clone()),
             Expr::sin(one.clone(), angle),
         );
-        let v2 = vx.mul(&vx).add(&vy.mul(&vy));
-        kinetic.add_assign(&v2.scale_by(&body.mass).scale(&half));
+        // Each product only for a body that has the parameter: the identification derives
+        // one body per standard parameter, all but one of them zero.
+        if !body.mass.is_zero() {
+            let v2 = vx.mul(&vx).add(&vy.mul(&vy));
+            kinetic.add_assign(&v2.scale_by(&body.mass).scale(&half));
+        }
         let (hx, hy) = &body.first_moment;
         // v . perp(R h) = hx v . perp(u) - hy v . u
-        let along = vx.mul(&cu).add(&vy.mul(&su));
-        let across = vy.mul(&cu).sub(&vx.mul(&su));
-        let coupling = across.scale_by(hx).sub(&along.scale_by(hy));
-        kinetic.add_assign(&omega.mul(&coupling));
-        kinetic.add_assign(&omega.mul(&omega).scale_by(&body.joint_inertia).scale(&half));
+        if !hx.is_zero() {
+            let across = vy.mul(&cu).sub(&vx.mul(&su));
+            kinetic.add_assign(&omega.mul(&across.scale_by(hx)));
+        }
+        if !hy.is_zero() {
+            let along = vx.mul(&cu).add(&vy.mul(&su));
+            kinetic.sub_assign(&omega.mul(&along.scale_by(hy)));
+        }
+        if !body.joint_inertia.is_zero() {
+            kinetic.add_assign(&omega.mul(&omega).scale_by(&body.joint_inertia).scale(&half));
+        }
     }
     for (i, link) in arm.links.iter().enumerate() {
         if !link.armature.is_zero() {
