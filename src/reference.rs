@@ -4,14 +4,29 @@
 //! mechanics and Featherstone's spatial-vector algorithms specialised to the plane). It shares
 //! no code with the symbolic Lagrangian path of `#[derive(PlanarArm)]`, so the tests, the
 //! benchmarks and the `paper` example use it as the ground truth the generated code is checked
-//! and timed against. Every function takes the arm as a [`Model`](crate::Model): links, gravity, payload.
+//! and timed against. Every function takes the arm as a [`Model`](crate::Model): links,
+//! gravity, payload.
 //!
-//! Conventions are those of the crate: `q[0]` is link 1's angle from +x and `q[i]` (i > 0) is
-//! link i+1's angle relative to link i, so the absolute angle of link i+1 is
-//! `phi_i = q[0] + ... + q[i]` and its direction `u_i = (cos phi_i, sin phi_i)`; joint 1 sits
-//! at the origin; gravity of magnitude `model.gravity` acts along -y. A link's centre of mass
-//! `com = (cx, cy)` is in its own frame, at `joint_i + cx u_i + cy perp(u_i)` in the world
-//! (`perp` turns by +90 degrees); the payload's is at `tip + R(phi_N) payload.com`.
+//! # Conventions
+//!
+//! Those of the crate, for any mix of revolute and prismatic joints (`model.links[i].joint`).
+//! Link i (0-based) has an absolute angle `phi_i`, a direction `u_i = (cos phi_i, sin phi_i)`
+//! and a frame origin `o_i`, the point its own frame (`x` along `u_i`) is fixed at:
+//!
+//! - a revolute joint i turns link i about the end of the previous link by `q[i]` radians:
+//!   `phi_i = phi_{i-1} + q[i]` and `o_i = o_{i-1} + l_{i-1} u_{i-1}`;
+//! - a prismatic joint i slides link i along the previous link's direction by `q[i]` metres
+//!   without turning it: `phi_i = phi_{i-1}` (so `u_i = u_{i-1}` is its axis) and
+//!   `o_i = o_{i-1} + (l_{i-1} + q[i]) u_{i-1}`,
+//!
+//! where `o_{-1} + l_{-1} u_{-1}` is the base origin and `phi_{-1} = 0`: the first joint turns
+//! about the origin or slides along +x. So `phi_i` sums the revolute `q`s up to `i`, and a link
+//! starts at the origin unless the first joint is prismatic. [`joint_positions`] are the
+//! `o_i` (for a prismatic joint the slid carriage, not the end of the link before it), the
+//! tip is `o_{N-1} + l_{N-1} u_{N-1}`, its orientation `phi_{N-1}` ([`tip_orientation`]).
+//! Gravity of magnitude `model.gravity` acts along -y. A link's centre of mass
+//! `com = (cx, cy)` is in its own frame, at `o_i + cx u_i + cy perp(u_i)` in the world
+//! (`perp` turns by +90 degrees); the payload's is at `tip + R(phi_{N-1}) payload.com`.
 //!
 //! The equations of motion are
 //!
@@ -20,36 +35,50 @@
 //! ```
 //!
 //! with `M` the mass matrix including each joint's armature on its diagonal, `c` the
-//! velocity-product torques, `g = dV/dq` the gravity torques and
+//! velocity-product terms, `g = dV/dq` the gravity terms and
 //! `f_i = damping_i qd_i + frictionloss_i sign(qd_i)` the joint friction ([`friction`];
 //! `sign(0) = 0`). These are MuJoCo's joint `armature`, `damping` and `frictionloss`.
-//! [`bias_forces`] is `c + g + f`; Pinocchio's `nonLinearEffects` is `c + g`.
+//! [`bias_forces`] is `c + g + f`; Pinocchio's `nonLinearEffects` is `c + g`. The generalised
+//! force `tau_i` of a revolute joint is a torque (N m); that of a prismatic joint is the force
+//! along its axis `u_i` (N), its armature a reflected mass (kg, kinetic energy
+//! `armature qd_i^2 / 2`), its damping N s/m and its frictionloss N.
 //!
 //! # Algorithms and cost
 //!
 //! All functions are generic over the number of links `N`, work on fixed-size arrays and
 //! nalgebra `SVector`/`SMatrix` values, never allocate, never panic, and evaluate exactly one
-//! `sin_cos` per joint (of the cumulative absolute angle). The payload enters each algorithm
-//! as one more body rigidly fixed beyond the tip (the Newton-Euler recursion starts from its
-//! inertial wrench at the tip, the composite and articulated inertias start from its
-//! inertia), not through [`Model::rigid_links`](crate::Model::rigid_links), which the tests check against.
+//! `sin_cos` per revolute joint (of the cumulative absolute angle); a prismatic joint reuses
+//! the direction of the link before it. The payload enters each algorithm as one more body
+//! rigidly fixed beyond the tip (the Newton-Euler recursion starts from its inertial wrench at
+//! the tip, the composite and articulated inertias start from its inertia), not through
+//! [`Model::rigid_links`](crate::Model::rigid_links), which the tests check against.
+//!
+//! A prismatic joint enters each algorithm in two places. Outwards, its frame origin slides:
+//! `o_i` gains `q_i u_i`, its velocity `qd_i u_i + q_i omega perp(u_i)` and its acceleration
+//! `(qdd_i - q_i omega^2) u_i + (2 qd_i omega + q_i alpha) perp(u_i)` (`omega`, `alpha` the
+//! rate and acceleration of the previous link, which the joint does not change). Inwards, its
+//! generalised force is the axial component `u_i . F` of the force it transmits, where a
+//! revolute joint's is the moment about `o_i`; moments are shifted between frame origins by
+//! `o_{i+1} - o_i = reach_i u_i`, with `reach_i` the link's length plus the next joint's slide.
 //!
 //! | function | algorithm | cost |
 //! |---|---|---|
-//! | [`inverse_dynamics`], [`bias_forces`], [`coriolis`] | recursive Newton-Euler (RNEA): outward pass for angular velocity/acceleration and joint/COM linear accelerations (gravity as a base acceleration `+g` along +y), inward pass for joint forces and moments; armature and friction added per joint | O(N) |
-//! | [`gravity_torques`] | inward accumulation of composite mass and first moment (statics) | O(N) |
+//! | [`inverse_dynamics`], [`bias_forces`], [`coriolis`] | recursive Newton-Euler (RNEA): outward pass for angular velocity/acceleration and frame-origin/COM linear accelerations (gravity as a base acceleration `+g` along +y), inward pass for the forces and moments at each frame origin, read as the moment (revolute) or the axial force (prismatic); armature and friction added per joint | O(N) |
+//! | [`gravity_torques`] | inward accumulation of composite mass and first moment (statics): `gravity` times the composite's horizontal first moment about `o_i` (revolute) or its mass times `u_i.y` (prismatic) | O(N) |
 //! | [`friction`] | per joint | O(N) |
-//! | [`mass_matrix`] | composite rigid body algorithm (CRBA) with planar composite inertias (mass, first moment, rotational inertia about each joint), armature on the diagonal | O(N^2) |
-//! | [`forward_dynamics`] | articulated body algorithm (ABA) with 3x3 planar spatial inertias `[angular; x; y]`, all expressed about the world origin so that no inter-link transforms are needed; armature in the joint-space articulated inertia; never forms `M` | O(N) |
+//! | [`mass_matrix`] | composite rigid body algorithm (CRBA) with planar composite inertias (mass, first moment, rotational inertia about each frame origin): a unit rate of joint j gives the composite beyond it the momentum `(rot, perp(first))` (revolute) or `(first x u_j, mass u_j)` (prismatic), read at each joint before it as a moment or an axial component; armature on the diagonal | O(N^2) |
+//! | [`forward_dynamics`] | articulated body algorithm (ABA) with 3x3 planar spatial inertias `[angular; x; y]`, all expressed about the world origin so that no inter-link transforms are needed: the motion subspace is `S_i = [1, y_i, -x_i]` for a revolute joint at `o_i = (x_i, y_i)` and `S_i = [0, u_i]`, a translation along the axis, for a prismatic one; armature in the joint-space articulated inertia; never forms `M` | O(N) |
 //! | [`forward_dynamics_crba`] | CRBA + RNEA bias + Cholesky solve | O(N^3) |
 //! | [`kinetic_energy`], [`potential_energy`] | direct sums over COM velocities / heights, payload as its own body | O(N) |
-//! | [`tip_position`], [`joint_positions`], [`jacobian`] | forward kinematics; the Jacobian column of joint j is `perp(tip - joint_j)` | O(N) / O(N) / O(N) |
-//! | [`regressor`] | the torques of each body's four inertial parameters per unit value, by one outward Newton-Euler pass and each body's wrench moved to every joint before it | O(N^2) |
+//! | [`tip_position`], [`tip_orientation`], [`joint_positions`], [`jacobian`] | forward kinematics; the Jacobian column of joint j is `[perp(tip - o_j); 1]` (revolute) or `[u_j; 0]` (prismatic) | O(N) each |
+//! | [`regressor`] | the generalised forces of each body's four inertial parameters per unit value, by one outward Newton-Euler pass and each body's wrench moved to every joint before it | O(N^2) |
 //! | [`regressor_local`] | the same by Pinocchio's `computeJointTorqueRegressor` algorithm: each body's regressor in its own frame, moved inwards joint by joint | O(N^2) |
 
 use nalgebra::{SVector, Vector2};
 #[cfg(not(feature = "std"))]
 use num_traits::Float as _;
+
+use crate::{Joint, Link};
 
 mod articulated;
 mod composite;
@@ -61,34 +90,78 @@ mod regressor;
 pub use articulated::forward_dynamics;
 pub use composite::{forward_dynamics_crba, gravity_torques, mass_matrix};
 pub use energy::{kinetic_energy, potential_energy};
-pub use kinematics::{jacobian, joint_positions, tip_angle, tip_position};
+pub use kinematics::{jacobian, joint_positions, tip_angle, tip_orientation, tip_position};
 pub use newton_euler::{
     bias_forces, coriolis, friction, inverse_dynamics, inverse_dynamics_batched_trig,
 };
 pub use regressor::{link_parameters, payload_parameters, regressor, regressor_local, Regressor};
 
-/// Unit vectors `(cos phi_i, sin phi_i)` along each link, from the cumulative absolute angles.
+/// Whether a link's joint slides it along the previous link's direction (prismatic) rather
+/// than turning it (revolute).
 #[inline(always)]
-fn link_directions<const N: usize>(q: &SVector<f64, N>) -> [Vector2<f64>; N] {
+fn slides(link: &Link) -> bool {
+    link.joint == Joint::Prismatic
+}
+
+/// Unit vectors `u_i = (cos phi_i, sin phi_i)` along each link: one `sin_cos` of the cumulative
+/// absolute angle per revolute joint; a prismatic joint keeps the previous link's direction
+/// (+x for the first link).
+#[inline(always)]
+fn link_directions<const N: usize>(links: &[Link; N], q: &SVector<f64, N>) -> [Vector2<f64>; N] {
     // A plain loop: mapping over `absolute_angles` instead measured 2-6 % slower, and the
     // reference is not to be pessimised.
     let mut dirs = [Vector2::zeros(); N];
     let mut phi = 0.0;
-    for (dir, &qi) in dirs.iter_mut().zip(q.iter()) {
-        phi += qi;
-        let (s, c) = phi.sin_cos();
-        *dir = Vector2::new(c, s);
+    let mut u = Vector2::x();
+    for ((dir, &qi), link) in dirs.iter_mut().zip(q.iter()).zip(links.iter()) {
+        if !slides(link) {
+            phi += qi;
+            let (s, c) = phi.sin_cos();
+            u = Vector2::new(c, s);
+        }
+        *dir = u;
     }
     dirs
 }
 
-/// `q1, q1 + q2, ...`: each link's angle from the base x axis, for one batched `sin_cos`.
+/// Each link's absolute angle `phi_i`, the sum of the revolute joints' `q` up to `i`, for one
+/// batched `sin_cos`.
 #[inline(always)]
-fn absolute_angles<const N: usize>(q: &SVector<f64, N>) -> [f64; N] {
+fn absolute_angles<const N: usize>(links: &[Link; N], q: &SVector<f64, N>) -> [f64; N] {
     let mut phi = 0.0;
     core::array::from_fn(|i| {
-        phi += q[i];
+        if !slides(&links[i]) {
+            phi += q[i];
+        }
         phi
+    })
+}
+
+/// [`link_directions`] from the sines and cosines of [`absolute_angles`]: a prismatic joint's
+/// own entry is not read, its link keeps the previous direction, as there.
+#[inline(always)]
+fn directions_from<const N: usize>(
+    links: &[Link; N],
+    sin_cos: &[(f64, f64); N],
+) -> [Vector2<f64>; N] {
+    let mut u = Vector2::x();
+    core::array::from_fn(|i| {
+        if !slides(&links[i]) {
+            let (s, c) = sin_cos[i];
+            u = Vector2::new(c, s);
+        }
+        u
+    })
+}
+
+/// `reach_i`, the distance along `u_i` from link i's frame origin to the next link's (to the
+/// tip for the last link): its length, plus the next joint's slide `q_{i+1}` if that joint is
+/// prismatic, so that `o_{i+1} = o_i + reach_i u_i`.
+#[inline(always)]
+fn reaches<const N: usize>(links: &[Link; N], q: &SVector<f64, N>) -> [f64; N] {
+    core::array::from_fn(|i| match (links.get(i + 1), q.get(i + 1)) {
+        (Some(next), Some(&slide)) if slides(next) => links[i].length + slide,
+        _ => links[i].length,
     })
 }
 

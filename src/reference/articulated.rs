@@ -3,7 +3,7 @@
 use nalgebra::{Matrix3, SVector, Vector2, Vector3};
 
 use super::newton_euler::friction;
-use super::{in_world, last_direction, link_directions};
+use super::{in_world, last_direction, link_directions, slides};
 use crate::Model;
 
 /// Planar spatial motion cross product `v x m` for vectors `[angular; x; y]`.
@@ -42,12 +42,17 @@ fn spatial_inertia(m: f64, inertia: f64, c: Vector2<f64>) -> Matrix3<f64> {
 ///
 /// O(N), and never forms the mass matrix. This is Featherstone's ABA specialised to the plane:
 /// spatial vectors are `[angular; x; y]` with 3x3 spatial inertias, all expressed in the world
-/// frame about the origin, so that the joint axes are `S_i = [1, y_i, -x_i]` (with `(x_i, y_i)`
-/// the joint position) and no coordinate transforms are needed between links. Three passes:
+/// frame about the origin, so that the joint axes are `S_i = [1, y_i, -x_i]` for a revolute
+/// joint (with `(x_i, y_i)` the link's frame origin) and `S_i = [0, u_i]`, a translation along
+/// the axis, for a prismatic one, and no coordinate transforms are needed between links. Each
+/// axis is fixed in the previous link (a revolute joint's point, a prismatic joint's
+/// direction), so its rate is `v_{i-1} x S_i` and the velocity-product acceleration
+/// `v_i x S_i qd_i`, as in three dimensions. Three passes:
 /// velocities and velocity-product terms outwards, articulated inertias and bias forces
 /// inwards, accelerations outwards (gravity as an upward base acceleration). The payload's
 /// spatial inertia is added to the last link's; the armature enters the joint-space
-/// articulated inertia `D_i = S_i^T I^A_i S_i + armature_i`, the friction the joint's torque.
+/// articulated inertia `D_i = S_i^T I^A_i S_i + armature_i`, the friction the joint's torque
+/// or force.
 ///
 /// The result is meaningless (non-finite) if the arm has a degenerate articulated inertia, e.g.
 /// a massless, inertialess last link without armature or payload.
@@ -59,10 +64,10 @@ pub fn forward_dynamics<const N: usize>(
     tau: &SVector<f64, N>,
 ) -> SVector<f64, N> {
     let links = &model.links;
-    let dirs = link_directions(q);
+    let dirs = link_directions(links, q);
 
     // Pass 1 (outwards): joint axes, velocities, velocity-product accelerations, rigid-body
-    // inertias and bias forces.
+    // inertias and bias forces. `joint` is link i's frame origin, then its end.
     let mut axis = [Vector3::zeros(); N];
     let mut c = [Vector3::zeros(); N];
     let mut inertia = [Matrix3::zeros(); N];
@@ -71,7 +76,13 @@ pub fn forward_dynamics<const N: usize>(
     let mut v = Vector3::zeros();
     for i in 0..N {
         let link = &links[i];
-        let s = Vector3::new(1.0, joint.y, -joint.x);
+        let u = dirs[i];
+        let s = if slides(link) {
+            joint += u * q[i];
+            Vector3::new(0.0, u.x, u.y)
+        } else {
+            Vector3::new(1.0, joint.y, -joint.x)
+        };
         let vj = s * qd[i];
         v += vj;
         c[i] = cross_motion(&v, &vj);

@@ -1,4 +1,4 @@
-//! The friction law, and arms without links or without mass.
+//! The friction law, and arms without links, without mass or with NaN in their state.
 
 use super::*;
 
@@ -55,26 +55,55 @@ fn no_links_no_panic() {
     assert_eq!(kinetic_energy(&model, &z, &z), 0.0);
     assert_eq!(potential_energy(&model, &z), 0.0);
     assert_eq!(tip_position(&model, &z), Point2::origin());
+    assert_eq!(tip_orientation(&model, &z), 0.0);
+    assert_eq!(regressor(&model, &z, &z, &z).payload.len(), 0);
+    assert_eq!(regressor_local(&model, &z, &z, &z).payload.len(), 0);
 }
 
 #[test]
 fn degenerate_arm_gives_nan_not_a_panic() {
-    let massless = Model::new([Link::rod(1.0, 0.0)], 9.81);
-    let one = SVector::from([1.0]);
-    assert!(forward_dynamics_crba(&massless, &one, &one, &one)[0].is_nan());
-    // A rotor alone makes it well posed: qdd = tau / armature.
-    let geared = Model::new([Link::rod(1.0, 0.0).with_armature(0.5)], 9.81);
-    let rest = SVector::zeros();
-    assert_close_f(
-        forward_dynamics_crba(&geared, &one, &rest, &one)[0],
-        2.0,
-        1e-15,
-        "CRBA",
+    for joint in [Joint::Revolute, Joint::Prismatic] {
+        let massless = Model::new([Link::rod(1.0, 0.0).with_joint(joint)], 9.81);
+        let one = SVector::from([1.0]);
+        assert!(forward_dynamics_crba(&massless, &one, &one, &one)[0].is_nan());
+        // A rotor (or a reflected mass) alone makes it well posed: qdd = tau / armature.
+        let geared = Model::new(
+            [Link::rod(1.0, 0.0).with_armature(0.5).with_joint(joint)],
+            9.81,
+        );
+        let rest = SVector::zeros();
+        assert_close_f(
+            forward_dynamics_crba(&geared, &one, &rest, &one)[0],
+            2.0,
+            1e-15,
+            "CRBA",
+        );
+        assert_close_f(
+            forward_dynamics(&geared, &one, &rest, &one)[0],
+            2.0,
+            1e-15,
+            "ABA",
+        );
+    }
+}
+
+/// Non-finite input gives non-finite output through a prismatic joint too, never a panic.
+#[test]
+fn nan_through_a_slider_is_nan() {
+    let model = Model::new(
+        [
+            Link::rod(0.5, 1.0),
+            Link::rod(0.4, 1.0).with_joint(Joint::Prismatic),
+            Link::rod(0.3, 1.0),
+        ],
+        9.81,
     );
-    assert_close_f(
-        forward_dynamics(&geared, &one, &rest, &one)[0],
-        2.0,
-        1e-15,
-        "ABA",
-    );
+    let nan = SVector::from([0.2, f64::NAN, -0.4]);
+    let finite = SVector::from([0.3, 0.1, -0.2]);
+    assert!(inverse_dynamics(&model, &nan, &finite, &finite)[0].is_nan());
+    assert!(forward_dynamics(&model, &nan, &finite, &finite)[0].is_nan());
+    assert!(mass_matrix(&model, &nan)[(0, 0)].is_nan());
+    assert!(tip_position(&model, &nan).x.is_nan());
+    // The slide does not turn the last link.
+    assert_eq!(tip_orientation(&model, &nan), 0.2 - 0.4);
 }

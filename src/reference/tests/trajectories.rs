@@ -1,4 +1,5 @@
-//! The dynamics along trajectories: power balance.
+//! The dynamics along trajectories: power balance, and Lagrange's equation by finite
+//! differences of the energies.
 
 use super::*;
 
@@ -68,15 +69,19 @@ fn power_balance<const N: usize>(
     )
 }
 
-fn power_balance_check<const N: usize>(rng: &mut Rng) {
-    let mut model: Model<N> = rng.model();
+fn power_balance_check<const N: usize>(rng: &mut Rng, mixed: bool, worst: &mut Worst) {
+    let mut model: Model<N> = if mixed {
+        rng.mixed_model()
+    } else {
+        rng.model()
+    };
     for link in &mut model.links {
         // Coulomb friction switches at qd_i = 0, which RK4 does not resolve; the law is
         // checked on its own in `friction_law`.
         link.frictionloss = 0.0;
         link.damping = rng.uniform(0.1, 2.0);
     }
-    let (q, qd) = (rng.vector::<N>(3.0), rng.vector::<N>(2.0));
+    let (q, qd) = (rng.configuration(&model, 3.0), rng.vector::<N>(2.0));
 
     // Unforced: the energy only decreases, by exactly the damping's dissipation.
     let (change, work, rate) = power_balance(&model, &SVector::zeros(), q, qd);
@@ -85,6 +90,8 @@ fn power_balance_check<const N: usize>(rng: &mut Rng) {
         (change - work).abs() < 1e-10 && rate < 1e-8,
         "N = {N}: dE {change:e} vs -sum B qd^2 dt {work:e}; rate error {rate:e}"
     );
+    worst.note("free: energy change - work", (change - work).abs());
+    worst.note("free: dE/dt - power", rate);
     // Driven: the motors' work less the dissipation.
     let tau = rng.vector::<N>(10.0);
     let (change, work, rate) = power_balance(&model, &tau, q, qd);
@@ -92,15 +99,91 @@ fn power_balance_check<const N: usize>(rng: &mut Rng) {
         (change - work).abs() < 1e-10 && rate < 1e-8,
         "N = {N}: dE {change:e} vs work {work:e}; rate error {rate:e}"
     );
+    worst.note("driven: energy change - work", (change - work).abs());
+    worst.note("driven: dE/dt - power", rate);
 }
 
 #[test]
 fn power_balance_along_trajectories() {
     let mut rng = Rng(7);
+    let mut worst = Worst::default();
     for _ in 0..5 {
-        power_balance_check::<1>(&mut rng);
-        power_balance_check::<2>(&mut rng);
-        power_balance_check::<3>(&mut rng);
-        power_balance_check::<5>(&mut rng);
+        power_balance_check::<1>(&mut rng, false, &mut worst);
+        power_balance_check::<2>(&mut rng, false, &mut worst);
+        power_balance_check::<3>(&mut rng, false, &mut worst);
+        power_balance_check::<5>(&mut rng, false, &mut worst);
     }
+    worst.print("power_balance_along_trajectories");
+}
+
+#[test]
+fn power_balance_with_mixed_joints() {
+    let mut rng = Rng(17);
+    let mut worst = Worst::default();
+    for _ in 0..5 {
+        power_balance_check::<1>(&mut rng, true, &mut worst);
+        power_balance_check::<2>(&mut rng, true, &mut worst);
+        power_balance_check::<3>(&mut rng, true, &mut worst);
+        power_balance_check::<5>(&mut rng, true, &mut worst);
+        power_balance_check::<8>(&mut rng, true, &mut worst);
+    }
+    worst.print("power_balance_with_mixed_joints");
+}
+
+/// Lagrange's equation, `tau_i = d/dt (dT/dqd_i) - dT/dq_i + dV/dq_i + f_i`, for one random arm
+/// of mixed joints at a random state, every derivative of the energies by finite differences:
+/// the inverse dynamics against the energies alone.
+fn lagrange_check<const N: usize>(rng: &mut Rng, worst: &mut Worst) {
+    let model: Model<N> = rng.mixed_model();
+    let q = rng.configuration(&model, std::f64::consts::PI);
+    let qd = rng.vector::<N>(2.0);
+    let qdd = rng.vector::<N>(4.0);
+    let t = |q: &SVector<f64, N>, qd: &SVector<f64, N>| kinetic_energy(&model, q, qd);
+    // T is quadratic in qd: a central difference with a unit step is exact but for rounding.
+    let momentum = |q: &SVector<f64, N>, qd: &SVector<f64, N>| {
+        SVector::<f64, N>::from_fn(|i, _| {
+            let e = basis::<N>(i, 1.0);
+            (t(q, &(qd + e)) - t(q, &(qd - e))) / 2.0
+        })
+    };
+    // Truncation (h^4) and rounding (1/h) balance near this step: 2e-11 here, against 5e-9 at
+    // h = 2e-3 and 5e-11 at h = 1e-4.
+    let h = 5e-4;
+    // Along the trajectory through (q, qd) with acceleration qdd.
+    let momentum_rate = derivative(
+        |s| momentum(&(q + qd * s + qdd * (s * s / 2.0)), &(qd + qdd * s)),
+        h,
+    );
+    let along = |j: usize| move |s: f64| q + basis::<N>(j, s);
+    let d_dq = |energy: &dyn Fn(&SVector<f64, N>) -> f64| {
+        SVector::<f64, N>::from_fn(|j, _| {
+            derivative(|s| SVector::<f64, 1>::new(energy(&along(j)(s))), h)[0]
+        })
+    };
+    let dt_dq = d_dq(&|q| t(q, &qd));
+    let dv_dq = d_dq(&|q| potential_energy(&model, q));
+    let lagrange = momentum_rate - dt_dq + dv_dq + friction(&model, &qd);
+    worst.close(
+        &inverse_dynamics(&model, &q, &qd, &qdd),
+        &lagrange,
+        1e-9,
+        "RNEA = Lagrange's equation",
+    );
+}
+
+#[test]
+fn lagrange_equation_by_finite_differences() {
+    let mut rng = Rng(18);
+    let mut worst = Worst::default();
+    for _ in 0..100 {
+        lagrange_check::<1>(&mut rng, &mut worst);
+        lagrange_check::<2>(&mut rng, &mut worst);
+        lagrange_check::<3>(&mut rng, &mut worst);
+        lagrange_check::<4>(&mut rng, &mut worst);
+        lagrange_check::<5>(&mut rng, &mut worst);
+        lagrange_check::<6>(&mut rng, &mut worst);
+        lagrange_check::<7>(&mut rng, &mut worst);
+        lagrange_check::<8>(&mut rng, &mut worst);
+    }
+    worst.print("lagrange_equation_by_finite_differences");
 }
