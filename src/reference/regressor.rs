@@ -1,22 +1,25 @@
 //! The numeric joint-torque regressor: the columns of `tau = Y(q, qd, qdd) theta` by the
 //! Newton-Euler recursion, with each body's wrench per unit parameter moved to the joints
 //! before it: in the world frame at once ([`regressor`]), or joint by joint in local frames as
-//! Pinocchio's `computeJointTorqueRegressor` does ([`regressor_local`]).
+//! Pinocchio's `computeJointTorqueRegressor` does ([`regressor_local`]). A revolute joint reads
+//! the wrench's moment about its link's frame origin, a prismatic joint its force along the
+//! joint's axis.
 
 use nalgebra::{SMatrix, SVector, Vector2, Vector4};
 #[cfg(not(feature = "std"))]
 use num_traits::Float as _;
 
-use super::{cross, link_directions, perp, sign};
+use super::{cross, link_directions, perp, reaches, sign, slides};
 use crate::{Link, Model, Payload};
 
 /// The regressor of the standard parameters at one state, in blocks.
 ///
 /// Body `j` (a link, or the payload) enters the torques through four parameters, in its own
-/// frame and about its own joint (the payload's are in the last link's frame, about the last
-/// joint):
+/// frame and about its own frame origin, the joint (the payload's are in the last link's frame,
+/// about its origin):
 /// `[zz, mx, my, m] = [Izz + m |c|^2, m cx, m cy, m]`. Its block is the `N x 4` matrix of the
-/// torques those four parameters produce per unit value. A joint's armature, damping and
+/// generalised forces (torques at revolute joints, axial forces at prismatic ones) those four
+/// parameters produce per unit value. A joint's armature, damping and
 /// Coulomb friction act on that joint alone, so their columns are `qdd_i`, `qd_i` and
 /// `sign(qd_i)` (with `sign(0) = 0`) in row `i` and zero elsewhere; they are kept as vectors.
 ///
@@ -27,7 +30,8 @@ use crate::{Link, Model, Payload};
 pub struct Regressor<const N: usize> {
     /// Per link, the torques of `[zz, mx, my, m]`.
     pub links: [SMatrix<f64, N, 4>; N],
-    /// The payload's `[zz, mx, my, m]`, in the last link's frame about the last joint.
+    /// The payload's `[zz, mx, my, m]`, in the last link's frame about its origin (the last
+    /// joint).
     pub payload: SMatrix<f64, N, 4>,
     /// `qdd`: the armature column of joint `i` is `armature[i]` in row `i`.
     pub armature: SVector<f64, N>,
@@ -123,15 +127,17 @@ pub fn payload_parameters<const N: usize>(model: &Model<N>) -> Vector4<f64> {
     Vector4::new(inertia + m * c.norm_squared(), m * c.x, m * c.y, m)
 }
 
-/// The regressor at `(q, qd, qdd)`: it depends on the model's lengths and gravity only.
+/// The regressor at `(q, qd, qdd)`: it depends on the model's lengths, joint kinds and gravity
+/// only.
 ///
-/// An outward pass gives each body's joint position `p_j`, direction `u_j`, angular rate and
-/// acceleration, and joint acceleration `a_j` (gravity as an upward base acceleration). A body
-/// with first moment `h` (world frame, from its joint) and inertia `zz` about its joint feels
-/// the force `f = m a_j + alpha perp(h) - omega^2 h` and the moment
-/// `n = zz alpha + h x a_j` about its joint, linear in `[zz, mx, my, m]` since
-/// `h = mx u_j + my perp(u_j)`. Its torque at joint `i <= j` is `n + (p_j - p_i) x f`, the
-/// moment about the origin less `p_i x f`. O(N^2), no allocation.
+/// An outward pass gives each body's frame origin `p_j` (slid by a prismatic joint), direction
+/// `u_j`, angular rate and acceleration, and origin acceleration `a_j` (gravity as an upward
+/// base acceleration). A body with first moment `h` (world frame, from its origin) and inertia
+/// `zz` about its origin feels the force `f = m a_j + alpha perp(h) - omega^2 h` and the moment
+/// `n = zz alpha + h x a_j` about its origin, linear in `[zz, mx, my, m]` since
+/// `h = mx u_j + my perp(u_j)`. Its torque at a revolute joint `i <= j` is
+/// `n + (p_j - p_i) x f`, the moment about the world origin less `p_i x f`; its force at a
+/// prismatic joint `i <= j` is `u_i . f`. O(N^2), no allocation.
 #[must_use]
 pub fn regressor<const N: usize>(
     model: &Model<N>,
@@ -139,8 +145,8 @@ pub fn regressor<const N: usize>(
     qd: &SVector<f64, N>,
     qdd: &SVector<f64, N>,
 ) -> Regressor<N> {
-    let dirs = link_directions(q);
-    let mut joints = [Vector2::zeros(); N];
+    let dirs = link_directions(&model.links, q);
+    let mut joints = [Axis::About(Vector2::zeros()); N];
     let mut out = Regressor::with_joint_columns(qd, qdd);
     let mut p = Vector2::zeros();
     let mut a = Vector2::new(0.0, model.gravity);
@@ -149,14 +155,22 @@ pub fn regressor<const N: usize>(
     // arm of no links): the last block starts where its link's did.
     let mut last = (p, Vector2::x(), a);
     for j in 0..N {
-        omega += qd[j];
-        alpha += qdd[j];
-        joints[j] = p;
-        last = (p, dirs[j], a);
-        out.links[j] = body_block(&joints[..=j], p, dirs[j], omega, alpha, a);
+        let u = dirs[j];
+        if slides(&model.links[j]) {
+            p += u * q[j];
+            a += u * (qdd[j] - q[j] * (omega * omega))
+                + perp(u) * (2.0 * qd[j] * omega + q[j] * alpha);
+            joints[j] = Axis::Along(u);
+        } else {
+            omega += qd[j];
+            alpha += qdd[j];
+            joints[j] = Axis::About(p);
+        }
+        last = (p, u, a);
+        out.links[j] = body_block(&joints[..=j], p, u, omega, alpha, a);
         let l = model.links[j].length;
-        a += (perp(dirs[j]) * alpha - dirs[j] * (omega * omega)) * l;
-        p += dirs[j] * l;
+        a += (perp(u) * alpha - u * (omega * omega)) * l;
+        p += u * l;
     }
     let (p, u, a) = last;
     out.payload = body_block(&joints, p, u, omega, alpha, a);
@@ -167,10 +181,12 @@ pub fn regressor<const N: usize>(
 /// the plane: each body's regressor in its own frame, moved inwards one joint at a time.
 ///
 /// An outward pass gives, in each link's own frame (x along the link), its rate, acceleration
-/// and joint acceleration, with one `sin_cos` of each *relative* joint angle; each body's
-/// `[n; fx; fy]` per unit parameter is formed there, then rotated into the previous link's
-/// frame and its moment shifted to that link's joint, joint by joint down to the base, each
-/// joint reading the moment about itself. O(N^2), like [`regressor`], with more arithmetic
+/// and origin acceleration, with one `sin_cos` of each revolute joint's *relative* angle (a
+/// prismatic joint does not turn its frame); each body's `[n; fx; fy]` per unit parameter is
+/// formed there, then rotated into the previous link's frame and its moment shifted to that
+/// link's origin, joint by joint down to the base, each revolute joint reading the moment about
+/// its origin and each prismatic joint the force along x, its axis in its own link's frame.
+/// O(N^2), like [`regressor`], with more arithmetic
 /// per step (a rotation of four forces); it is the baseline the issue that asked for the
 /// regressor named, [`regressor`] a tighter one.
 #[must_use]
@@ -180,37 +196,53 @@ pub fn regressor_local<const N: usize>(
     qd: &SVector<f64, N>,
     qdd: &SVector<f64, N>,
 ) -> Regressor<N> {
-    let rot: [(f64, f64); N] = core::array::from_fn(|i| q[i].sin_cos());
+    let links = &model.links;
+    // The rotation of each revolute joint; a prismatic joint's frame keeps the previous one's.
+    let rot: [Option<(f64, f64)>; N] =
+        core::array::from_fn(|i| (!slides(&links[i])).then(|| q[i].sin_cos()));
+    let reach = reaches(links, q);
     let mut out = Regressor::with_joint_columns(qd, qdd);
-    // The acceleration of joint j in the frame of link j-1 (the base's for j = 0).
+    // The acceleration of the end of link j-1 (the base's origin for j = 0) in its frame, then
+    // of link j's origin in link j's frame.
     let mut a = Vector2::new(0.0, model.gravity);
     let (mut omega, mut alpha) = (0.0, 0.0);
     for j in 0..N {
-        let (s, c) = rot[j];
-        a = Vector2::new(c * a.x + s * a.y, c * a.y - s * a.x);
-        omega += qd[j];
-        alpha += qdd[j];
+        if let Some((s, c)) = rot[j] {
+            a = Vector2::new(c * a.x + s * a.y, c * a.y - s * a.x);
+            omega += qd[j];
+            alpha += qdd[j];
+        } else {
+            // The origin slides along x by q_j (see `regressor`), in a frame turning at omega.
+            a += Vector2::new(
+                qdd[j] - q[j] * (omega * omega),
+                2.0 * qd[j] * omega + q[j] * alpha,
+            );
+        }
         let w2 = omega * omega;
-        // Rows: the moment about joint j and the force, per unit zz, mx, my, m.
+        // Rows: the moment about link j's origin and the force, per unit zz, mx, my, m.
         let mut body = nalgebra::Matrix3x4::new(
             alpha, a.y, -a.x, 0.0, //
             0.0, -w2, -alpha, a.x, //
             0.0, alpha, -w2, a.y,
         );
-        out.links[j].set_row(j, &body.row(0));
+        // A revolute joint reads the moment (row 0), a prismatic one the force along x (row 1).
+        let read = |i: usize| usize::from(slides(&links[i]));
+        out.links[j].set_row(j, &body.row(read(j)));
         for i in (0..j).rev() {
-            // Into the frame of link i: rotate by joint i+1's angle, shift the moment from
-            // joint i+1 to joint i (offset l_i along x).
-            let (s, c) = rot[i + 1];
-            let l = model.links[i].length;
+            // Into the frame of link i: rotate by joint i+1's angle (if it turns), shift the
+            // moment from link i+1's origin to link i's (offset reach_i along x).
+            let l = reach[i];
             for k in 0..4 {
                 let (fx, fy) = (body[(1, k)], body[(2, k)]);
-                let (gx, gy) = (c * fx - s * fy, s * fx + c * fy);
+                let (gx, gy) = match rot[i + 1] {
+                    Some((s, c)) => (c * fx - s * fy, s * fx + c * fy),
+                    None => (fx, fy),
+                };
                 body[(0, k)] += l * gy;
                 body[(1, k)] = gx;
                 body[(2, k)] = gy;
             }
-            out.links[j].set_row(i, &body.row(0));
+            out.links[j].set_row(i, &body.row(read(i)));
         }
         let l = model.links[j].length;
         a += Vector2::new(-w2 * l, alpha * l);
@@ -221,12 +253,20 @@ pub fn regressor_local<const N: usize>(
     out
 }
 
-/// The `N x 4` block of a body at joint position `p` with direction `u`, rate `omega`,
-/// acceleration `alpha` and joint acceleration `a`, seen from the joints `joints` (those at or
+/// How a joint reads a wrench: a revolute joint its moment about the point (its link's frame
+/// origin, world frame), a prismatic joint its force along the direction (its axis).
+#[derive(Clone, Copy)]
+enum Axis {
+    About(Vector2<f64>),
+    Along(Vector2<f64>),
+}
+
+/// The `N x 4` block of a body at frame origin `p` with direction `u`, rate `omega`,
+/// acceleration `alpha` and origin acceleration `a`, seen from the joints `joints` (those at or
 /// before it; later rows stay zero).
 #[inline(always)]
 fn body_block<const N: usize>(
-    joints: &[Vector2<f64>],
+    joints: &[Axis],
     p: Vector2<f64>,
     u: Vector2<f64>,
     omega: f64,
@@ -235,14 +275,17 @@ fn body_block<const N: usize>(
 ) -> SMatrix<f64, N, 4> {
     let w2 = omega * omega;
     let v = perp(u);
-    // Per parameter: the force and the moment about the body's joint per unit value.
+    // Per parameter: the force and the moment about the body's origin per unit value.
     let forces = [Vector2::zeros(), v * alpha - u * w2, -u * alpha - v * w2, a];
     let moments = [alpha, cross(u, a), cross(v, a), 0.0];
     let mut block = SMatrix::<f64, N, 4>::zeros();
     for (k, (f, n)) in forces.iter().zip(moments).enumerate() {
         let about_origin = n + cross(p, *f);
         for (i, joint) in joints.iter().enumerate() {
-            block[(i, k)] = about_origin - cross(*joint, *f);
+            block[(i, k)] = match joint {
+                Axis::About(point) => about_origin - cross(*point, *f),
+                Axis::Along(axis) => axis.dot(f),
+            };
         }
     }
     block
