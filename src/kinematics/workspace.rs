@@ -86,6 +86,20 @@ impl Workspace {
     }
 }
 
+/// The radii about the base of the region a slider's carriage segment `from ..= to` on the x axis with the annulus `inner ..= outer` about each of its points, without its slack:
+/// `(min |p|, max |p|)` over it.
+pub(super) fn swept_radii(from: f64, to: f64, inner: f64, outer: f64) -> (f64, f64) {
+    // The nearest and farthest carriage positions from the base.
+    let near = 0.0_f64.max(from).max(-to);
+    let far = from.abs().max(to.abs());
+    (0.0_f64.max(inner - far).max(near - outer), far + outer)
+}
+
+/// `(min |s|, max |s|)` for `s` in `from ..= to`.
+pub(super) fn polar_radii(from: f64, to: f64) -> (f64, f64) {
+    (0.0_f64.max(from).max(-to), from.abs().max(to.abs()))
+}
+
 /// `pi (outer^2 - inner^2)`, 0 for a circle (also when the sum of the radii overflows).
 fn annulus_area(inner: f64, outer: f64) -> f64 {
     if outer > inner {
