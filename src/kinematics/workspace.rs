@@ -298,6 +298,48 @@ impl Workspace {
         }
     }
 
+    /// `None` when [`contains`](Self::contains) holds, else how far outside the point lies:
+    /// the distance to the annulus or swept annulus (exact), or what [`ik_rp`] and [`ik_pr`]
+    /// report. The point must be finite.
+    pub(super) fn miss(&self, point: &Point2<f64>) -> Option<f64> {
+        if self.contains(point) {
+            return None;
+        }
+        let distance = match self.region {
+            Region::Swept {
+                from,
+                to,
+                inner,
+                outer,
+                ..
+            } => {
+                let (x, y) = (point.x, point.y);
+                let gap = (from - x).max(x - to).max(0.0);
+                let near = gap.hypot(y);
+                let far = (x - from).abs().max((x - to).abs()).hypot(y);
+                (near - outer).max(inner - far)
+            }
+            Region::Polar {
+                l1,
+                l2,
+                range1,
+                range2,
+            } => unreachable_distance(ik_rp(l1, l2, range1, range2, point).err()),
+            Region::Slider {
+                l1,
+                l2,
+                range1,
+                range2,
+            } => unreachable_distance(ik_pr(l1, l2, range1, range2, point).err()),
+            Region::Bounds => {
+                let r = point.x.hypot(point.y);
+                (r - self.outer).max(self.inner - r)
+            }
+        };
+        // Positive, as `ArmError::Unreachable` promises, even should rounding say otherwise.
+        Some(distance.max(f64::MIN_POSITIVE))
+    }
+
     /// The area, m^2: `pi (outer^2 - inner^2)` for revolute links without ranges, the exact
     /// area for the other exact regions (infinite when a prismatic joint has no range and the
     /// region is not a line), and for a region that is not exact the area of the annulus that
@@ -323,6 +365,14 @@ impl Workspace {
             } => slider_area(l2, range1, range2),
             Region::Bounds => annulus_area(self.inner, self.outer),
         }
+    }
+}
+
+/// The distance of an [`ArmError::Unreachable`], else (never, for the callers) infinity.
+fn unreachable_distance(error: Option<crate::ArmError>) -> f64 {
+    match error {
+        Some(crate::ArmError::Unreachable { distance, .. }) => distance,
+        _ => f64::INFINITY,
     }
 }
 
