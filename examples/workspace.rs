@@ -7,7 +7,13 @@
 //!   points reached with every orientation of the last link, in the paper's three cases
 //!   (`l3 < |l1 - l2|`: an annulus; `l3 > |l1 - l2|`: an annulus and a disk; `l1 = l2 = l`: one
 //!   disk of radius `2 l - l3`), with the whole reachable annulus outlined. The dots are grid
-//!   points that the closed-form inverse kinematics reaches with each of 72 orientations.
+//!   points that the closed-form inverse kinematics reaches with each of 72 orientations;
+//! - `docs/workspace-prismatic.svg`: arms with prismatic joints and joint ranges, from their
+//!   `links()`: a polar arm (a hinge with a range carrying a slide with a range, so the tip
+//!   reaches both ways along the link: two opposite sectors) and a slider carrying two links
+//!   (PRR: the two-link annulus swept along the carriage's travel). The shaded cells are those
+//!   whose centre `Workspace::of_links(...).contains`; the dots are `sample_tips` of random
+//!   configurations within the ranges, each of them checked to be contained.
 //!
 //! ```text
 //! cargo run --example workspace
@@ -16,7 +22,7 @@
 use std::error::Error;
 use std::path::{Path, PathBuf};
 
-use planar_arm::kinematics::DexterousWorkspace;
+use planar_arm::kinematics::{sample_tips, DexterousWorkspace, Skeleton, Workspace};
 use planar_arm::prelude::*;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -75,6 +81,29 @@ struct EqualPair {
     fore: Revolute,
     #[arm(length = 1/2, mass = 1)]
     hand: Revolute,
+}
+
+/// A polar arm: a 0.2 m link turning within -0.5 ..= 2 rad carries a 0.5 m slide travelling
+/// -1.2 ..= 0.3 m, so the tip lies -0.5 ..= 1 m from the base along the link.
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81)]
+struct Polar {
+    #[arm(length = 0.2, mass = 1, range = (-0.5, 2))]
+    turn: Revolute,
+    #[arm(length = 0.5, mass = 1, range = (-1.2, 0.3))]
+    slide: Prismatic,
+}
+
+/// A carriage travelling -0.35 ..= 0.05 m along x carrying links of 0.6 and 0.3 m.
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81)]
+struct SliderArm {
+    #[arm(length = 0.2, mass = 1, range = (-0.35, 0.05))]
+    carriage: Prismatic,
+    #[arm(length = 0.6, mass = 1)]
+    upper: Revolute,
+    #[arm(length = 0.3, mass = 1)]
+    fore: Revolute,
 }
 
 type Pt = (f64, f64);
@@ -332,6 +361,72 @@ where
     Ok(())
 }
 
+/// An arm with prismatic joints or ranges: the cells of a grid whose centres the work-space
+/// contains (merged into runs along each row), tips of random configurations within the
+/// ranges, the radii that bound the region, and the arm at `q`.
+fn links_panel<A: PlanarArm<N>, const N: usize>(
+    arm: &A,
+    title: &str,
+    q: &SVector<f64, N>,
+    area: &DrawingArea<SVGBackend<'_>, Shift>,
+) -> Result<(), Box<dyn Error>> {
+    let links = arm.links();
+    let w = Workspace::of_links(&links);
+    assert!(w.is_exact(), "{title}");
+    let (inner, outer) = (w.inner_radius(), w.outer_radius());
+    let half = 1.08 * outer;
+    let mut chart = square_chart(area, title, half)?;
+    let n = 180;
+    let cell = 2.0 * half / f64::from(n);
+    let mut runs = Vec::new();
+    for j in 0..n {
+        let y = -half + cell * (f64::from(j) + 0.5);
+        let mut start = None;
+        for i in 0..=n {
+            let x = -half + cell * (f64::from(i) + 0.5);
+            let inside = i < n && w.contains(&Point2::new(x, y));
+            match (inside, start) {
+                (true, None) => start = Some(x - 0.5 * cell),
+                (false, Some(x0)) => {
+                    runs.push(((x0, y - 0.5 * cell), (x - 0.5 * cell, y + 0.5 * cell)));
+                    start = None;
+                }
+                _ => {}
+            }
+        }
+    }
+    chart.draw_series(
+        runs.into_iter()
+            .map(|(a, b)| Rectangle::new([a, b], REACHABLE.mix(0.22).filled())),
+    )?;
+    for radius in [inner, outer].into_iter().filter(|r| *r > 0.0) {
+        chart.draw_series(LineSeries::new(circle(radius), REACHABLE.stroke_width(1)))?;
+    }
+    let tips: Vec<Pt> = sample_tips(&links, 1.0, 11)
+        .take(TIPS * 2)
+        .map(|p| {
+            assert!(w.contains(&p), "{title}: tip {p} not contained");
+            (p.x, p.y)
+        })
+        .collect();
+    chart.draw_series(
+        tips.iter()
+            .map(|&p| Circle::new(p, 1, BLACK.mix(0.6).filled())),
+    )?;
+    // A first joint that slides: its rail, the travel of the carriage and its link.
+    if let (Joint::Prismatic, Some((lo, hi))) = (links[0].joint, links[0].range) {
+        let rail = vec![(lo, 0.0), (hi + links[0].length, 0.0)];
+        chart.draw_series(LineSeries::new(rail, BLACK.mix(0.45).stroke_width(6)))?;
+    }
+    let pose: Vec<Pt> = Skeleton::of_links(&links, q)
+        .points()
+        .map(|p| (p.x, p.y))
+        .collect();
+    chart.draw_series(LineSeries::new(pose.clone(), ARM.stroke_width(3)))?;
+    chart.draw_series(pose.iter().map(|&p| Circle::new(p, 3, ARM.filled())))?;
+    Ok(())
+}
+
 /// Whether a point lies near a boundary circle of the usable region, where a finite sample of
 /// orientations may miss the few that fail.
 fn on_edge(l1: f64, l2: f64, l3: f64, rho: f64) -> bool {
@@ -397,5 +492,46 @@ fn main() -> Result<(), Box<dyn Error>> {
         root.present()?;
     }
     println!("{}", three.display());
+
+    let prismatic = docs().join("workspace-prismatic.svg");
+    {
+        let root = SVGBackend::new(&prismatic, (1140, 500)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let (plots, key) = root.split_horizontally(900);
+        let panels = plots.split_evenly((1, 2));
+        links_panel(
+            &Polar::default(),
+            "polar RP: q1 in -0.5..2, q2 in -1.2..0.3",
+            &SVector::<f64, 2>::new(1.2, 0.1),
+            &panels[0],
+        )?;
+        links_panel(
+            &SliderArm::default(),
+            "PRR: q1 in -0.35..0.05, l = 0.2, 0.6, 0.3",
+            &SVector::<f64, 3>::new(-0.1, 1.9, -2.2),
+            &panels[1],
+        )?;
+        draw_key(
+            &key,
+            &[
+                (Key::Patch(REACHABLE.mix(0.3)), "Workspace::of_links"),
+                (Key::Note, "      .contains (cell centres)"),
+                (Key::Line(REACHABLE.to_rgba(), 1), "inner/outer_radius()"),
+                (Key::Dot(BLACK.mix(0.6)), "sample_tips within"),
+                (Key::Note, "      the ranges"),
+                (Key::Line(ARM.to_rgba(), 3), "Skeleton::of_links at q"),
+                (Key::Line(BLACK.mix(0.45), 6), "the slider's rail"),
+                (Key::Note, ""),
+                (Key::Note, "Left: the slide reaches both"),
+                (Key::Note, "ways through the base, so two"),
+                (Key::Note, "opposite sectors (radii 1 and"),
+                (Key::Note, "0.5). Right: the annulus"),
+                (Key::Note, "0.3..0.9 swept along the"),
+                (Key::Note, "carriage's 0.4 m of travel."),
+            ],
+        )?;
+        root.present()?;
+    }
+    println!("{}", prismatic.display());
     Ok(())
 }

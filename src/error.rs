@@ -40,6 +40,13 @@ pub enum ArmError {
     /// a point with the last link at an angle), the point that must lie in an annulus is the
     /// wrist, the last joint, at `target - l_N (cos phi, sin phi)`: `radius` is the wrist's
     /// distance from the base and the annulus the one the links before the last reach.
+    ///
+    /// For arms with prismatic joints or joint ranges (the closed forms in
+    /// [`kinematics`](crate::kinematics) that take ranges), the region reached need not be an
+    /// annulus: `inner ..= outer` are then radii about the base that bound it, and a target may
+    /// lie between them and still be out of reach. A target that only joint values outside the
+    /// ranges would reach has `distance` the amount by which the nearest solution's joint lies
+    /// outside its range, in that joint's unit (metres for a slide, radians for a hinge).
     Unreachable {
         /// The tip position the caller asked for, `[x, y]`.
         target: [f64; 2],
@@ -53,7 +60,8 @@ pub enum ArmError {
         inner: f64,
         /// Outer radius of the annulus that can be reached.
         outer: f64,
-        /// How far outside the annulus the point is (always > 0).
+        /// How far outside the annulus the point is, or for a target that joint ranges exclude
+        /// how far outside its range the nearest solution's joint is (always > 0).
         distance: f64,
     },
     /// The configuration is singular (or too close to it) for the requested inverse.
@@ -190,6 +198,24 @@ impl fmt::Display for ArmError {
                 distance,
             } => {
                 let side = if radius > outer { "beyond" } else { "inside the hole of" };
+                if (inner..=outer).contains(&radius) {
+                    // Between the bounding radii: the region is not the whole annulus.
+                    return match orientation {
+                        None => write!(
+                            f,
+                            "target ({}, {}) lies {} from the base, within the radii {} ..= {}, but outside \
+                             the region the joints reach (by {}: metres, or radians past a joint range)",
+                            r(x), r(y), r(radius), r(inner), r(outer), r(distance)
+                        ),
+                        Some(phi) => write!(
+                            f,
+                            "target ({}, {}) with the last link at {} rad is unreachable: its wrist point lies \
+                             {} from the base, within the radii {} ..= {}, but outside the region the links \
+                             before the last reach (by {}: metres, or radians past a joint range)",
+                            r(x), r(y), r(phi), r(radius), r(inner), r(outer), r(distance)
+                        ),
+                    };
+                }
                 match orientation {
                     None => write!(
                         f,
@@ -292,6 +318,19 @@ mod tests {
         assert!(hole
             .to_string()
             .contains("0.6 inside the hole of the reachable annulus 0.7"));
+        let ranged = ArmError::Unreachable {
+            target: [0.5, -0.5],
+            orientation: None,
+            radius: 0.75,
+            inner: 0.0,
+            outer: 1.3,
+            distance: 0.5,
+        };
+        assert_eq!(
+            ranged.to_string(),
+            "target (0.5, -0.5) lies 0.75 from the base, within the radii 0 ..= 1.3, but \
+             outside the region the joints reach (by 0.5: metres, or radians past a joint range)"
+        );
         let overflow = ArmError::NonFinite { argument: "result" };
         assert!(overflow.to_string().contains("overflowed"));
     }

@@ -6,10 +6,12 @@ use num_traits::Float as _;
 
 use nalgebra::{Isometry2, Point2, SVector, Vector2};
 
+use super::prismatic::excluded;
+use super::range::{check_ranges, fit_branches, Range};
 #[cfg(doc)]
 use super::REACH_TOLERANCE;
 use super::{annulus_check, check_lengths, wrap_angle};
-use crate::ArmError;
+use crate::{ArmError, Joint};
 
 /// Closed-form inverse kinematics of a two- or three-link arm, both elbow solutions.
 ///
@@ -30,7 +32,7 @@ pub trait ClosedFormIk<const N: usize> {
 /// The target's coordinates, with `-0.0` turned into `0.0` so that `atan2` never sees a
 /// negative zero in the denominator.
 #[inline]
-fn target_coordinates(target: &Point2<f64>) -> Result<(f64, f64), ArmError> {
+pub(super) fn target_coordinates(target: &Point2<f64>) -> Result<(f64, f64), ArmError> {
     if target.x.is_finite() && target.y.is_finite() {
         Ok((target.x + 0.0, target.y + 0.0))
     } else {
@@ -243,6 +245,101 @@ pub fn ik3(
         other => other,
     })?;
     Ok(solutions.map(|q| SVector::<f64, 3>::new(q[0], q[1], wrap_angle(phi - q[0] - q[1]))))
+}
+
+/// [`ik2`] within joint ranges: the elbow solutions whose angles lie in `ranges` (radians,
+/// `None` for a free joint, an infinite bound no bound), for an arm whose joints have limits
+/// (a derived arm's [`Link::range`](crate::Link::range)).
+///
+/// An angle satisfies a range when some `q + 2 pi k` lies in it, and that representative is
+/// returned: the angle in (-pi, pi] when it lies in the range, else the representative nearest
+/// the side of the range it lies beyond. Angles within [`REACH_TOLERANCE`] radians of a range
+/// are clamped onto it. The branch order is [`ik2`]'s (index 0 has `sin q2 >= 0`); when only one
+/// branch lies within the ranges, both entries hold it.
+///
+/// # Errors
+/// As [`ik2`], and: [`ArmError::NonFinite`] (`"ranges"`) for a NaN bound,
+/// [`ArmError::OutOfRange`] (`"range"`, the 0-based joint) for `lower > upper`,
+/// [`ArmError::Unreachable`] for a target in the annulus that neither branch reaches within the
+/// ranges, with `radius`, `inner` and `outer` as [`ik2`]'s and `distance` how far the nearer
+/// branch's angle lies outside its range (radians; the branch's larger excess, the smaller over
+/// the branches).
+///
+/// # Example
+/// ```
+/// use planar_arm::kinematics::{ik2, ik2_in_ranges};
+/// use planar_arm::nalgebra::Point2;
+///
+/// let target = Point2::new(1.0, 0.5);
+/// let [up, down] = ik2(1.0, 0.5, &target).unwrap();
+/// // An elbow that bends one way only keeps one branch, in both entries.
+/// let bent = [None, Some((0.0, std::f64::consts::PI))];
+/// assert_eq!(ik2_in_ranges(1.0, 0.5, bent, &target).unwrap(), [up, up]);
+/// let other = [None, Some((-std::f64::consts::PI, 0.0))];
+/// assert_eq!(ik2_in_ranges(1.0, 0.5, other, &target).unwrap(), [down, down]);
+/// ```
+#[inline]
+pub fn ik2_in_ranges(
+    l1: f64,
+    l2: f64,
+    ranges: [Option<(f64, f64)>; 2],
+    target: &Point2<f64>,
+) -> Result<[SVector<f64, 2>; 2], ArmError> {
+    check_ranges(&ranges)?;
+    let solutions = ik2(l1, l2, target)?;
+    let (x, y) = target_coordinates(target)?;
+    let (a1, a2) = (l1.abs(), l2.abs());
+    let radii = ((a1 - a2).abs(), a1 + a2);
+    fit_revolute(solutions, &ranges)
+        .map_err(|excess| excluded([x, y], None, x.hypot(y), radii, excess))
+}
+
+/// [`ik3`] within joint ranges, as [`ik2_in_ranges`] is [`ik2`] within them: the solutions
+/// whose three angles lie in `ranges` (representatives, tolerance and branch order as there).
+///
+/// # Errors
+/// As [`ik3`] and [`ik2_in_ranges`]: [`ArmError::Unreachable`] for a pose whose wrist lies in
+/// the two-link annulus but that neither branch reaches within the ranges, with `target`,
+/// `orientation`, `radius` (the wrist's), `inner` and `outer` as [`ik3`]'s and `distance` how
+/// far the nearer branch's angle lies outside its range (radians).
+///
+/// # Example
+/// ```
+/// use planar_arm::kinematics::ik3_in_ranges;
+/// use planar_arm::nalgebra::{Isometry2, Vector2};
+///
+/// let target = Isometry2::new(Vector2::new(1.2, 0.4), 0.3);
+/// let wrist_up = [None, Some((0.0, 3.2)), Some((-4.0, 4.0))];
+/// let [q, same] = ik3_in_ranges(1.0, 0.8, 0.2, wrist_up, &target).unwrap();
+/// assert_eq!(q, same);
+/// assert!(q[1] >= 0.0 && (q[0] + q[1] + q[2] - 0.3).abs() < 1e-12);
+/// ```
+#[inline]
+pub fn ik3_in_ranges(
+    l1: f64,
+    l2: f64,
+    l3: f64,
+    ranges: [Option<(f64, f64)>; 3],
+    target: &Isometry2<f64>,
+) -> Result<[SVector<f64, 3>; 2], ArmError> {
+    check_ranges(&ranges)?;
+    let solutions = ik3(l1, l2, l3, target)?;
+    let t = target.translation.vector;
+    let phi = target.rotation.angle();
+    let wrist = t - Vector2::new(phi.cos(), phi.sin()) * l3;
+    let (a1, a2) = (l1.abs(), l2.abs());
+    let radii = ((a1 - a2).abs(), a1 + a2);
+    fit_revolute(solutions, &ranges)
+        .map_err(|excess| excluded([t.x, t.y], Some(phi), wrist.norm(), radii, excess))
+}
+
+/// The branches of an all-revolute closed form that fit `ranges`, or the smallest excess.
+fn fit_revolute<const N: usize>(
+    solutions: [SVector<f64, N>; 2],
+    ranges: &[Range; N],
+) -> Result<[SVector<f64, N>; 2], f64> {
+    let branches = solutions.map(|q| core::array::from_fn(|i| q[i]));
+    fit_branches(&[Joint::Revolute; N], ranges, 0.0, branches).map(|b| b.map(SVector::from))
 }
 
 #[cfg(test)]
@@ -526,6 +623,122 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Whether some `a + 2 pi k` lies in `range`, by the test's own rule.
+    fn turns_into(a: f64, range: Option<(f64, f64)>) -> bool {
+        range.is_none_or(|(lo, hi)| a + TAU * ((lo - a) / TAU).ceil() <= hi)
+    }
+
+    fn within(a: f64, range: Option<(f64, f64)>) -> bool {
+        range.is_none_or(|(lo, hi)| lo <= a && a <= hi)
+    }
+
+    #[test]
+    fn ik2_and_ik3_in_ranges() {
+        let mut rng = Rng(24);
+        let two: [[Option<(f64, f64)>; 2]; 3] = [
+            [None, Some((0.0, PI))],
+            [Some((-1.0, 2.0)), Some((-2.5, 0.5))],
+            [Some((3.0, 5.0)), None],
+        ];
+        for (l1, l2) in PAIRS {
+            for ranges in two {
+                let (mut single, mut refused) = (0, 0);
+                for _ in 0..2000 {
+                    let q = Vector2::new(rng.angle(), rng.angle());
+                    let (x, y, _) = fk(&[l1, l2], q.as_slice());
+                    let target = Point2::new(x, y);
+                    let free = ik2(l1, l2, &target).unwrap();
+                    let fits = free.map(|b| (0..2).all(|k| turns_into(b[k], ranges[k])));
+                    match ik2_in_ranges(l1, l2, ranges, &target) {
+                        Ok(qs) => {
+                            if fits[0] && fits[1] {
+                                assert!(qs[0][1].sin() >= -1e-15 && qs[1][1].sin() <= 1e-15);
+                            }
+                            for b in &qs {
+                                let (tx, ty, _) = fk(&[l1, l2], b.as_slice());
+                                assert!((tx - x).hypot(ty - y) <= 1e-12 * (l1 + l2));
+                                assert!(within(b[0], ranges[0]) && within(b[1], ranges[1]));
+                            }
+                            // Branch order kept; a lone survivor fills both entries.
+                            for (b, free) in qs.iter().zip(&free) {
+                                if fits[0] && fits[1] {
+                                    assert!(angle_gap(b[0], free[0]) < 1e-12);
+                                }
+                            }
+                            if fits[0] != fits[1] {
+                                single += 1;
+                                assert_eq!(qs[0], qs[1]);
+                                let kept = &free[usize::from(fits[1])];
+                                assert!(angle_gap(qs[0][1], kept[1]) < 1e-12);
+                            }
+                        }
+                        Err(ArmError::Unreachable {
+                            distance, radius, ..
+                        }) => {
+                            refused += 1;
+                            assert!(!fits[0] && !fits[1] && distance > 0.0);
+                            assert!((radius - x.hypot(y)).abs() < 1e-15 * (1.0 + radius));
+                        }
+                        Err(e) => panic!("{e:?}"),
+                    }
+                }
+                assert!(single > 100, "{ranges:?}: {single} with one branch");
+                if ranges[0].is_some() {
+                    assert!(refused > 50, "{ranges:?}: {refused} refused");
+                }
+            }
+        }
+        // Outside the annulus: the annulus error, whatever the ranges.
+        assert_eq!(
+            ik2_in_ranges(1.0, 0.5, two[0], &Point2::new(2.0, 0.0)),
+            ik2(1.0, 0.5, &Point2::new(2.0, 0.0))
+        );
+        assert!(matches!(
+            ik2_in_ranges(1.0, 0.5, [Some((1.0, 0.0)), None], &Point2::new(1.0, 0.0)),
+            Err(ArmError::OutOfRange {
+                what: "range",
+                link: Some(0),
+                ..
+            })
+        ));
+        let three = [Some((-1.0, 1.0)), Some((0.0, PI)), Some((-1.0, 1.0))];
+        let (mut solved, mut refused) = (0, 0);
+        for (l1, l2, l3) in TRIPLES {
+            for _ in 0..2000 {
+                let q = Vector3::new(rng.angle(), rng.angle(), rng.angle());
+                let target = pose_of(&[l1, l2, l3], &q);
+                let free = ik3(l1, l2, l3, &target).unwrap();
+                let fits = free.map(|b| (0..3).all(|k| turns_into(b[k], three[k])));
+                match ik3_in_ranges(l1, l2, l3, three, &target) {
+                    Ok(qs) => {
+                        solved += 1;
+                        assert!(fits[0] || fits[1]);
+                        for b in &qs {
+                            let (x, y, phi) = fk(&[l1, l2, l3], b.as_slice());
+                            let t = target.translation.vector;
+                            assert!((x - t.x).hypot(y - t.y) < 1e-12 * (l1 + l2 + l3));
+                            assert!(angle_gap(phi, target.rotation.angle()) < 1e-12);
+                            assert!((0..3).all(|k| within(b[k], three[k])));
+                        }
+                    }
+                    Err(ArmError::Unreachable {
+                        distance,
+                        orientation,
+                        ..
+                    }) => {
+                        refused += 1;
+                        assert!(!fits[0] && !fits[1] && distance > 0.0 && orientation.is_some());
+                    }
+                    Err(e) => panic!("{e:?}"),
+                }
+            }
+        }
+        assert!(
+            solved > 1000 && refused > 1000,
+            "{solved} solved, {refused} refused"
+        );
     }
 
     proptest! {

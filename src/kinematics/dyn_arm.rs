@@ -291,7 +291,7 @@ macro_rules! dyn_methods {
             }
             /// [`PlanarArm::workspace`].
             pub fn workspace(&self) -> Workspace {
-                Workspace::of_lengths(&self.links().map(|l| l.length))
+                Workspace::of_links(&self.links())
             }
             /// [`PlanarArm::inverse_kinematics_near`].
             ///

@@ -24,22 +24,28 @@
 //! them. Lengths are used with their signs (a link of negative length is the positive one
 //! turned by pi); the derive macro only passes positive ones.
 
+mod chain;
 mod closed_form;
 mod dyn_arm;
 mod manipulability;
 mod numeric;
+mod prismatic;
+mod range;
 mod skeleton;
 mod statics;
 #[cfg(test)]
 mod test_support;
 mod workspace;
 
-pub use closed_form::{ik2, ik2_equal, ik3, ClosedFormIk};
+pub use chain::{jacobian_of, sample_tips, tip_pose_of, TipSamples};
+pub use closed_form::{ik2, ik2_equal, ik2_in_ranges, ik3, ik3_in_ranges, ClosedFormIk};
 pub use dyn_arm::DynArm;
 pub use manipulability::{is_singular, manipulability};
 pub use numeric::{
-    inverse_kinematics_near, reachable_target, solve_dls, DlsOptions, IkTarget, DLS_MAX_STEP,
+    inverse_kinematics_near, inverse_kinematics_of, reachable_target, reachable_target_of,
+    solve_dls, DlsOptions, IkTarget, DLS_MAX_STEP,
 };
+pub use prismatic::{ik_pr, ik_prr, ik_rp};
 pub use skeleton::Skeleton;
 pub use statics::{
     inverse_statics, tip_force2, tip_wrench3, InverseStatics, RedundantTipWrench, StaticWrench,

@@ -3,9 +3,10 @@
 use nalgebra::{Isometry2, Matrix2, Matrix3, Point2, SMatrix, SVector, Vector2, Vector3};
 
 use super::{
-    annulus_check_with_slack, check_lengths, check_vector, wrap_angle, Workspace, REACH_TOLERANCE,
+    annulus_check_with_slack, check_lengths, check_vector, jacobian_of, tip_pose_of, wrap_angle,
+    Workspace, REACH_TOLERANCE,
 };
-use crate::ArmError;
+use crate::{ArmError, Joint, Link};
 
 /// Largest Euclidean norm, in radians, of one joint step taken by [`solve_dls`].
 pub const DLS_MAX_STEP: f64 = 0.5;
@@ -34,8 +35,9 @@ pub struct DlsOptions<const N: usize> {
     /// millionth of this value) after a step that lowers the error, quadrupled after one that
     /// does not.
     pub damping: f64,
-    /// Joint limits `(lower, upper)` in radians for each joint, MuJoCo's `range`; `None` (the
-    /// default) leaves every joint free. The limits apply to the raw angles (not wrapped, so
+    /// Joint limits `(lower, upper)` for each joint (radians, or metres for a prismatic joint),
+    /// MuJoCo's `range`; `None` (the default) leaves every joint free.
+    /// [`inverse_kinematics_near`] and [`inverse_kinematics_of`] add the links' own ranges. The limits apply to the raw angles (not wrapped, so
     /// `(-4.0, 4.0)` allows a little more than one turn); an infinite bound is no bound. The
     /// seed is first clamped into them, every iterate stays inside them (a joint at a limit
     /// that the step pushes outward is held there and the step recomputed for the others),
@@ -361,12 +363,110 @@ pub fn reachable_target<const N: usize>(
     })
 }
 
-/// [`PlanarArm::inverse_kinematics_near`](crate::PlanarArm::inverse_kinematics_near): the
-/// reach check of [`reachable_target`] on the arm's link lengths, then [`solve_dls`] on its
-/// generated tip pose and Jacobian.
+/// [`reachable_target`] for an arm of any mix of joints, from its links (lengths, joint kinds
+/// and ranges): checks that the arm can reach `target` and never refuses a target it can
+/// reach.
+///
+/// For revolute links it is [`reachable_target`] of their lengths (the annulus, ranges not
+/// applied; a target just outside is moved onto the boundary). Otherwise the point that must
+/// be reached is the target's position, or for a pose whose last joint is revolute the wrist
+/// `p - l_N (cos phi, sin phi)`, which the links before the last must reach; it must lie in the
+/// [`Workspace::of_links`] of the links that reach it, which is exact for the arms listed there
+/// and otherwise an annulus that holds every reachable point (so the check can only let
+/// through targets the solver then cannot reach, never refuse one it can). A pose whose last
+/// joint is prismatic is checked by its position alone. Such targets are returned unchanged.
 ///
 /// # Errors
-/// As [`reachable_target`] and [`solve_dls`].
+/// [`ArmError::NonFinite`] for NaN or infinite lengths (`"lengths"`) or targets (`"target"`);
+/// [`ArmError::Unreachable`] naming the target as given, with the distance from the base of the
+/// point checked, the work-space's radii and how far outside it the point lies (metres; or,
+/// for the polar arm and the slider carrying a link, as [`ik_rp`](super::ik_rp) and
+/// [`ik_pr`](super::ik_pr) report it).
+///
+/// # Example
+/// ```
+/// use planar_arm::kinematics::{reachable_target_of, IkTarget};
+/// use planar_arm::nalgebra::Point2;
+/// use planar_arm::{ArmError, Joint, Link};
+///
+/// let polar = [
+///     Link::rod(0.2, 1.0),
+///     Link::rod(0.5, 1.0).with_joint(Joint::Prismatic).with_range(0.1, 0.6),
+/// ];
+/// let near = IkTarget::Position(Point2::new(0.0, 1.0));
+/// assert_eq!(reachable_target_of(&polar, &near), Ok(near));
+/// let short = IkTarget::Position(Point2::new(0.5, 0.0));
+/// assert!(matches!(reachable_target_of(&polar, &short), Err(ArmError::Unreachable { .. })));
+/// ```
+pub fn reachable_target_of<const N: usize>(
+    links: &[Link; N],
+    target: &IkTarget,
+) -> Result<IkTarget, ArmError> {
+    let lengths = links.map(|l| l.length);
+    if links.iter().all(|l| l.joint == Joint::Revolute) {
+        return reachable_target(&lengths, target);
+    }
+    check_lengths(&lengths)?;
+    if !target_is_finite(target) {
+        return Err(ArmError::NonFinite { argument: "target" });
+    }
+    let (point, reaching, asked, orientation) = match target {
+        IkTarget::Position(p) => (p.coords, &links[..], [p.x, p.y], None),
+        IkTarget::Pose(pose) => {
+            let t = pose.translation.vector;
+            let phi = pose.rotation.angle();
+            match links.split_last() {
+                Some((last, before)) if last.joint == Joint::Revolute => {
+                    let turn = pose.rotation.complex();
+                    let hand = Vector2::new(turn.re, turn.im) * last.length;
+                    (t - hand, before, [t.x, t.y], Some(phi))
+                }
+                _ => (t, &links[..], [t.x, t.y], Some(phi)),
+            }
+        }
+    };
+    let w = Workspace::of_links(reaching);
+    let p = Point2::from(point);
+    match w.miss(&p) {
+        None => Ok(*target),
+        Some(distance) => Err(ArmError::Unreachable {
+            target: asked,
+            orientation,
+            radius: point.norm(),
+            inner: w.inner_radius(),
+            outer: w.outer_radius(),
+            distance,
+        }),
+    }
+}
+
+/// `options` with the links' ranges added to its joint limits (their intersection; a NaN bound
+/// counts as none).
+fn with_ranges<const N: usize>(links: &[Link; N], options: &DlsOptions<N>) -> DlsOptions<N> {
+    if links.iter().all(|l| l.range.is_none()) {
+        return *options;
+    }
+    let free = (f64::NEG_INFINITY, f64::INFINITY);
+    let limits = core::array::from_fn(|i| {
+        let (lo, hi) = links[i].range.unwrap_or(free);
+        let (olo, ohi) = options.limits.map_or(free, |l| l[i]);
+        (lo.max(olo), hi.min(ohi))
+    });
+    DlsOptions {
+        limits: Some(limits),
+        ..*options
+    }
+}
+
+/// [`PlanarArm::inverse_kinematics_near`](crate::PlanarArm::inverse_kinematics_near): the
+/// reach check of [`reachable_target_of`] on the arm's links, then [`solve_dls`] on its
+/// generated tip pose and Jacobian, with the links' ranges
+/// ([`Link::range`](crate::Link::range)) as joint limits on top of those in `options` (the
+/// intersection of both).
+///
+/// # Errors
+/// As [`reachable_target_of`] and [`solve_dls`]; [`ArmError::OutOfRange`]
+/// (`"joint limits"`) when a joint's range and its limit in `options` do not overlap.
 pub fn inverse_kinematics_near<A: crate::PlanarArm<N> + ?Sized, const N: usize>(
     arm: &A,
     target: &IkTarget,
@@ -374,13 +474,55 @@ pub fn inverse_kinematics_near<A: crate::PlanarArm<N> + ?Sized, const N: usize>(
     options: &DlsOptions<N>,
 ) -> Result<SVector<f64, N>, ArmError> {
     check_vector(seed, "seed")?;
-    let target = reachable_target(&arm.links().map(|l| l.length), target)?;
+    let links = arm.links();
+    let target = reachable_target_of(&links, target)?;
     solve_dls(
         |q| arm.tip_pose(q),
         |q| arm.jacobian(q),
         &target,
         seed,
-        options,
+        &with_ranges(&links, options),
+    )
+}
+
+/// [`inverse_kinematics_near`] for an arm given by its links alone (any mix of joints): the same
+/// reach check and joint limits, with [`tip_pose_of`](super::tip_pose_of) and
+/// [`jacobian_of`](super::jacobian_of) in place of generated code. Every solution lies within
+/// the links' ranges.
+///
+/// # Errors
+/// As [`inverse_kinematics_near`].
+///
+/// # Example
+/// ```
+/// use planar_arm::kinematics::{inverse_kinematics_of, tip_pose_of, DlsOptions, IkTarget};
+/// use planar_arm::nalgebra::{Point2, Vector2};
+/// use planar_arm::{Joint, Link};
+///
+/// let polar = [
+///     Link::rod(0.2, 1.0).with_range(-1.0, 1.0),
+///     Link::rod(0.5, 1.0).with_joint(Joint::Prismatic).with_range(0.1, 0.6),
+/// ];
+/// let target = IkTarget::Position(Point2::new(0.6, 0.8));
+/// let q = inverse_kinematics_of(&polar, &target, &Vector2::new(0.0, 0.1), &DlsOptions::default())
+///     .unwrap();
+/// assert!((tip_pose_of(&polar, &q).translation.vector - Vector2::new(0.6, 0.8)).norm() < 1e-10);
+/// assert!((q[1] - 0.3).abs() < 1e-9);
+/// ```
+pub fn inverse_kinematics_of<const N: usize>(
+    links: &[Link; N],
+    target: &IkTarget,
+    seed: &SVector<f64, N>,
+    options: &DlsOptions<N>,
+) -> Result<SVector<f64, N>, ArmError> {
+    check_vector(seed, "seed")?;
+    let target = reachable_target_of(links, target)?;
+    solve_dls(
+        |q| tip_pose_of(links, q),
+        |q| jacobian_of(links, q),
+        &target,
+        seed,
+        &with_ranges(links, options),
     )
 }
 
@@ -388,7 +530,10 @@ pub fn inverse_kinematics_near<A: crate::PlanarArm<N> + ?Sized, const N: usize>(
 mod tests {
     use super::*;
     use crate::kinematics::ik3;
-    use crate::kinematics::test_support::{angle_gap, any_f64, clean, jacobian, pose_of, Rng};
+    use crate::kinematics::test_support::{
+        angle_gap, any_f64, clean, fk_joints, jacobian, pose_of, Rng,
+    };
+    use core::f64::consts::PI;
     use nalgebra::Vector2;
     use proptest::prelude::*;
 
@@ -501,6 +646,184 @@ mod tests {
             run(&(q * 2.0)),
             Err(ArmError::NoConvergence { iterations: 0, .. })
         ));
+    }
+
+    fn within<const N: usize>(q: &SVector<f64, N>, limits: &[(f64, f64); N]) -> bool {
+        (0..N).all(|i| limits[i].0 <= q[i] && q[i] <= limits[i].1)
+    }
+
+    /// Random configurations within the ranges, their poses as targets, seeds near them:
+    /// converged within the ranges (and within the narrower limits of `options`, if any).
+    fn ranged_case<const N: usize>(
+        links: &[Link; N],
+        options: &DlsOptions<N>,
+        rng: &mut Rng,
+    ) -> (usize, usize) {
+        let kinds = links.map(|l| l.joint);
+        let lengths = links.map(|l| l.length);
+        let limits: [(f64, f64); N] = core::array::from_fn(|i| {
+            let (lo, hi) = links[i].range.unwrap_or((-PI, PI));
+            let (olo, ohi) = options.limits.map_or((lo, hi), |l| l[i]);
+            (lo.max(olo), hi.min(ohi))
+        });
+        let (mut converged, mut tried) = (0, 0);
+        for pose in [false, true] {
+            for _ in 0..200 {
+                let truth = SVector::<f64, N>::from_fn(|i, _| rng.range(limits[i].0, limits[i].1));
+                let (x, y, phi) = fk_joints(&kinds, &lengths, truth.as_slice());
+                let target = if pose {
+                    IkTarget::Pose(Isometry2::new(Vector2::new(x, y), phi))
+                } else {
+                    IkTarget::Position(Point2::new(x, y))
+                };
+                // Never refused: the configuration is within the ranges.
+                assert_eq!(reachable_target_of(links, &target), Ok(target));
+                let seed = truth + SVector::<f64, N>::from_fn(|_, _| rng.range(-0.15, 0.15));
+                tried += 1;
+                match inverse_kinematics_of(links, &target, &seed, options) {
+                    Ok(q) => {
+                        converged += 1;
+                        assert!(within(&q, &limits), "{q} outside {limits:?}");
+                        let (qx, qy, qphi) = fk_joints(&kinds, &lengths, q.as_slice());
+                        assert!((qx - x).hypot(qy - y) <= 1e-10);
+                        if pose {
+                            assert!(angle_gap(qphi, phi) <= 1e-10);
+                        }
+                    }
+                    Err(ArmError::NoConvergence { .. }) => {}
+                    Err(e) => panic!("{e:?}"),
+                }
+            }
+        }
+        (converged, tried)
+    }
+
+    #[test]
+    fn numeric_ik_on_prismatic_arms_respects_the_ranges() {
+        let mut rng = Rng(28);
+        let polar = [
+            Link::rod(0.2, 1.0).with_range(-1.0, 2.0),
+            Link::rod(0.5, 1.0)
+                .with_joint(Joint::Prismatic)
+                .with_range(0.1, 0.6),
+        ];
+        let prr = [
+            Link::rod(0.2, 1.0)
+                .with_joint(Joint::Prismatic)
+                .with_range(-0.5, 0.6),
+            Link::rod(0.6, 1.0).with_range(-2.0, 2.0),
+            Link::rod(0.3, 1.0).with_range(-1.5, 1.5),
+        ];
+        let (c, t) = ranged_case(&polar, &DlsOptions::default(), &mut rng);
+        let free = DlsOptions::<3>::default();
+        assert!(c * 100 >= 98 * t, "RP: {c} of {t} converged");
+        let (c, t) = ranged_case(&prr, &free, &mut rng);
+        assert!(c * 100 >= 95 * t, "PRR: {c} of {t} converged");
+        // Options narrow the ranges further: the intersection holds.
+        let narrow = DlsOptions {
+            limits: Some([(0.0, 0.4), (-1.0, 1.0), (f64::NEG_INFINITY, 0.5)]),
+            ..free
+        };
+        let (c, t) = ranged_case(&prr, &narrow, &mut rng);
+        assert!(c * 100 >= 95 * t, "PRR, narrower: {c} of {t} converged");
+        // Limits that miss a range: refused.
+        let apart = DlsOptions {
+            limits: Some([(1.0, 2.0), (-1.0, 1.0), (-1.0, 1.0)]),
+            ..free
+        };
+        let at = IkTarget::Position(Point2::new(0.8, 0.3));
+        assert!(matches!(
+            inverse_kinematics_of(&prr, &at, &Vector3::zeros(), &apart),
+            Err(ArmError::OutOfRange {
+                what: "joint limits",
+                link: Some(0),
+                ..
+            })
+        ));
+        // A target that needs the slide beyond its end: no solution inside the ranges, and
+        // the closed form agrees.
+        let far = IkTarget::Position(Point2::new(0.0, 1.5));
+        assert!(
+            matches!(reachable_target_of(&polar, &far), Err(ArmError::Unreachable { distance, .. }) if (distance - 0.2).abs() < 1e-12)
+        );
+        // The polar arm's angle range: reachable only pointing away, which the range forbids.
+        let behind = IkTarget::Position(Point2::new(-0.9, -0.1));
+        assert!(reachable_target_of(&polar, &behind).is_err());
+        // Sliders without a range reach far; the check lets them through.
+        let unbounded = [
+            Link::rod(0.3, 1.0).with_joint(Joint::Prismatic),
+            Link::rod(0.5, 1.0),
+        ];
+        let target = IkTarget::Position(Point2::new(25.0, 0.4));
+        let q = inverse_kinematics_of(
+            &unbounded,
+            &target,
+            &Vector2::new(0.0, 0.5),
+            &DlsOptions::default(),
+        )
+        .unwrap();
+        assert!((pose_of_links(&unbounded, &q) - Vector2::new(25.0, 0.4)).norm() < 1e-10);
+        assert!(
+            reachable_target_of(&unbounded, &IkTarget::Position(Point2::new(3.0, 0.6))).is_err()
+        );
+    }
+
+    fn pose_of_links<const N: usize>(links: &[Link; N], q: &SVector<f64, N>) -> Vector2<f64> {
+        tip_pose_of(links, q).translation.vector
+    }
+
+    #[test]
+    fn the_reach_check_never_refuses_a_reachable_target() {
+        let mut rng = Rng(29);
+        let p = Joint::Prismatic;
+        let mixes: [[Link; 3]; 4] = [
+            [
+                Link::rod(1.0, 1.0),
+                Link::rod(0.5, 1.0),
+                Link::rod(0.3, 1.0).with_joint(p).with_range(0.0, 0.4),
+            ],
+            [
+                Link::rod(0.4, 1.0),
+                Link::rod(1.0, 1.0).with_joint(p).with_range(0.5, 1.0),
+                Link::rod(0.3, 1.0),
+            ],
+            [
+                Link::rod(0.5, 1.0).with_joint(p).with_range(0.0, 1.0),
+                Link::rod(0.2, 1.0).with_joint(p),
+                Link::rod(0.3, 1.0).with_range(0.0, 1.0),
+            ],
+            [
+                Link::rod(0.2, 1.0).with_joint(p).with_range(-0.5, 0.6),
+                Link::rod(0.6, 1.0).with_range(0.0, 1.0),
+                Link::rod(0.3, 1.0),
+            ],
+        ];
+        for links in mixes {
+            let kinds = links.map(|l| l.joint);
+            let lengths = links.map(|l| l.length);
+            let mut refused = 0;
+            for _ in 0..3000 {
+                let q: [f64; 3] = core::array::from_fn(|i| {
+                    let (lo, hi) = links[i].range.unwrap_or((-3.0, 3.0));
+                    rng.range(lo, hi)
+                });
+                let (x, y, phi) = fk_joints(&kinds, &lengths, &q);
+                for target in [
+                    IkTarget::Position(Point2::new(x, y)),
+                    IkTarget::Pose(Isometry2::new(Vector2::new(x, y), phi)),
+                ] {
+                    assert_eq!(
+                        reachable_target_of(&links, &target),
+                        Ok(target),
+                        "{kinds:?} at {q:?}"
+                    );
+                }
+                let far = 1.1 * Workspace::of_links(&links).outer_radius() + 0.1;
+                let beyond = IkTarget::Position(Point2::new(far * phi.cos(), far * phi.sin()));
+                refused += usize::from(reachable_target_of(&links, &beyond).is_err());
+            }
+            assert_eq!(refused, 3000, "{kinds:?}");
+        }
     }
 
     proptest! {

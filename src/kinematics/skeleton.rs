@@ -47,6 +47,29 @@ impl<const N: usize> Skeleton<N> {
         }
     }
 
+    /// The joints and the tip of an arm of these links at `q`, computed from the links (any
+    /// mix of joint kinds, by the rules of [`tip_pose_of`](super::tip_pose_of)). The point of
+    /// a prismatic joint is where its link starts, `q_i` along the previous link from that
+    /// link's end: for a first joint that is prismatic, `(q1, 0)` rather than the origin, and
+    /// the segment from the previous point to it is the previous link with the slide.
+    ///
+    /// # Example
+    /// ```
+    /// use planar_arm::kinematics::Skeleton;
+    /// use planar_arm::nalgebra::{Point2, Vector2};
+    /// use planar_arm::{Joint, Link};
+    ///
+    /// let polar = [Link::rod(0.2, 1.0), Link::rod(0.5, 1.0).with_joint(Joint::Prismatic)];
+    /// let s = Skeleton::of_links(&polar, &Vector2::new(0.0, 0.3));
+    /// let points: Vec<Point2<f64>> = s.points().collect();
+    /// assert_eq!(points, [Point2::new(0.0, 0.0), Point2::new(0.5, 0.0), Point2::new(1.0, 0.0)]);
+    /// ```
+    #[must_use]
+    pub fn of_links(links: &[crate::Link; N], q: &SVector<f64, N>) -> Self {
+        let (joints, tip) = super::chain::joint_origins(links, q);
+        Self { joints, tip }
+    }
+
     /// The `N + 1` points from the base to the tip.
     pub fn points(&self) -> impl DoubleEndedIterator<Item = Point2<f64>> + ExactSizeIterator + '_ {
         (0..N + 1).map(move |k| self.point(k))

@@ -20,6 +20,30 @@ pub(super) fn fk(lengths: &[f64], q: &[f64]) -> (f64, f64, f64) {
     (x, y, phi)
 }
 
+/// Independent forward kinematics of any mix of joints, by the rules of
+/// [`Joint`](crate::Joint): a revolute joint adds its angle and starts at the previous link's
+/// end; a prismatic joint keeps the angle and starts `q` further along the previous link
+/// (along +x before the first). Tip x, tip y and the absolute angle of the last link.
+pub(super) fn fk_joints(kinds: &[crate::Joint], lengths: &[f64], q: &[f64]) -> (f64, f64, f64) {
+    use crate::Joint;
+    let (mut x, mut y, mut phi) = (0.0_f64, 0.0_f64, 0.0_f64);
+    // The length of the previous link: none before the first.
+    let mut previous = 0.0;
+    for ((kind, l), qk) in kinds.iter().zip(lengths).zip(q) {
+        let advance = match kind {
+            Joint::Revolute => previous,
+            Joint::Prismatic => previous + qk,
+        };
+        x += advance * phi.cos();
+        y += advance * phi.sin();
+        if *kind == Joint::Revolute {
+            phi += qk;
+        }
+        previous = *l;
+    }
+    (x + previous * phi.cos(), y + previous * phi.sin(), phi)
+}
+
 /// Independent Jacobian: column i is the sum over k >= i of l_k (-sin phi_k, cos phi_k), 1.
 pub(super) fn jacobian<const N: usize>(
     lengths: &[f64; N],
