@@ -500,12 +500,12 @@ pub trait PlanarArm<const N: usize> {
         self.forward_dynamics(q, qd, tau)
     }
 
-    /// The reachable region: an annulus with inner radius `max(0, 2 max l - sum l)` and outer
-    /// radius `sum l`.
+    /// The reachable region of the tip ([`Workspace::of_links`]): for revolute links without
+    /// ranges the annulus with inner radius `max(0, 2 max l - sum l)` and outer radius
+    /// `sum l`; exact regions for the polar arm, a slider carrying one or two links and ranged
+    /// hinges; a bounding annulus otherwise ([`Workspace::is_exact`] says which).
     fn workspace(&self) -> Workspace {
-        let links = self.links();
-        let lengths: [f64; N] = core::array::from_fn(|i| links[i].length);
-        Workspace::of_lengths(&lengths)
+        Workspace::of_links(&self.links())
     }
 
     /// The manipulability measure `sqrt(det(J J^T))` of the task rows (tip position for

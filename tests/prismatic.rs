@@ -449,3 +449,107 @@ fn f32_evaluates_mixed_arms_within_its_precision() {
         );
     }
 }
+
+/// The generated closed-form inverse kinematics: every branch reaches the target (by the
+/// generated forward kinematics) and lies within the ranges; out-of-range targets are refused.
+#[test]
+fn closed_form_inverse_kinematics_of_mixed_arms() {
+    let mut rng = Rng(17);
+    let (polar, cart) = (Polar::default(), CartPole::default());
+    let arm = gantry(&mut rng);
+    let within = |links: &[Link], q: &[f64]| {
+        links.iter().zip(q).all(|(l, &x)| {
+            l.range.is_none_or(|(lo, hi)| {
+                let tol = 1e-12 * (1.0 + x.abs());
+                (lo - tol..=hi + tol).contains(&x)
+            })
+        })
+    };
+    let (mut polar_hits, mut gantry_hits) = (0, 0);
+    for _ in 0..2000 {
+        // Polar: any configuration within the ranges gives a reachable target.
+        let q = Vector2::new(rng.range(-3.0, 3.0), rng.range(0.0, 0.6));
+        let tip = Point2::from(polar.tip_pose(&q).translation.vector);
+        for sol in polar.inverse_kinematics(&tip).expect("reachable") {
+            let back = polar.tip_pose(&sol).translation.vector;
+            assert!((back - tip.coords).amax() < 1e-12, "{sol} -> {back} vs {tip}");
+            assert!(within(&polar.links(), sol.as_slice()), "{sol}");
+        }
+        polar_hits += 1;
+        // The cart-pole has no ranges: both branches.
+        let q = Vector2::new(rng.range(-2.0, 2.0), rng.range(-3.0, 3.0));
+        let tip = Point2::from(cart.tip_pose(&q).translation.vector);
+        let [a, b] = cart.inverse_kinematics(&tip).expect("reachable");
+        for sol in [a, b] {
+            let back = cart.tip_pose(&sol).translation.vector;
+            assert!((back - tip.coords).amax() < 1e-12);
+        }
+        // The gantry, for a pose.
+        let q3 = Vector3::new(rng.range(-1.0, 1.0), rng.range(-3.0, 3.0), rng.range(-3.0, 3.0));
+        let pose = arm.tip_pose(&q3);
+        for sol in arm.inverse_kinematics(&pose).expect("reachable") {
+            let back = arm.tip_pose(&sol);
+            assert!((back.translation.vector - pose.translation.vector).amax() < 1e-11);
+            assert!((back.rotation.angle() - pose.rotation.angle()).sin().abs() < 1e-11);
+            assert!(within(&arm.links(), sol.as_slice()), "{sol}");
+        }
+        gantry_hits += 1;
+    }
+    assert_eq!((polar_hits, gantry_hits), (2000, 2000));
+    // Beyond the boom's travel (reach 0.7 to 1.3 m) and on the wrong side of its range.
+    for target in [Point2::new(1.5, 0.0), Point2::new(0.3, 0.2)] {
+        assert!(matches!(
+            polar.inverse_kinematics(&target),
+            Err(ArmError::Unreachable { .. })
+        ));
+    }
+    assert!(matches!(
+        polar.inverse_kinematics(&Point2::new(f64::NAN, 0.0)),
+        Err(ArmError::NonFinite { .. })
+    ));
+    // The work-space agrees: an annulus 0.7 ..= 1.3 about the base.
+    let w = polar.workspace();
+    assert!(w.is_exact() && w.contains(&Point2::new(0.0, 1.0)) && !w.contains(&Point2::new(0.3, 0.2)));
+    let area = std::f64::consts::PI * (1.3f64.powi(2) - 0.7f64.powi(2));
+    assert!((w.area() - area).abs() < 1e-12, "{} vs {area}", w.area());
+}
+
+/// Numeric inverse kinematics keeps a slide within its range.
+#[test]
+fn numeric_inverse_kinematics_respects_the_ranges() {
+    let mut rng = Rng(19);
+    let polar = Polar::default();
+    for _ in 0..200 {
+        let q = Vector2::new(rng.range(-3.0, 3.0), rng.range(0.0, 0.6));
+        let target = IkTarget::Position(Point2::from(polar.tip_pose(&q).translation.vector));
+        let seed = Vector2::new(rng.range(-3.0, 3.0), rng.range(0.0, 0.6));
+        let sol = polar
+            .inverse_kinematics_near(&target, &seed, &DlsOptions::default())
+            .expect("converges");
+        assert!((-1e-12..=0.6 + 1e-12).contains(&sol[1]), "{sol}");
+        let back = polar.tip_pose(&sol).translation.vector;
+        assert!((back - polar.tip_pose(&q).translation.vector).amax() < 1e-8);
+    }
+}
+
+/// A revolute arm with an elbow that bends one way only: the generated closed form keeps the
+/// branch within the range, in both entries.
+#[test]
+fn a_ranged_elbow_keeps_one_branch() {
+    #[derive(PlanarArm, Default)]
+    struct Elbow {
+        #[arm(length = 0.5, mass = 1)]
+        upper: Revolute,
+        #[arm(length = 0.4, mass = 1, range = (0, 3))]
+        fore: Revolute,
+    }
+    let arm = Elbow::default();
+    let mut rng = Rng(23);
+    for _ in 0..500 {
+        let q = Vector2::new(rng.range(-3.0, 3.0), rng.range(0.05, 2.95));
+        let tip = Point2::from(arm.tip_pose(&q).translation.vector);
+        let [a, b] = arm.inverse_kinematics(&tip).expect("reachable");
+        assert_eq!(a, b);
+        assert!((a - q).amax() < 1e-9, "{a} vs {q}");
+    }
+}

@@ -717,10 +717,14 @@ pub fn closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
     if !d.arm.all_revolute() {
         return mixed_closed_forms(d, header);
     }
+    let ranged = d.arm.links.iter().any(|l| l.range.is_some());
+    let ranges = range_tokens(d);
     match lengths.as_slice() {
         [l1, l2] => {
             let equal = d.arm.links[0].length == d.arm.links[1].length;
-            let ik = if equal {
+            let ik = if ranged {
+                quote!(::planar_arm::kinematics::ik2_in_ranges(#l1, #l2, [#(#ranges),*], #target))
+            } else if equal {
                 quote!(::planar_arm::kinematics::ik2_equal(#l1, #target))
             } else {
                 quote!(::planar_arm::kinematics::ik2(#l1, #l2, #target))
@@ -751,7 +755,13 @@ pub fn closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
                 }
             }
         }
-        [l1, l2, l3] => quote! {
+        [l1, l2, l3] => {
+            let ik3 = if ranged {
+                quote!(::planar_arm::kinematics::ik3_in_ranges(#l1, #l2, #l3, [#(#ranges),*], #target))
+            } else {
+                quote!(::planar_arm::kinematics::ik3(#l1, #l2, #l3, #target))
+            };
+            quote! {
             #[automatically_derived]
             impl #impl_generics ::planar_arm::kinematics::ClosedFormIk<3> for #ty #where_clause {
                 type Target = ::planar_arm::nalgebra::Isometry2<f64>;
@@ -760,7 +770,7 @@ pub fn closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
                 #[inline]
                 fn inverse_kinematics(&self, #target: &::planar_arm::nalgebra::Isometry2<f64>)
                     -> ::core::result::Result<[::planar_arm::nalgebra::SVector<f64, 3>; 2], ::planar_arm::ArmError> {
-                    ::planar_arm::kinematics::ik3(#l1, #l2, #l3, #target)
+                    #ik3
                 }
             }
             #[automatically_derived]
@@ -771,13 +781,60 @@ pub fn closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
                     ::planar_arm::kinematics::tip_wrench3(#l1, #l2, #l3, #q, #tau)
                 }
             }
-        },
+            }
+        }
         _ => TokenStream::new(),
     }
 }
 
-/// [`closed_forms`] of a two- or three-link arm with a prismatic joint: the statics by the
-/// generated Jacobian (`J^T w = tau`, no closed form from the paper).
+/// Each joint's range as `Option<(f64, f64)>` tokens.
+fn range_tokens<C>(d: &Derived<C>) -> Vec<TokenStream> {
+    d.arm
+        .links
+        .iter()
+        .map(|l| match &l.range {
+            Some((lo, hi)) => match (f64_tokens(lo), f64_tokens(hi)) {
+                (Ok(lo), Ok(hi)) => quote!(::core::option::Option::Some((#lo, #hi))),
+                _ => quote!(::core::option::Option::None),
+            },
+            None => quote!(::core::option::Option::None),
+        })
+        .collect()
+}
+
+/// The `ClosedFormIk` impl whose body is `solve`, for `n` joints and the target type.
+fn ik_impl(header: &Header, n: usize, doc: &str, solve: &TokenStream) -> TokenStream {
+    let Header {
+        impl_generics,
+        ty,
+        where_clause,
+        ..
+    } = header;
+    let target = local("target");
+    let nn = Literal::usize_unsuffixed(n);
+    let target_ty = if n == 2 {
+        quote!(::planar_arm::nalgebra::Point2<f64>)
+    } else {
+        quote!(::planar_arm::nalgebra::Isometry2<f64>)
+    };
+    quote! {
+        #[automatically_derived]
+        impl #impl_generics ::planar_arm::kinematics::ClosedFormIk<#nn> for #ty #where_clause {
+            type Target = #target_ty;
+            #[doc = #doc]
+            #[inline]
+            fn inverse_kinematics(&self, #target: &#target_ty)
+                -> ::core::result::Result<[::planar_arm::nalgebra::SVector<f64, #nn>; 2], ::planar_arm::ArmError> {
+                #solve
+            }
+        }
+    }
+}
+
+/// [`closed_forms`] of a two- or three-link arm with a prismatic joint: the closed-form inverse
+/// kinematics of the polar arm (RP), a slider carrying a link (PR) and a slider carrying two
+/// (PRR, for a pose), within the joints' ranges; the statics by the generated Jacobian
+/// (`J^T w = tau`).
 fn mixed_closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
     let Header {
         impl_generics,
@@ -786,12 +843,46 @@ fn mixed_closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
         ..
     } = header;
     let (q, tau) = (local("q"), local("tau"));
+    let target = local("target");
+    let lengths: Vec<TokenStream> = d
+        .arm
+        .links
+        .iter()
+        .map(|l| coefficient_tokens(&l.length).unwrap_or_else(|_| quote!(0.0)))
+        .collect();
+    let ranges = range_tokens(d);
+    let kinds: Vec<JointKind> = d.arm.links.iter().map(|l| l.joint).collect();
+    let ik = match (kinds.as_slice(), lengths.as_slice(), ranges.as_slice()) {
+        ([JointKind::Revolute, JointKind::Prismatic], [l1, l2], [r1, r2]) => ik_impl(
+            header,
+            2,
+            "The polar arm: q1 = atan2(y, x) and the slide r - l1 - l2, or the opposite direction with the slide -r - l1 - l2; the branches within the ranges (see `kinematics::ik_rp`).",
+            &quote!(::planar_arm::kinematics::ik_rp(#l1, #l2, #r1, #r2, #target)),
+        ),
+        ([JointKind::Prismatic, JointKind::Revolute], [l1, l2], [r1, r2]) => ik_impl(
+            header,
+            2,
+            "A slider carrying a link: the link's circle about the carriage meets the target's height twice; the branches within the ranges (see `kinematics::ik_pr`).",
+            &quote!(::planar_arm::kinematics::ik_pr(#l1, #l2, #r1, #r2, #target)),
+        ),
+        (
+            [JointKind::Prismatic, JointKind::Revolute, JointKind::Revolute],
+            [l1, l2, l3],
+            [r1, r2, r3],
+        ) => ik_impl(
+            header,
+            3,
+            "A slider carrying two links, for a pose: the wrist point, sin q2 from its height, two branches of cos q2, the slide from its abscissa; within the ranges (see `kinematics::ik_prr`).",
+            &quote!(::planar_arm::kinematics::ik_prr(#l1, #l2, #l3, [#r1, #r2, #r3], #target)),
+        ),
+        _ => TokenStream::new(),
+    };
     let solve = |f: TokenStream| quote!(::planar_arm::__private::#f(&::planar_arm::PlanarArm::jacobian(self, #q), #q, #tau));
     let (force, wrench) = (
         solve(quote!(tip_force_by_jacobian)),
         solve(quote!(tip_wrench_by_jacobian)),
     );
-    match d.arm.links.len() {
+    let statics = match d.arm.links.len() {
         2 => quote! {
             #[automatically_derived]
             impl #impl_generics ::planar_arm::kinematics::TipForce for #ty #where_clause {
@@ -817,7 +908,8 @@ fn mixed_closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
             }
         },
         _ => TokenStream::new(),
-    }
+    };
+    quote!(#ik #statics)
 }
 
 /// A stub `impl PlanarArm<n>` whose methods are unreachable: emitted next to a compile error
