@@ -8,6 +8,8 @@ use nalgebra::{Point2, SMatrix, SVector, Vector2 as V2, Vector3};
 
 mod cross_checks;
 mod edge_cases;
+mod prismatic;
+mod regressors;
 mod revolute;
 mod trajectories;
 

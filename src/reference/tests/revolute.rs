@@ -56,7 +56,7 @@ fn pendulum_by_hand() {
 
 /// The textbook closed form of the general two-link arm, with the centres of mass off the
 /// links' axes (`c2 = (a, b)` in link 2's frame), armature and friction.
-fn two_link_closed_form(
+pub(super) fn two_link_closed_form(
     model: &Model<2>,
     q: &V2<f64>,
     qd: &V2<f64>,
