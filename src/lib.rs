@@ -425,9 +425,10 @@ pub trait PlanarArm<const N: usize> {
     fn tip_pose(&self, q: &SVector<f64, N>) -> Isometry2<f64>;
     /// The 3 x N Jacobian: rows are d/dt of tip x, tip y and the last link's angle.
     fn jacobian<T: Real>(&self, q: &SVector<T, N>) -> SMatrix<T, 3, N>;
-    /// Position of each joint, joint 1 at the origin.
+    /// Position of each joint (each link's frame origin), joint 1 at the origin; a prismatic
+    /// joint's is its slid carriage, so a sliding joint 1 sits at `(q1, 0)`.
     fn joint_positions<T: Real>(&self, q: &SVector<T, N>) -> [Point2<T>; N];
-    /// The tip in polar form (r, theta); r depends on q2..qN only.
+    /// The tip in polar form (r, theta); r does not depend on q1 when joint 1 is revolute.
     fn tip_polar(&self, q: &SVector<f64, N>) -> (f64, f64);
     /// Motor torques that make the tip exert force `force` and torque `torque` on what it
     /// holds: tau = J^T w (gravity is separate, in [`gravity`](Self::gravity)).

@@ -69,13 +69,14 @@ pub struct Link {
     /// the square of the gear ratio, kg m^2.
     ///
     /// It is added to the mass matrix's diagonal entry of this joint, and the kinetic energy
-    /// gains `armature * qd_i^2 / 2` with `qd_i` the joint's own (relative) rate.
+    /// gains `armature * qd_i^2 / 2` with `qd_i` the joint's own (relative) rate. For a
+    /// [`Joint::Prismatic`] joint it is a reflected mass, kg.
     pub armature: f64,
     /// MuJoCo's `damping`: viscous friction, a torque `damping * qd_i` opposing the joint's
-    /// rate, N m s/rad.
+    /// rate, N m s/rad (for a prismatic joint a force, N s/m).
     pub damping: f64,
     /// MuJoCo's `frictionloss`: Coulomb (dry) friction, a torque
-    /// `frictionloss * sign(qd_i)` with `sign(0) = 0`, N m.
+    /// `frictionloss * sign(qd_i)` with `sign(0) = 0`, N m (for a prismatic joint a force, N).
     pub frictionloss: f64,
     /// The kind of the joint that drives the link. For a [`Joint::Prismatic`] joint the
     /// armature is a reflected mass (kg), the damping N s/m and the frictionloss N.
