@@ -522,8 +522,9 @@ pub trait PlanarArm<const N: usize> {
     }
 
     /// Damped-least-squares inverse kinematics on the generated Jacobian: the configuration
-    /// reached from `seed` (so the one nearest it, in practice), within the joint limits of
-    /// `options` if it has any.
+    /// reached from `seed` (so the one nearest it, in practice), within the joints' ranges
+    /// (`#[arm(range = ...)]`) and the joint limits of `options` if it has any (both, where
+    /// both are given).
     ///
     /// The target is first checked against the work-space ([`kinematics::reachable_target`]:
     /// the annulus for a position, the wrist's annulus for a pose); one within the reach

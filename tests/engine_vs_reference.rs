@@ -1,6 +1,7 @@
 //! The engine's straight-line programs (what the derive renders as Rust) against the numeric
 //! reference (recursive Newton-Euler, composite rigid body, articulated body), for arms of 1
-//! to 8 links with random rational parameters and random states.
+//! to 8 links with random rational parameters, random joint kinds (about a third prismatic)
+//! and random states.
 
 use planar_arm::nalgebra::{SVector, Vector2};
 use planar_arm::reference;
@@ -24,11 +25,12 @@ fn link() -> impl Strategy<Value = LinkSpec> {
         rational(0, 1, 16), // inertia 0 .. 1
         (-2i64..=12, 1i64..=10, -3i64..=3),
         (0i64..=4, 0i64..=4, 0i64..=4), // armature, damping, frictionloss in tenths
+        proptest::bool::weighted(0.35),
     )
-        .prop_filter("positive length and mass", |(l, m, _, _, _)| {
+        .prop_filter("positive length and mass", |(l, m, _, _, _, _)| {
             l.0 > 0 && m.0 > 0
         })
-        .prop_map(|(l, m, i, (c, cd, cy), (a, b, f))| {
+        .prop_map(|(l, m, i, (c, cd, cy), (a, b, f), prismatic)| {
             let length = ratio(l.0, l.1);
             LinkSpec {
                 // com may lie past either end of the link (a counterweight), and off its axis
@@ -40,7 +42,11 @@ fn link() -> impl Strategy<Value = LinkSpec> {
                 armature: ratio(a, 10),
                 damping: ratio(b, 10),
                 frictionloss: ratio(f, 10),
-                joint: JointKind::Revolute,
+                joint: if prismatic {
+                    JointKind::Prismatic
+                } else {
+                    JointKind::Revolute
+                },
                 range: None,
             }
         })

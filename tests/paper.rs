@@ -158,6 +158,7 @@ fn at_p(e: &Expr, qd: &[i64], qdd: &[i64]) -> Rational {
             let x = match v {
                 Var::Qd(j) => int(qd[j]),
                 Var::Qdd(j) => int(qdd[j]),
+                Var::Q(_) => panic!("the paper's arms have no prismatic joint"),
             };
             for _ in 0..power {
                 m = &m * &x;
