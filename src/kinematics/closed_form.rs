@@ -13,19 +13,24 @@ use super::REACH_TOLERANCE;
 use super::{annulus_check, check_lengths, wrap_angle};
 use crate::{ArmError, Joint};
 
-/// Closed-form inverse kinematics of a two- or three-link arm, both elbow solutions.
+/// Closed-form inverse kinematics of a two- or three-link arm, both solutions.
 ///
-/// `#[derive(PlanarArm)]` implements it for two links (`Target = Point2<f64>`, via [`ik2`] or
-/// [`ik2_equal`]) and for three links (`Target = Isometry2<f64>`, via [`ik3`]).
+/// `#[derive(PlanarArm)]` implements it for two revolute links (`Target = Point2<f64>`, via
+/// [`ik2`] or [`ik2_equal`]) and for three (`Target = Isometry2<f64>`, via [`ik3`]). The free
+/// functions for joint ranges ([`ik2_in_ranges`], [`ik3_in_ranges`]) and for prismatic joints
+/// ([`ik_rp`](super::ik_rp), [`ik_pr`](super::ik_pr) for a position,
+/// [`ik_prr`](super::ik_prr) for a pose) have the same shape, for the arms they name.
 pub trait ClosedFormIk<const N: usize> {
     /// `Point2<f64>` for two links, `Isometry2<f64>` for three.
     type Target;
-    /// Both elbow solutions: index 0 has `sin q2 >= 0`, index 1 has `sin q2 <= 0`. On the outer
-    /// or inner boundary both are the same configuration.
+    /// Both solutions, in the order the function behind it documents: for revolute links
+    /// index 0 has `sin q2 >= 0`, index 1 has `sin q2 <= 0`. On the outer or inner boundary
+    /// both are the same configuration, and when joint ranges leave one solution, both
+    /// entries hold it.
     ///
     /// # Errors
     /// [`ArmError::NonFinite`] for NaN or infinite targets, [`ArmError::Unreachable`] for
-    /// targets outside the work-space.
+    /// targets outside the work-space or its joint ranges.
     fn inverse_kinematics(&self, target: &Self::Target) -> Result<[SVector<f64, N>; 2], ArmError>;
 }
 

@@ -17,7 +17,18 @@
 //!
 //! Conventions: `q[0]` is link 1's angle from +x, `q[i]` (i > 0) is link i+1's angle relative
 //! to link i, all zeros is the arm stretched along +x, joint 1 is at the origin and the tip is
-//! at the end of the last link. Angles returned by the closed forms lie in (-pi, pi].
+//! at the end of the last link. Angles returned by the closed forms lie in (-pi, pi] unless a
+//! joint range asks for another turn.
+//!
+//! A prismatic joint ([`Joint::Prismatic`](crate::Joint)) slides its link along the previous
+//! link's direction (for the first link, +x of the base) by `q[i]` metres without turning it;
+//! its generalised force is a force, in newtons. The functions named for lengths
+//! ([`ik2`], [`ik3`], [`inverse_statics`], [`reachable_target`], [`Workspace::of_lengths`],
+//! [`DexterousWorkspace`]) are for revolute links; those that take links
+//! ([`tip_pose_of`], [`jacobian_of`], [`inverse_statics_of`], [`reachable_target_of`],
+//! [`inverse_kinematics_of`], [`Workspace::of_links`], [`sample_tips`]) take any mix of joints
+//! and their ranges, and the closed forms [`ik_rp`], [`ik_pr`] and [`ik_prr`] the arms with a
+//! prismatic joint they are named for.
 //!
 //! Nothing here panics or returns NaN. The fallible functions answer NaN or infinite
 //! arguments with [`ArmError::NonFinite`]; the infallible ones document what they make of
@@ -48,8 +59,9 @@ pub use numeric::{
 pub use prismatic::{ik_pr, ik_prr, ik_rp};
 pub use skeleton::Skeleton;
 pub use statics::{
-    inverse_statics, tip_force2, tip_wrench3, InverseStatics, RedundantTipWrench, StaticWrench,
-    TipForce, TipWrench, SINGULAR_THRESHOLD, UNBALANCED_TOLERANCE,
+    inverse_statics, inverse_statics_of, tip_force2, tip_wrench3, InverseStatics,
+    RedundantTipWrench, StaticWrench, TipForce, TipWrench, SINGULAR_THRESHOLD,
+    UNBALANCED_TOLERANCE,
 };
 pub use workspace::{DexterousWorkspace, DexterousWorkspaceExt, Workspace};
 
@@ -290,6 +302,44 @@ mod tests {
             for target in [IkTarget::Position(target), IkTarget::Pose(Isometry2::new(Vector2::new(p[0], p[1]), t[0]))] {
                 let r = reachable_target(&l, &target);
                 prop_assert!(clean(&r));
+            }
+            let ranges = [Some((t[0], t[1])), Some((p[2], t[2])), None];
+            for r in [
+                ik_rp(l[0], l[1], ranges[0], ranges[1], &target),
+                ik_pr(l[0], l[1], ranges[1], ranges[0], &target),
+                ik2_in_ranges(l[0], l[1], [ranges[0], ranges[1]], &target),
+            ] {
+                prop_assert!(clean(&r));
+                if let Ok(qs) = r {
+                    prop_assert!(qs.iter().flatten().all(|a| a.is_finite()));
+                }
+            }
+            let pose = Isometry2::new(Vector2::new(p[0], p[1]), p[2]);
+            for r in [ik_prr(l[0], l[1], l[2], ranges, &pose), ik3_in_ranges(l[0], l[1], l[2], ranges, &pose)] {
+                prop_assert!(clean(&r));
+                if let Ok(qs) = r {
+                    prop_assert!(qs.iter().flatten().all(|a| a.is_finite()));
+                }
+            }
+            let kinds = [crate::Joint::Prismatic, crate::Joint::Revolute, crate::Joint::Prismatic];
+            let links: [crate::Link; 3] = core::array::from_fn(|i| crate::Link {
+                range: ranges[i],
+                ..crate::Link::rod(l[i], 1.0).with_joint(kinds[(i + usize::from(t[0] > 0.0)) % 3])
+            });
+            let w = Workspace::of_links(&links);
+            prop_assert!(!w.inner_radius().is_nan() && !w.outer_radius().is_nan() && !w.area().is_nan());
+            let _ = w.contains(&target);
+            for w in [Workspace::of_links(&links[..2]), Workspace::of_links(&links[1..])] {
+                prop_assert!(!w.inner_radius().is_nan() && !w.outer_radius().is_nan() && !w.area().is_nan());
+                let _ = w.contains(&target);
+            }
+            let r = reachable_target_of(&links, &IkTarget::Pose(pose));
+            prop_assert!(clean(&r));
+            let r = inverse_statics_of(&links, &Vector3::from(p), &Vector3::from(t))
+                .map(|w| (w.force, w.torque, w.residual.amax()));
+            prop_assert!(clean(&r));
+            if let Ok((f, torque, residual)) = r {
+                prop_assert!(f.iter().all(|v| v.is_finite()) && torque.is_finite() && residual.is_finite());
             }
             let w = Workspace::of_lengths(&l);
             prop_assert!(!w.inner_radius().is_nan() && !w.outer_radius().is_nan() && !w.area().is_nan());

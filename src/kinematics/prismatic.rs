@@ -14,7 +14,7 @@ use num_traits::Float as _;
 use nalgebra::{Isometry2, Point2, SVector, Vector2, Vector3};
 
 use super::closed_form::target_coordinates;
-use super::range::{check_ranges, fit, fit_branches, slide_slack, Range};
+use super::range::{check_ranges, finite, fit, fit_branches, slide_slack, Range};
 use super::workspace::{polar_radii, swept_radii};
 #[cfg(doc)]
 use super::REACH_TOLERANCE;
@@ -66,7 +66,8 @@ fn shifted(l: f64, range: Range) -> (f64, f64) {
 ///
 /// # Errors
 /// [`ArmError::NonFinite`] (`"lengths"`, `"target"`, `"ranges"`) for NaN or infinite
-/// arguments (an infinite bound is allowed: no bound); [`ArmError::OutOfRange`] (`"range"`)
+/// arguments (an infinite bound is allowed: no bound), `"result"` when finite arguments
+/// overflow a joint value; [`ArmError::OutOfRange`] (`"range"`)
 /// for a range with `lower > upper`; [`ArmError::Unreachable`] when neither branch lies within
 /// the ranges, with `radius = |target|`, `inner ..= outer` the radii `|l1 + l2 + q2|` that
 /// `range2` allows (`0 ..= inf` without it) and `distance` how far the nearer branch's joint
@@ -111,6 +112,7 @@ pub fn ik_rp(
     let kinds = [Joint::Revolute, Joint::Prismatic];
     let ranges = [range1, range2];
     let slack = slide_slack(&[l1, l2], &[range2]);
+    let branches = finite(branches)?;
     fit_branches(&kinds, &ranges, slack, branches)
         .map(|b| b.map(SVector::from))
         .map_err(|excess| {
@@ -214,7 +216,7 @@ pub fn ik_pr(
         swept_radii(a, b, l2.abs(), l2.abs())
     };
     let error = |distance| excluded([x, y], None, x.hypot(y), radii(), distance);
-    let branches = slider_branches(l1, l2, x, y, range2, slack).map_err(error)?;
+    let branches = finite(slider_branches(l1, l2, x, y, range2, slack).map_err(error)?)?;
     let kinds = [Joint::Prismatic, Joint::Revolute];
     fit_branches(&kinds, &ranges, slack, branches)
         .map(|b| b.map(SVector::from))
@@ -287,7 +289,8 @@ pub fn ik_prr(
         .map_err(|d| error(radius, d))?;
     let with_hand = |[q1, q2]: [f64; 2]| [q1, q2, wrap_angle(phi - q2)];
     let kinds = [Joint::Prismatic, Joint::Revolute, Joint::Revolute];
-    fit_branches(&kinds, &ranges, slack, [with_hand(a), with_hand(b)])
+    let branches = finite([with_hand(a), with_hand(b)])?;
+    fit_branches(&kinds, &ranges, slack, branches)
         .map(|b| b.map(Vector3::from))
         .map_err(|excess| error(radius, excess))
 }

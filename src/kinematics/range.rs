@@ -52,6 +52,11 @@ pub(super) fn slide_slack(lengths: &[f64], ranges: &[Range]) -> f64 {
 /// [`REACH_TOLERANCE`] radians), else the representative nearest the range side it lies
 /// beyond, clamped into the range; its excess is the angle to the nearer end of the range.
 pub(super) fn fit(kind: Joint, value: f64, range: Range, slack: f64) -> Result<f64, f64> {
+    // Positive even when a bound near f64::MAX overflows the arithmetic below.
+    fit_unchecked(kind, value, range, slack).map_err(|e| e.max(f64::MIN_POSITIVE))
+}
+
+fn fit_unchecked(kind: Joint, value: f64, range: Range, slack: f64) -> Result<f64, f64> {
     let Some((lower, upper)) = range else {
         return Ok(value);
     };
@@ -70,6 +75,9 @@ pub(super) fn fit(kind: Joint, value: f64, range: Range, slack: f64) -> Result<f
     if value < lower {
         // The smallest representative at or above `lower`, and the one before it.
         let above = value + TAU * ((lower - value) / TAU).ceil();
+        if !above.is_finite() {
+            return Err(f64::INFINITY);
+        }
         if above <= upper + slack {
             return Ok(above.max(lower).min(upper));
         }
@@ -79,6 +87,9 @@ pub(super) fn fit(kind: Joint, value: f64, range: Range, slack: f64) -> Result<f
         Err((above - upper).min(lower - (above - TAU)))
     } else {
         let below = value - TAU * ((value - upper) / TAU).ceil();
+        if !below.is_finite() {
+            return Err(f64::INFINITY);
+        }
         if below >= lower - slack {
             return Ok(below.max(lower).min(upper));
         }
@@ -92,6 +103,15 @@ pub(super) fn fit(kind: Joint, value: f64, range: Range, slack: f64) -> Result<f
 /// Fits every joint value of each branch into its range: the branches that fit, in their
 /// order (one surviving branch fills both entries), or the smallest excess over the branches,
 /// a branch's excess being its largest.
+/// `Err(NonFinite { argument: "result" })` when finite input overflowed a joint value.
+pub(super) fn finite<const N: usize>(branches: [[f64; N]; 2]) -> Result<[[f64; N]; 2], ArmError> {
+    if branches.iter().flatten().all(|v| v.is_finite()) {
+        Ok(branches)
+    } else {
+        Err(ArmError::NonFinite { argument: "result" })
+    }
+}
+
 pub(super) fn fit_branches<const N: usize>(
     kinds: &[Joint; N],
     ranges: &[Range; N],

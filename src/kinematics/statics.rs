@@ -9,8 +9,8 @@ use nalgebra::{SVector, Vector2};
 #[cfg(not(feature = "std"))]
 use num_traits::Float as _;
 
-use super::{check_lengths, check_vector};
-use crate::ArmError;
+use super::{check_lengths, check_vector, jacobian_of};
+use crate::{ArmError, Joint, Link};
 
 /// Singularity threshold of the inverse statics: the configuration counts as singular when
 /// `|l1 l2 sin q2| < SINGULAR_THRESHOLD * |l1 l2|`, that is when `|sin q2| < SINGULAR_THRESHOLD`
@@ -223,7 +223,8 @@ pub struct StaticWrench<const N: usize> {
     pub residual: SVector<f64, N>,
 }
 
-/// Inverse statics of an arm of `N` revolute links of lengths `lengths`: the tip force
+/// Inverse statics of an arm of `N` revolute links of lengths `lengths` (for prismatic
+/// joints, see [`inverse_statics_of`]): the tip force
 /// `F = (u, v)` and torque `T` that the joint torques `tau` balance, `J^T (F, T) = tau`, in the
 /// least-squares sense.
 ///
@@ -414,15 +415,169 @@ fn redundant_statics<const N: usize>(
     })
 }
 
+/// [`inverse_statics`] for an arm of any mix of revolute and prismatic joints, from its links:
+/// the tip wrench `(F, T)` with `J^T (F, T) = tau` in the least-squares sense, and the part of
+/// `tau` it leaves unbalanced.
+///
+/// A revolute joint's generalised force is a torque, `tau_i = T + (tip - o_i) x F` (N m); a
+/// prismatic joint's is a force, `tau_i = F . u_{i-1}`, the tip force along the direction it
+/// slides (N). For revolute links this is [`inverse_statics`] of their lengths, to the bit.
+/// With a prismatic joint:
+///
+/// The equations are made dimensionless first: a hinge's row of `J^T` and its torque are
+/// divided by the arm's reach `L = sum |l_i| + sum over slides |q_i|` (the longest lever any
+/// joint has), and the tip torque is solved for as `T / L`; a slide's row stays as it is.
+///
+/// - three or more joints: the least-squares wrench of those equations (so a hinge's
+///   unbalanced torque counts as that torque over `L`, a force like a slide's), by a
+///   Gram-Schmidt QR (no normal equations, no heap); `residual` is in each joint's own unit
+///   (N m or N). Singular when the scaled `J^T`, whose entries are at most about 1, has
+///   `measure = sqrt(det)` of its Gram matrix below `threshold = SINGULAR_THRESHOLD`; an arm
+///   of sliders alone never feels a tip torque and is always singular;
+/// - two joints: no tip torque (`T = 0`, as the paper takes it for two links) and the force
+///   that balances both, singular when the scaled 2 x 2 determinant is below
+///   `SINGULAR_THRESHOLD` (for the polar arm: the tip at the base);
+/// - one prismatic joint: the force along the slide.
+///
+/// # Errors
+/// [`ArmError::NonFinite`] (`"lengths"`, `"q"`, `"tau"`, or `"result"` on overflow);
+/// [`ArmError::Singular`] as above.
+///
+/// # Example
+/// ```
+/// use planar_arm::kinematics::inverse_statics_of;
+/// use planar_arm::nalgebra::Vector2;
+/// use planar_arm::{Joint, Link};
+///
+/// // The polar arm pointing along +y, the slide 0.3 m out: the tip 1 m from the base.
+/// let polar = [Link::rod(0.2, 1.0), Link::rod(0.5, 1.0).with_joint(Joint::Prismatic)];
+/// let q = Vector2::new(std::f64::consts::FRAC_PI_2, 0.3);
+/// // 2 N m at the hinge and 5 N on the slide: a force of 2 N across the arm, 5 N along it.
+/// let w = inverse_statics_of(&polar, &q, &Vector2::new(2.0, 5.0)).unwrap();
+/// assert!((w.force - Vector2::new(-2.0, 5.0)).norm() < 1e-12 && w.torque == 0.0);
+/// ```
+pub fn inverse_statics_of<const N: usize>(
+    links: &[Link; N],
+    q: &SVector<f64, N>,
+    tau: &SVector<f64, N>,
+) -> Result<StaticWrench<N>, ArmError> {
+    let lengths = links.map(|l| l.length);
+    if links.iter().all(|l| l.joint == Joint::Revolute) {
+        return inverse_statics(&lengths, q, tau);
+    }
+    check_lengths(&lengths)?;
+    check_vector(q, "q")?;
+    check_vector(tau, "tau")?;
+    let j = jacobian_of(links, q);
+    finite_result(j.iter().copied())?;
+    // The largest lever any joint can have: the links and the slides.
+    let reach: f64 = links
+        .iter()
+        .zip(q.iter())
+        .map(|(l, qi)| {
+            l.length.abs()
+                + if l.joint == Joint::Prismatic {
+                    qi.abs()
+                } else {
+                    0.0
+                }
+        })
+        .sum();
+    let singular = |measure: f64| ArmError::Singular {
+        measure: if measure.is_nan() { 0.0 } else { measure },
+        threshold: SINGULAR_THRESHOLD,
+    };
+    if reach == 0.0 {
+        return Err(singular(0.0));
+    }
+    // Dimensionless rows: a hinge's (-(dy), dx, 1) divided by the reach (its torque by it too,
+    // the tip torque taken per unit reach), a slide's (ux, uy, 0) as it is.
+    let revolute = |i: usize| links[i].joint == Joint::Revolute;
+    let row_scale = |i: usize| if revolute(i) { 1.0 / reach } else { 1.0 };
+    let scale = tau.amax();
+    let t = SVector::<f64, N>::from_fn(|i, _| {
+        let ti = if scale > 0.0 { tau[i] / scale } else { tau[i] };
+        ti * row_scale(i)
+    });
+    let entry = |i: usize, k: usize| {
+        if k < 2 {
+            j[(k, i)] * row_scale(i)
+        } else {
+            j[(2, i)]
+        }
+    };
+    let none = SVector::<f64, N>::zeros();
+    let (force, torque, residual) = match N {
+        0 => (Vector2::zeros(), 0.0, none),
+        1 => (Vector2::new(j[(0, 0)], j[(1, 0)]) * t[0], 0.0, none),
+        2 => {
+            let (a, b, c, d) = (entry(0, 0), entry(0, 1), entry(1, 0), entry(1, 1));
+            let det = a * d - b * c;
+            if det.is_nan() || det.abs() < SINGULAR_THRESHOLD {
+                return Err(singular(det));
+            }
+            // (a, b) . F = t0, (c, d) . F = t1.
+            let force = Vector2::new(d * t[0] - b * t[1], a * t[1] - c * t[0]) / det;
+            (force, 0.0, none)
+        }
+        _ => {
+            let columns: [SVector<f64, N>; 3] =
+                core::array::from_fn(|k| SVector::from_fn(|i, _| entry(i, k)));
+            let r11 = columns[0].norm();
+            let q1 = columns[0] / r11;
+            let r12 = q1.dot(&columns[1]);
+            let r13 = q1.dot(&columns[2]);
+            let a2 = columns[1] - q1 * r12;
+            let r22 = a2.norm();
+            let q2 = a2 / r22;
+            let a3 = columns[2] - q1 * r13;
+            let r23 = q2.dot(&a3);
+            let a3 = a3 - q2 * r23;
+            let r33 = a3.norm();
+            let q3 = a3 / r33;
+            let measure = r11 * r22 * r33;
+            if measure.is_nan() || measure < SINGULAR_THRESHOLD {
+                return Err(singular(measure));
+            }
+            let mut y = t;
+            let b1 = q1.dot(&y);
+            y -= q1 * b1;
+            let b2 = q2.dot(&y);
+            y -= q2 * b2;
+            let b3 = q3.dot(&y);
+            y -= q3 * b3;
+            let torque = b3 / r33 * reach;
+            let fy = (b2 - r23 * (b3 / r33)) / r22;
+            let fx = (b1 - r12 * fy - r13 * (b3 / r33)) / r11;
+            let residual = SVector::<f64, N>::from_fn(|i, _| y[i] / row_scale(i));
+            (Vector2::new(fx, fy), torque, residual)
+        }
+    };
+    let (force, torque, residual) = (force * scale, torque * scale, residual * scale);
+    if force.iter().chain([torque].iter()).any(|x| x.is_nan()) {
+        return Err(ArmError::Singular {
+            measure: 0.0,
+            threshold: 0.0,
+        });
+    }
+    finite_result(force.iter().chain(residual.iter()).copied().chain([torque]))?;
+    Ok(StaticWrench {
+        force,
+        torque,
+        residual,
+    })
+}
+
 /// Inverse statics for every arm, from its run-time link lengths: implemented for every
 /// [`PlanarArm<N>`](crate::PlanarArm).
 pub trait InverseStatics<const N: usize> {
-    /// The least-squares tip wrench with the torques it leaves unbalanced: [`inverse_statics`]
-    /// with the lengths of [`links`](crate::PlanarArm::links) (so run-time lengths are read
-    /// at the call).
+    /// The least-squares tip wrench with the torques it leaves unbalanced:
+    /// [`inverse_statics_of`] the arm's [`links`](crate::PlanarArm::links) (so run-time
+    /// lengths are read at the call, and prismatic joints, whose generalised force is a force
+    /// in newtons, count as such); for revolute links, [`inverse_statics`] of their lengths.
     ///
     /// # Errors
-    /// As [`inverse_statics`].
+    /// As [`inverse_statics_of`].
     ///
     /// # Example
     /// ```
@@ -456,7 +611,7 @@ impl<A: crate::PlanarArm<N> + ?Sized, const N: usize> InverseStatics<N> for A {
         q: &SVector<f64, N>,
         tau: &SVector<f64, N>,
     ) -> Result<StaticWrench<N>, ArmError> {
-        inverse_statics(&self.links().map(|l| l.length), q, tau)
+        inverse_statics_of(&self.links(), q, tau)
     }
 }
 
@@ -470,7 +625,8 @@ pub trait RedundantTipWrench<const N: usize> {
     /// The force `F` and torque `T` with `J^T (F, T) = tau`.
     ///
     /// With more joints than the three components of a wrench, only torques in the range of
-    /// `J^T` come from a tip wrench: this returns [`inverse_statics`]'s least-squares wrench
+    /// `J^T` come from a tip wrench: this returns [`inverse_statics_of`]'s least-squares wrench
+    /// (for an arm with prismatic joints, whose generalised forces are forces, in newtons)
     /// when the torques it leaves unbalanced have norm at most
     /// `UNBALANCED_TOLERANCE * |tau|` (rounding), and an error otherwise. For the best wrench
     /// whatever the residual (torques measured with noise), use
@@ -511,13 +667,13 @@ pub trait RedundantTipWrench<const N: usize> {
     ) -> Result<(Vector2<f64>, f64), ArmError>;
 }
 
-/// [`RedundantTipWrench::tip_wrench`] for lengths.
+/// [`RedundantTipWrench::tip_wrench`] for links.
 fn balanced_wrench<const N: usize>(
-    lengths: &[f64; N],
+    links: &[Link; N],
     q: &SVector<f64, N>,
     tau: &SVector<f64, N>,
 ) -> Result<(Vector2<f64>, f64), ArmError> {
-    let w = inverse_statics(lengths, q, tau)?;
+    let w = inverse_statics_of(links, q, tau)?;
     let (residual, tolerance) = (w.residual.norm(), UNBALANCED_TOLERANCE * tau.norm());
     if residual > tolerance {
         return Err(ArmError::Unbalanced {
@@ -536,7 +692,7 @@ macro_rules! redundant_tip_wrench {
                 q: &SVector<f64, $n>,
                 tau: &SVector<f64, $n>,
             ) -> Result<(Vector2<f64>, f64), ArmError> {
-                balanced_wrench(&self.links().map(|l| l.length), q, tau)
+                balanced_wrench(&self.links(), q, tau)
             }
         }
     )*};
@@ -550,7 +706,7 @@ redundant_tip_wrench!(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::kinematics::test_support::{jacobian, Rng, PAIRS, TRIPLES};
+    use crate::kinematics::test_support::{fk_joints, jacobian, Rng, PAIRS, TRIPLES};
     use core::f64::consts::{PI, TAU};
     use nalgebra::{Matrix2, Matrix3, Vector3};
 
@@ -689,6 +845,141 @@ mod tests {
             ) / det;
             assert!((printed2 * forward2 - Matrix2::identity()).norm() < 1e-9);
         }
+    }
+
+    /// `J^T (F, T)` with `J` from central differences of the independent forward kinematics.
+    fn generalised_forces<const N: usize>(
+        kinds: &[Joint; N],
+        lengths: &[f64; N],
+        q: &SVector<f64, N>,
+        w: Vector3<f64>,
+    ) -> SVector<f64, N> {
+        SVector::from_fn(|i, _| {
+            let h = 1e-6;
+            let (mut qp, mut qm) = (*q, *q);
+            qp[i] += h;
+            qm[i] -= h;
+            let (xp, yp, pp) = fk_joints(kinds, lengths, qp.as_slice());
+            let (xm, ym, pm) = fk_joints(kinds, lengths, qm.as_slice());
+            Vector3::new(xp - xm, yp - ym, pp - pm).dot(&w) / (2.0 * h)
+        })
+    }
+
+    fn mixed_case<const N: usize>(kinds: [Joint; N], lengths: [f64; N], rng: &mut Rng) {
+        let links: [Link; N] =
+            core::array::from_fn(|i| Link::rod(lengths[i], 1.0).with_joint(kinds[i]));
+        let mut solved = 0;
+        for _ in 0..500 {
+            let q = SVector::<f64, N>::from_fn(|_, _| rng.range(-2.0, 2.0));
+            let f = random_force(rng);
+            let t = if N >= 3 { rng.range(-3.0, 3.0) } else { 0.0 };
+            let tau = generalised_forces(&kinds, &lengths, &q, Vector3::new(f.x, f.y, t));
+            match inverse_statics_of(&links, &q, &tau) {
+                Ok(w) => {
+                    solved += 1;
+                    let scale = tau.norm().max(1.0);
+                    let again = generalised_forces(
+                        &kinds,
+                        &lengths,
+                        &q,
+                        Vector3::new(w.force.x, w.force.y, w.torque),
+                    );
+                    assert!((again - tau).norm() < 1e-6 * scale);
+                    // One slide determines only the force along it.
+                    let expected = if N == 1 { Vector2::new(f.x, 0.0) } else { f };
+                    assert!(
+                        (w.force - expected).norm() < 1e-6 * scale,
+                        "{kinds:?}: {f} came back as {}",
+                        w.force
+                    );
+                    assert!((w.torque - t).abs() < 1e-6 * scale);
+                    assert!(w.residual.norm() < 1e-6 * scale);
+                    if N > 3 {
+                        // Torques from no wrench: the residual is what J^T w cannot explain.
+                        let noise = SVector::<f64, N>::from_fn(|_, _| rng.range(-1.0, 1.0));
+                        let w = inverse_statics_of(&links, &q, &noise).unwrap();
+                        let j = jacobian_of(&links, &q);
+                        // Orthogonal to the range of J^T in the metric of the scaled rows:
+                        // a hinge's by the reach squared.
+                        let reach: f64 = (0..N)
+                            .map(|i| {
+                                lengths[i].abs()
+                                    + if kinds[i] == Joint::Prismatic {
+                                        q[i].abs()
+                                    } else {
+                                        0.0
+                                    }
+                            })
+                            .sum();
+                        let weighted = SVector::<f64, N>::from_fn(|i, _| {
+                            w.residual[i]
+                                / if kinds[i] == Joint::Revolute {
+                                    reach * reach
+                                } else {
+                                    1.0
+                                }
+                        });
+                        assert!((j * weighted).norm() < 1e-9, "residual not orthogonal");
+                        let explained =
+                            j.transpose() * Vector3::new(w.force.x, w.force.y, w.torque);
+                        assert!((explained + w.residual - noise).norm() < 1e-9);
+                    }
+                }
+                Err(ArmError::Singular { .. }) => {}
+                Err(e) => panic!("{e:?}"),
+            }
+        }
+        assert!(solved > 450, "{kinds:?}: {solved} of 500");
+    }
+
+    #[test]
+    fn inverse_statics_of_any_mix_inverts_the_transposed_jacobian() {
+        let mut rng = Rng(30);
+        let (r, p) = (Joint::Revolute, Joint::Prismatic);
+        mixed_case([p], [0.5], &mut rng);
+        mixed_case([r, p], [0.2, 0.5], &mut rng);
+        mixed_case([p, r], [0.3, 0.5], &mut rng);
+        mixed_case([p, r, r], [0.2, 0.6, 0.3], &mut rng);
+        mixed_case([r, p, r], [0.4, 0.5, 0.3], &mut rng);
+        mixed_case([r, p, r, p], [0.4, 1.0, 0.3, 0.2], &mut rng);
+        mixed_case([p, r, r, r, r], [0.2, 0.5, 0.4, 0.3, 0.2], &mut rng);
+        // Revolute links: exactly inverse_statics.
+        let links = [
+            Link::rod(1.0, 1.0),
+            Link::rod(0.5, 1.0),
+            Link::rod(0.25, 1.0),
+            Link::rod(0.5, 1.0),
+        ];
+        let q = SVector::<f64, 4>::new(0.3, 0.9, -0.4, 1.1);
+        let tau = SVector::<f64, 4>::new(1.0, -0.5, 0.25, 2.0);
+        assert_eq!(
+            inverse_statics_of(&links, &q, &tau),
+            inverse_statics(&[1.0, 0.5, 0.25, 0.5], &q, &tau)
+        );
+        // The polar arm with its tip at the base: no force balances the hinge.
+        let polar = [Link::rod(0.2, 1.0), Link::rod(0.5, 1.0).with_joint(p)];
+        assert!(matches!(
+            inverse_statics_of(&polar, &Vector2::new(0.3, -0.7), &Vector2::new(1.0, 1.0)),
+            Err(ArmError::Singular { .. })
+        ));
+        // Sliders alone feel no tip torque.
+        let sliders = [
+            Link::rod(0.2, 1.0).with_joint(p),
+            Link::rod(0.2, 1.0).with_joint(p),
+            Link::rod(0.2, 1.0).with_joint(p),
+        ];
+        assert!(matches!(
+            inverse_statics_of(
+                &sliders,
+                &Vector3::new(0.1, 0.2, 0.3),
+                &Vector3::new(1.0, 1.0, 1.0)
+            ),
+            Err(ArmError::Singular { .. })
+        ));
+        assert_eq!(
+            inverse_statics_of(&polar, &Vector2::new(f64::NAN, 0.0), &Vector2::zeros()),
+            Err(ArmError::NonFinite { argument: "q" })
+        );
     }
 
     #[test]

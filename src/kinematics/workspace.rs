@@ -353,16 +353,16 @@ impl Workspace {
                 inner,
                 outer,
                 ..
-            } => swept_area(from, to, inner, outer),
+            } => overflowed(swept_area(from, to, inner, outer)),
             Region::Polar {
                 l1,
                 l2,
                 range1,
                 range2,
-            } => polar_area(l1 + l2, range1, range2),
+            } => overflowed(polar_area(l1 + l2, range1, range2)),
             Region::Slider {
                 l2, range1, range2, ..
-            } => slider_area(l2, range1, range2),
+            } => overflowed(slider_area(l2, range1, range2)),
             Region::Bounds => annulus_area(self.inner, self.outer),
         }
     }
@@ -373,6 +373,15 @@ fn unreachable_distance(error: Option<crate::ArmError>) -> f64 {
     match error {
         Some(crate::ArmError::Unreachable { distance, .. }) => distance,
         _ => f64::INFINITY,
+    }
+}
+
+/// An area whose terms overflowed (`inf - inf`) is beyond `f64::MAX`: infinity, not NaN.
+fn overflowed(area: f64) -> f64 {
+    if area.is_nan() {
+        f64::INFINITY
+    } else {
+        area.max(0.0)
     }
 }
 
@@ -629,13 +638,7 @@ impl DexterousWorkspace {
     #[must_use]
     pub fn of_lengths(l1: f64, l2: f64, l3: f64) -> Self {
         if !(l1.is_finite() && l2.is_finite() && l3.is_finite()) {
-            return Self {
-                inner2: 0.0,
-                outer2: 0.0,
-                last: f64::INFINITY,
-                disk: None,
-                annulus: None,
-            };
+            return Self::empty();
         }
         let (a1, a2, c) = (l1.abs(), l2.abs(), l3.abs());
         let (a, b) = ((a1 - a2).abs(), a1 + a2);
@@ -653,6 +656,17 @@ impl DexterousWorkspace {
             last: c,
             disk,
             annulus,
+        }
+    }
+
+    /// The region that holds no point.
+    fn empty() -> Self {
+        Self {
+            inner2: 0.0,
+            outer2: 0.0,
+            last: f64::INFINITY,
+            disk: None,
+            annulus: None,
         }
     }
 
@@ -705,6 +719,12 @@ pub trait DexterousWorkspaceExt {
     /// [`DexterousWorkspace::of_lengths`] of the lengths in
     /// [`links`](crate::PlanarArm::links), read at the call (run-time lengths included).
     ///
+    /// That is the region of three revolute joints without ranges (a range of a full turn or
+    /// more counts as none). For an arm with a prismatic joint, or a revolute range of less
+    /// than a turn, this does not compute the region and returns the empty one instead
+    /// ([`is_empty`](DexterousWorkspace::is_empty)): it never claims a point that the arm
+    /// cannot reach with every orientation.
+    ///
     /// # Example
     /// ```
     /// use planar_arm::kinematics::DexterousWorkspaceExt;
@@ -722,13 +742,30 @@ pub trait DexterousWorkspaceExt {
     /// arm.l2 = 0.5;
     /// let (inner, outer) = arm.dexterous_workspace().annulus().unwrap(); // l3 < |l1 - l2|
     /// assert!((inner - 0.75).abs() < 1e-15 && (outer - 1.25).abs() < 1e-15);
+    ///
+    /// // A slider carrying two links: not computed, so empty.
+    /// #[derive(PlanarArm)]
+    /// struct Slider {
+    ///     #[arm(length = 0.2, mass = 1, range = (-0.5, 0.5))] carriage: Prismatic,
+    ///     #[arm(length = 1, mass = 1)] fore: Revolute,
+    ///     #[arm(length = 0.25, mass = 1)] hand: Revolute,
+    /// }
+    /// let slider = Slider { carriage: Prismatic, fore: Revolute, hand: Revolute };
+    /// assert!(slider.dexterous_workspace().is_empty());
     /// ```
     fn dexterous_workspace(&self) -> DexterousWorkspace;
 }
 
 impl<A: crate::PlanarArm<3> + ?Sized> DexterousWorkspaceExt for A {
     fn dexterous_workspace(&self) -> DexterousWorkspace {
-        let [l1, l2, l3] = self.links().map(|l| l.length);
+        let links = self.links();
+        if !links
+            .iter()
+            .all(|l| l.joint == Joint::Revolute && free_turn(l))
+        {
+            return DexterousWorkspace::empty();
+        }
+        let [l1, l2, l3] = links.map(|l| l.length);
         DexterousWorkspace::of_lengths(l1, l2, l3)
     }
 }
