@@ -18,7 +18,7 @@ type Plain = (
     (i128, i128),
     u8,
     Vec<i32>,
-    Vec<(bool, usize, u32)>,
+    Vec<(u8, usize, u32)>,
     Vec<(String, u32)>,
 );
 
@@ -34,8 +34,9 @@ fn engine_terms<C: Emit>(e: &Expr<C>) -> Vec<Plain> {
             let powers = m
                 .powers()
                 .map(|(v, e)| match v {
-                    Var::Qd(j) => (false, j, e),
-                    Var::Qdd(j) => (true, j, e),
+                    Var::Qd(j) => (0, j, e),
+                    Var::Qdd(j) => (1, j, e),
+                    Var::Q(j) => (2, j, e),
                 })
                 .collect();
             let params = pm
@@ -61,8 +62,9 @@ fn decoded_terms(t: Terms) -> Vec<Plain> {
                 .powers
                 .into_iter()
                 .map(|(v, e)| match v {
-                    ExactVar::Qd(j) => (false, j, e),
-                    ExactVar::Qdd(j) => (true, j, e),
+                    ExactVar::Qd(j) => (0, j, e),
+                    ExactVar::Qdd(j) => (1, j, e),
+                    ExactVar::Q(j) => (2, j, e),
                 })
                 .collect();
             let params = t
@@ -106,7 +108,12 @@ fn random_arm(rng: &mut Rng, n: usize) -> ArmSpec {
             armature: ratio(r(0, 3), 10),
             damping: ratio(0, 1),
             frictionloss: ratio(0, 1),
-            joint: JointKind::Revolute,
+            // About a third prismatic: their displacements are the third kind of variable.
+            joint: if r(0, 2) == 0 {
+                JointKind::Prismatic
+            } else {
+                JointKind::Revolute
+            },
             range: None,
         })
         .collect();
@@ -235,6 +242,21 @@ fn exact_data_gives_the_methods_numbers() {
     };
     check_numbers(&arm, &param, &mut rng);
     let _ = SVector::<f64, 2>::zeros();
+    // A prismatic joint's displacement is a polynomial variable of the exact data.
+    check_numbers(&Slider::default(), &|_| f64::NAN, &mut rng);
+    let m11 = <Slider as PlanarArm<3>>::EXACT.mass_matrix[0][0].to_string();
+    assert!(m11.contains("q2^2"), "{m11}");
+}
+
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81, payload = 0.3)]
+struct Slider {
+    #[arm(length = 0.3, mass = 2)]
+    turret: Revolute,
+    #[arm(length = 0.5, mass = 1, com = (0.2, 0.02), armature = 0.1)]
+    boom: Prismatic,
+    #[arm(length = 0.2, mass = 0.4)]
+    wrist: Revolute,
 }
 
 #[test]
