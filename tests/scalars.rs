@@ -26,6 +26,19 @@ struct Paper3 {
     c: Revolute,
 }
 
+/// A turret, a telescoping boom and a wrist: a prismatic joint's displacement is a polynomial
+/// variable of the generated code, in every scalar.
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81, payload = 0.2)]
+struct Telescope {
+    #[arm(length = 0.3, mass = 2, armature = 0.02)]
+    a: Revolute,
+    #[arm(length = 0.5, mass = 1, com = (0.2, 0.02), damping = 0.3, frictionloss = 0.1)]
+    b: Prismatic,
+    #[arm(length = 0.2, mass = 0.4)]
+    c: Revolute,
+}
+
 #[allow(clippy::cast_possible_truncation)]
 fn to32<const R: usize, const C: usize>(m: &SMatrix<f64, R, C>) -> SMatrix<f32, R, C> {
     m.map(|x| x as f32)
@@ -88,6 +101,7 @@ fn f32_agrees_with_f64_within_a_bound_from_f32_precision() {
     }
     all.push(worst(&Paper3::default(), &mut rng));
     all.push(worst(&Eight::default(), &mut rng));
+    all.push(worst(&Telescope::default(), &mut rng));
     println!(
         "worst relative f32 error per arm: {:?}",
         all.iter().map(|w| format!("{w:.2e}")).collect::<Vec<_>>()
@@ -207,6 +221,8 @@ fn every_lane_of_a_batch_is_the_scalar_result_bit_for_bit() {
     lanes_equal_scalars::<_, WideF32x4, 2>(&scara, &mut rng);
     lanes_equal_scalars::<_, WideF32x8, 2>(&scara, &mut rng);
     lanes_equal_scalars::<_, WideF64x4, 3>(&Paper3::default(), &mut rng);
+    lanes_equal_scalars::<_, WideF64x4, 3>(&Telescope::default(), &mut rng);
+    lanes_equal_scalars::<_, WideF32x8, 3>(&Telescope::default(), &mut rng);
     lanes_equal_scalars::<_, WideF64x4, 8>(&Eight::default(), &mut rng);
     lanes_equal_scalars::<_, WideF32x8, 8>(&Eight::default(), &mut rng);
 }

@@ -543,6 +543,27 @@ Cost: 36 multiplications, 18 additions, 2 divisions, 1 sin_cos pairs.*/
     type __Frozen = ::planar_arm::__private::Block<0>;
 }
 #[automatically_derived]
+impl ::planar_arm::kinematics::ClosedFormIk<2> for Polar {
+    type Target = ::planar_arm::nalgebra::Point2<::core::primitive::f64>;
+    ///The polar arm: q1 = atan2(y, x) and the slide r - l1 - l2, or the opposite direction with the slide -r - l1 - l2; the branches within the ranges (see `kinematics::ik_rp`).
+    #[inline]
+    fn inverse_kinematics(
+        &self,
+        __target: &::planar_arm::nalgebra::Point2<::core::primitive::f64>,
+    ) -> ::core::result::Result<
+        [::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>; 2],
+        ::planar_arm::ArmError,
+    > {
+        ::planar_arm::kinematics::ik_rp(
+            (1.0 / 5.0),
+            (1.0 / 2.0),
+            ::core::option::Option::None,
+            ::core::option::Option::Some((0.0, (3.0 / 5.0))),
+            __target,
+        )
+    }
+}
+#[automatically_derived]
 impl ::planar_arm::kinematics::TipForce for Polar {
     /// By the generated Jacobian: `J^T F = tau`, a prismatic joint's entry of
     /// `tau` a force along it.
