@@ -54,6 +54,7 @@ pub use mechanics::{ArmSpec, Body, Dynamics, JointKind, Kinematics, LinkSpec, Pa
 pub use poly::{Param, Poly};
 pub use ring::{Coefficient, Rational};
 pub use trig::{Angle, Trig};
+pub mod closed_forms;
 pub mod compact;
 pub mod derivative;
 pub mod emit;

@@ -1,0 +1,262 @@
+//! Tests of the Lagrangian derivation: M, c, C and g against Lagrange's equation expanded, the
+//! Christoffel symbols summed one by one, the squared velocities, and closed forms by hand.
+
+use super::*;
+use crate::trig::Trig;
+
+fn c(k: &[i32]) -> Trig {
+    Trig::Cos(Angle::new(k.to_vec()))
+}
+
+#[test]
+fn two_equal_links_mass_matrix() {
+    let d = Dynamics::derive(&ArmSpec::paper(2));
+    // M = m l^2 [[5/3 + c2, 1/3 + c2/2], [1/3 + c2/2, 1/3]]
+    assert_eq!(d.mass_matrix[0][0].constant_term(), Some(&ratio(5, 3)));
+    assert_eq!(d.mass_matrix[0][0].coefficient(&c(&[0, 1])), Some(&int(1)));
+    assert_eq!(d.mass_matrix[0][1].constant_term(), Some(&ratio(1, 3)));
+    assert_eq!(
+        d.mass_matrix[0][1].coefficient(&c(&[0, 1])),
+        Some(&ratio(1, 2))
+    );
+    assert_eq!(d.mass_matrix[1][1], Expr::constant(ratio(1, 3)));
+    assert_eq!(d.mass_matrix[0][1], d.mass_matrix[1][0]);
+}
+
+/// Joint kinds from the bits of `pattern` (bit `i` set: joint `i` prismatic).
+fn with_joints<C>(mut arm: ArmSpec<C>, pattern: u32) -> ArmSpec<C> {
+    for (i, l) in arm.links.iter_mut().enumerate() {
+        if pattern >> i & 1 == 1 {
+            l.joint = JointKind::Prismatic;
+        }
+    }
+    arm
+}
+
+#[test]
+fn mass_matrix_two_ways_agree_and_c_is_christoffel() {
+    for (n, pattern) in (1..=4).flat_map(|n| (0..1u32 << n).map(move |p| (n, p))) {
+        let mut arm = ArmSpec::paper(n);
+        arm.gravity = ratio(981, 100);
+        for (i, l) in arm.links.iter_mut().enumerate() {
+            *l = LinkSpec {
+                length: ratio(i as i64 + 2, 3),
+                mass: ratio(2 * i as i64 + 1, 2),
+                inertia: ratio(1, i as i64 + 5),
+                com: (ratio(1, i as i64 + 2), ratio(1 - i as i64, 7)),
+                armature: ratio(i as i64, 10),
+                ..LinkSpec::rod(int(1), int(1))
+            };
+        }
+        let arm = with_joints(arm, pattern);
+        let d = Dynamics::derive(&arm);
+        assert_eq!(d.mass_matrix, d.mass_matrix_from_lagrange(), "n = {n}");
+        assert_eq!(d.coriolis_matrix, christoffel(&d.mass_matrix), "n = {n}");
+        assert_eq!(d.torques, d.lagrange_torques(), "n = {n}");
+        for i in 0..n {
+            let mut cqd = Expr::zero();
+            for j in 0..n {
+                cqd = cqd.add(&d.coriolis_matrix[i][j].mul(&Expr::var(Var::Qd(j))));
+            }
+            assert_eq!(cqd, d.coriolis[i], "n = {n}, row {i}");
+            // g = dV/dq
+            assert_eq!(d.gravity[i], d.potential_energy.diff_q(i));
+        }
+    }
+}
+
+/// `C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k`.
+fn christoffel<C: Coefficient>(m: &[Vec<Expr<C>>]) -> Vec<Vec<Expr<C>>> {
+    let n = m.len();
+    let half = ratio(1, 2);
+    // Every dM_ab/dq_k once (M is symmetric): the sum below reads each of them three times.
+    let dm: Vec<Vec<Vec<Expr<C>>>> = (0..n)
+        .map(|a| {
+            (0..n)
+                .map(|b| {
+                    if b < a {
+                        Vec::new()
+                    } else {
+                        (0..n).map(|k| m[a][b].diff_q(k)).collect()
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    let d = |a: usize, b: usize, k: usize| &dm[a.min(b)][a.max(b)][k];
+    (0..n)
+        .map(|i| {
+            (0..n)
+                .map(|j| {
+                    // Twice C_ij, halved once at the end.
+                    let mut c = Expr::zero();
+                    for k in 0..n {
+                        let mut gamma = d(i, j, k).clone();
+                        gamma.add_assign(d(i, k, j));
+                        let gamma = gamma.sub(d(j, k, i));
+                        c.add_assign(&gamma.mul_var(rate(k)));
+                    }
+                    c.scale(&half)
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// The kinetic energy the long way: the centres' velocities by the chain rule on their
+/// positions, squared and summed, plus the rotations and rotors.
+fn kinetic_energy_by_velocities<C: Coefficient>(arm: &ArmSpec<C>) -> Expr<C> {
+    let n = arm.links.len();
+    let half = ratio(1, 2);
+    let mut kinetic = Expr::zero();
+    for (i, at, mass, inertia) in bodies(arm) {
+        let (x, y) = point_on_link(arm, i, &at);
+        let (vx, vy) = (x.dt(n), y.dt(n));
+        let v2 = vx.mul(&vx).add(&vy.mul(&vy));
+        kinetic.add_assign(&v2.scale_by(mass).scale(&half));
+        let mut w = Expr::zero();
+        for j in 0..=i {
+            if arm.links[j].joint == JointKind::Revolute {
+                w = w.add(&Expr::var(rate(j)));
+            }
+        }
+        kinetic.add_assign(&w.mul(&w).scale_by(inertia).scale(&half));
+    }
+    for (i, link) in arm.links.iter().enumerate() {
+        let qd = Expr::var(rate(i));
+        kinetic.add_assign(&qd.mul(&qd).scale_by(&link.armature).scale(&half));
+    }
+    kinetic
+}
+
+#[test]
+fn kinetic_energy_of_any_joints_is_the_squared_velocities() {
+    for (n, pattern) in (1..=4).flat_map(|n| (0..1u32 << n).map(move |p| (n, p))) {
+        let mut arm = ArmSpec::paper(n);
+        for (i, l) in arm.links.iter_mut().enumerate() {
+            let i = i as i64;
+            *l = LinkSpec {
+                length: ratio(i + 2, 3),
+                mass: ratio(2 * i + 1, 2),
+                inertia: ratio(1, i + 5),
+                com: (ratio(1 - i, i + 2), ratio(1 - i, 7)),
+                armature: ratio(i, 10),
+                ..LinkSpec::rod(int(1), int(1))
+            };
+        }
+        arm.payload = Some(PayloadSpec {
+            mass: ratio(3, 4),
+            inertia: ratio(1, 9),
+            com: (ratio(1, 5), ratio(-2, 7)),
+        });
+        let arm = with_joints(arm, pattern);
+        let bodies = standard_bodies(&arm);
+        let by_velocities = kinetic_energy_by_velocities(&arm);
+        assert_eq!(
+            kinetic_energy_of_velocities(&arm, &bodies),
+            by_velocities,
+            "n = {n}, joints {pattern:b}"
+        );
+        if pattern == 0 {
+            let pairwise = kinetic_energy(&arm, &bodies, &mut RateProducts::new());
+            assert_eq!(pairwise, by_velocities, "n = {n}");
+        }
+    }
+}
+
+/// The polar arm (revolute, then prismatic) by hand: with `r = l1 + q2 + c2` the distance
+/// of the boom's centre from the axis, `T = (I1 + m1 c1^2 + I2 + m2 r^2) qd1^2 / 2 + m2
+/// qd2^2 / 2` (the boom's centre moves radially at `qd2`, tangentially at `r qd1`), and
+/// `V = g (m1 c1 + m2 r) sin q1`.
+#[test]
+fn polar_arm_by_hand() {
+    let (l1, c1, m1, i1) = (ratio(1, 5), ratio(1, 10), int(3), ratio(1, 100));
+    let (c2, m2, i2) = (ratio(1, 4), ratio(3, 2), ratio(1, 32));
+    let g = ratio(981, 100);
+    let arm = ArmSpec {
+        links: vec![
+            LinkSpec {
+                inertia: i1.clone(),
+                com: (c1.clone(), int(0)),
+                ..LinkSpec::rod(l1.clone(), m1.clone())
+            },
+            LinkSpec {
+                inertia: i2.clone(),
+                com: (c2.clone(), int(0)),
+                joint: JointKind::Prismatic,
+                ..LinkSpec::rod(ratio(1, 2), m2.clone())
+            },
+        ],
+        gravity: g.clone(),
+        payload: None,
+    };
+    let d = Dynamics::derive(&arm);
+    let q2 = Expr::<Rational>::var(Var::Q(1));
+    let r = q2.add(&Expr::constant(l1.clone() + c2.clone()));
+    let m11 = r.mul(&r).scale(&m2).add(&Expr::constant(
+        i1 + m1.clone() * c1.clone() * c1.clone() + i2,
+    ));
+    assert_eq!(d.mass_matrix[0][0], m11);
+    assert_eq!(d.mass_matrix[0][1], Expr::zero());
+    assert_eq!(d.mass_matrix[1][1], Expr::constant(m2.clone()));
+    // c = (2 m2 r qd1 qd2, -m2 r qd1^2)
+    let (qd1, qd2) = (Expr::var(Var::Qd(0)), Expr::var(Var::Qd(1)));
+    assert_eq!(
+        d.coriolis[0],
+        r.mul(&qd1).mul(&qd2).scale(&(int(2) * m2.clone()))
+    );
+    assert_eq!(d.coriolis[1], r.mul(&qd1).mul(&qd1).scale(&(-m2.clone())));
+    // g = (g (m1 c1 + m2 r) cos q1, g m2 sin q1)
+    let q1 = Angle::new(vec![1]);
+    let moment = r.scale(&m2).add(&Expr::constant(m1 * c1));
+    assert_eq!(d.gravity[0], moment.mul(&Expr::cos(g.clone(), q1.clone())));
+    assert_eq!(d.gravity[1], Expr::sin(g * m2, q1));
+    let k = Kinematics::derive(&arm);
+    // tip = (l1 + q2 + l2) (cos q1, sin q1); the Jacobian's last row (1, 0)
+    let reach = q2.add(&Expr::constant(l1 + ratio(1, 2)));
+    assert_eq!(
+        k.points[2].0,
+        reach.mul(&Expr::cos(int(1), Angle::new(vec![1])))
+    );
+    assert_eq!(k.jacobian[2], vec![Expr::constant(int(1)), Expr::zero()]);
+    assert_eq!(k.jacobian[0][1], Expr::cos(int(1), Angle::new(vec![1])));
+}
+
+#[test]
+fn pairwise_kinetic_energy_is_the_squared_velocities() {
+    for n in 1..=5 {
+        let mut arm = ArmSpec::paper(n);
+        for (i, l) in arm.links.iter_mut().enumerate() {
+            let i = i as i64;
+            *l = LinkSpec {
+                length: ratio(i + 2, 3),
+                mass: ratio(2 * i + 1, 2),
+                inertia: ratio(1, i + 5),
+                com: (ratio(1 - i, i + 2), ratio(1 - i, 7)),
+                armature: ratio(i, 10),
+                ..LinkSpec::rod(int(1), int(1))
+            };
+        }
+        arm.payload = Some(PayloadSpec {
+            mass: ratio(3, 4),
+            inertia: ratio(1, 9),
+            com: (ratio(1, 5), ratio(-2, 7)),
+        });
+        assert_eq!(
+            kinetic_energy(&arm, &standard_bodies(&arm), &mut RateProducts::new()),
+            kinetic_energy_by_velocities(&arm),
+            "n = {n}"
+        );
+        // And over the polynomials, every value a parameter.
+        let (symbolic, _) = arm.parameterised();
+        assert_eq!(
+            kinetic_energy(
+                &symbolic,
+                &standard_bodies(&symbolic),
+                &mut RateProducts::new()
+            ),
+            kinetic_energy_by_velocities(&symbolic),
+            "n = {n}, parameters"
+        );
+    }
+}
