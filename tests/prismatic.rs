@@ -472,7 +472,10 @@ fn closed_form_inverse_kinematics_of_mixed_arms() {
         let tip = Point2::from(polar.tip_pose(&q).translation.vector);
         for sol in polar.inverse_kinematics(&tip).expect("reachable") {
             let back = polar.tip_pose(&sol).translation.vector;
-            assert!((back - tip.coords).amax() < 1e-12, "{sol} -> {back} vs {tip}");
+            assert!(
+                (back - tip.coords).amax() < 1e-12,
+                "{sol} -> {back} vs {tip}"
+            );
             assert!(within(&polar.links(), sol.as_slice()), "{sol}");
         }
         polar_hits += 1;
@@ -485,7 +488,11 @@ fn closed_form_inverse_kinematics_of_mixed_arms() {
             assert!((back - tip.coords).amax() < 1e-12);
         }
         // The gantry, for a pose.
-        let q3 = Vector3::new(rng.range(-1.0, 1.0), rng.range(-3.0, 3.0), rng.range(-3.0, 3.0));
+        let q3 = Vector3::new(
+            rng.range(-1.0, 1.0),
+            rng.range(-3.0, 3.0),
+            rng.range(-3.0, 3.0),
+        );
         let pose = arm.tip_pose(&q3);
         for sol in arm.inverse_kinematics(&pose).expect("reachable") {
             let back = arm.tip_pose(&sol);
@@ -509,7 +516,9 @@ fn closed_form_inverse_kinematics_of_mixed_arms() {
     ));
     // The work-space agrees: an annulus 0.7 ..= 1.3 about the base.
     let w = polar.workspace();
-    assert!(w.is_exact() && w.contains(&Point2::new(0.0, 1.0)) && !w.contains(&Point2::new(0.3, 0.2)));
+    assert!(
+        w.is_exact() && w.contains(&Point2::new(0.0, 1.0)) && !w.contains(&Point2::new(0.3, 0.2))
+    );
     let area = std::f64::consts::PI * (1.3f64.powi(2) - 0.7f64.powi(2));
     assert!((w.area() - area).abs() < 1e-12, "{} vs {area}", w.area());
 }
