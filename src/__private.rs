@@ -150,7 +150,7 @@ macro_rules! by_jacobian {
                 threshold,
             };
             // Also NaN: a non-finite Jacobian from finite but huge q.
-            if !(det.abs() >= threshold) || bound == 0.0 {
+            if det.is_nan() || det.abs() < threshold || bound == 0.0 {
                 return Err(singular);
             }
             let w = j.transpose().lu().solve(tau).ok_or(singular)?;
