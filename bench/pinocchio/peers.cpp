@@ -1,4 +1,5 @@
-// Peer benchmark: Pinocchio (pip wheel `pin`) on the planar arms of benches/dynamics.rs.
+// Peer benchmark: Pinocchio (pip wheel `pin`) on the planar arms of benches/dynamics.rs and,
+// with the argument `prismatic`, on the mixed arms of benches/prismatic.rs.
 //
 // Not run in CI. Build and run with bench/pinocchio/run.sh, which compiles this file three times:
 //   - "hdr-native" / "hdr-generic": header-only, every Pinocchio template instantiated in this
@@ -13,6 +14,11 @@
 // its derivatives take a as tau) cycled through; CALLS calls per round (default 200000,
 // argv[1] overrides), ROUNDS = 21 rounds after one warm-up round; reported: the median ns/call
 // of the rounds by the wall clock (std::chrono::steady_clock) and by the thread's CPU time.
+//
+// argv[2] picks the arms: `random` (the default: the RandomN arms, all six ops) or `prismatic`
+// (benches/support/prismatic_arms.rs: MixedN with prismatic joints and their all-revolute twins
+// AllRevoluteN; rnea, crba and aba, after printing their results at the first four states as
+// `# value, ARM, OP, K, ...` lines for run.sh to compare with the generated code's).
 
 #include <algorithm>
 #include <chrono>
@@ -43,11 +49,14 @@ static constexpr double GRAVITY = 9.80665;
 static constexpr int NSTATES = 64;
 static constexpr int ROUNDS = 21;
 
-// One link as in the #[arm(...)] attributes of benches/dynamics.rs:
-// length, mass, inertia about the COM, COM distance along the link (x of the link frame).
+// One link as in the #[arm(...)] attributes of the benches: length, mass, inertia about the
+// COM, COM along the link (x of the link frame), COM across it (y), and the joint's kind:
+// 'R' revolute about z, 'P' prismatic along the previous link's x.
 struct Link
 {
   double length, mass, inertia, com;
+  double com_y = 0.;
+  char joint = 'R';
 };
 
 struct Arm
@@ -101,10 +110,76 @@ static std::vector<Arm> arms()
   };
 }
 
-// Planar serial chain: joint i revolute about z (JointModelRZ), placed at (l_{i-1}, 0, 0) in the
-// previous link's frame (the first at the origin); link i's COM at (c_i, 0, 0) with rotational
-// inertia diag(Izz, Izz, Izz) about the COM (Ixx = Iyy = Izz as in the URDF of the dynibo bench:
-// any positive values do, planar motion sees Izz alone). Gravity along -y.
+// The arms of benches/support/prismatic_arms.rs, in the same order as printed there: each
+// MixedN (joints RP, PRR, RPRP, RPRPRP, RPRPRPRP) next to AllRevoluteN, the same links with
+// every joint revolute. Fractions written as in the Rust attributes.
+static std::vector<Arm> prismatic_arms()
+{
+  struct Spec
+  {
+    const char * mixed;
+    const char * revolute;
+    const char * joints;
+    std::vector<Link> links;
+  };
+  const std::vector<Spec> specs = {
+    {"Mixed2", "AllRevolute2", "RP",
+     {
+       {6. / 1, 3. / 1, 6. / 25, 12. / 5, 3. / 10},
+       {4. / 1, 38. / 5, 1. / 25, 4. / 1, -1. / 5},
+     }},
+    {"Mixed3", "AllRevolute3", "PRR",
+     {
+       {12. / 5, 26. / 5, 5. / 4, 6. / 25, 1. / 10},
+       {23. / 10, 2. / 1, 1. / 20, 69. / 100, -3. / 20},
+       {2. / 1, 3. / 2, 11. / 25, 3. / 5, 1. / 5},
+     }},
+    {"Mixed4", "AllRevolute4", "RPRP",
+     {
+       {9. / 5, 13. / 4, 1. / 40, 9. / 5, 1. / 10},
+       {9. / 5, 9. / 2, 11. / 40, -27. / 50, 1. / 5},
+       {23. / 8, 3. / 4, 3. / 10, 69. / 20, -1. / 4},
+       {14. / 5, 16. / 5, 23. / 25, -14. / 25, 3. / 10},
+     }},
+    {"Mixed6", "AllRevolute6", "RPRPRP",
+     {
+       {3. / 1, 12. / 5, 1. / 50, 12. / 5, 1. / 5},
+       {4. / 1, 15. / 2, 23. / 25, 6. / 5, -1. / 10},
+       {7. / 5, 31. / 8, 17. / 40, 7. / 10, 3. / 20},
+       {9. / 2, 39. / 8, 7. / 10, -9. / 10, 1. / 4},
+       {17. / 4, 15. / 8, 17. / 40, 17. / 40, -1. / 5},
+       {7. / 4, 9. / 1, 1. / 4, 21. / 20, 1. / 10},
+     }},
+    {"Mixed8", "AllRevolute8", "RPRPRPRP",
+     {
+       {9. / 4, 11. / 8, 16. / 25, -9. / 20, 1. / 10},
+       {3. / 5, 4. / 5, 3. / 5, 3. / 10, -1. / 5},
+       {9. / 5, 11. / 4, 3. / 2, 54. / 25, 1. / 4},
+       {14. / 5, 2. / 1, 21. / 50, 0. / 1, 3. / 20},
+       {9. / 10, 5. / 1, 1. / 25, 27. / 50, -1. / 10},
+       {4. / 5, 6. / 5, 2. / 5, 24. / 25, 1. / 5},
+       {3. / 2, 16. / 5, 29. / 25, 0. / 1, -3. / 20},
+       {16. / 5, 33. / 8, 3. / 10, 96. / 25, 1. / 10},
+     }},
+  };
+  std::vector<Arm> out;
+  for (const Spec & s : specs)
+  {
+    Arm mixed{s.mixed, s.links}, revolute{s.revolute, s.links};
+    for (std::size_t i = 0; i < s.links.size(); ++i)
+      mixed.links[i].joint = s.joints[i];
+    out.push_back(mixed);
+    out.push_back(revolute);
+  }
+  return out;
+}
+
+// Planar serial chain: joint i revolute about z (JointModelRZ) or prismatic along x
+// (JointModelPX: it slides link i along the previous link's x without turning it, the crate's
+// prismatic joint), placed at (l_{i-1}, 0, 0) in the previous link's frame (the first at the
+// origin); link i's COM at (c_i, c_y_i, 0) with rotational inertia diag(Izz, Izz, Izz) about
+// the COM (Ixx = Iyy = Izz as in the URDF of the dynibo bench: any positive values do, planar
+// motion sees Izz alone). Gravity along -y.
 static pin::Model build(const Arm & arm)
 {
   pin::Model model;
@@ -116,12 +191,14 @@ static pin::Model build(const Arm & arm)
   {
     ++k;
     pin::SE3 placement(Eigen::Matrix3d::Identity(), Eigen::Vector3d(offset, 0., 0.));
-    pin::JointIndex j =
-      model.addJoint(parent, pin::JointModelRZ(), placement, "joint" + std::to_string(k));
+    const std::string name = "joint" + std::to_string(k);
+    pin::JointIndex j = l.joint == 'P'
+                          ? model.addJoint(parent, pin::JointModelPX(), placement, name)
+                          : model.addJoint(parent, pin::JointModelRZ(), placement, name);
     const double i3 = std::max(l.inertia, 1e-9);
     // Symmetric3(xx, xy, yy, xz, yz, zz), about the COM.
     pin::Inertia body(
-      l.mass, Eigen::Vector3d(l.com, 0., 0.), pin::Symmetric3(i3, 0., i3, 0., 0., l.inertia));
+      l.mass, Eigen::Vector3d(l.com, l.com_y, 0.), pin::Symmetric3(i3, 0., i3, 0., 0., l.inertia));
     model.appendBodyToJoint(j, body, pin::SE3::Identity());
     parent = j;
     offset = l.length;
@@ -287,11 +364,51 @@ static void checks(const std::vector<Arm> & all)
   }
 }
 
+// Per arm: crba (upper triangle) * a + nle == rnea at the first state, and the results of rnea,
+// crba (both triangles) and aba (a as tau) at the first four states, for run.sh to compare
+// with the generated code's (`cargo bench --bench prismatic -- --values`).
+static void prismatic_checks(const std::vector<Arm> & all)
+{
+  std::printf("# checks (%s)\n", VARIANT);
+  for (const Arm & arm : all)
+  {
+    pin::Model m = build(arm);
+    pin::Data d(m);
+    const int n = int(arm.links.size());
+    const States s = states(n);
+    auto print = [&](const char * op, int k, const double * x, int len) {
+      std::printf("# value, %s, %s, %d,", arm.name, op, k);
+      for (int i = 0; i < len; ++i)
+        std::printf(" %.17g", x[i]);
+      std::printf("\n");
+    };
+    for (int k = 0; k < 4; ++k)
+    {
+      const Eigen::VectorXd t = pin::rnea(m, d, s.q[k], s.v[k], s.a[k]);
+      Eigen::MatrixXd M = pin::crba(m, d, Ref(s.q[k]));
+      M.triangularView<Eigen::StrictlyLower>() = M.transpose().triangularView<Eigen::StrictlyLower>();
+      const Eigen::VectorXd nle = pin::nonLinearEffects(m, d, s.q[k], s.v[k]);
+      const Eigen::VectorXd ddq = pin::aba(m, d, Ref(s.q[k]), Ref(s.v[k]), Ref(s.a[k]));
+      if (k == 0)
+        std::printf(
+          "# %s (N=%d): |M a + nle - tau| = %.3g\n", arm.name, n,
+          (M * s.a[k] + nle - t).cwiseAbs().maxCoeff());
+      print("rnea", k, t.data(), n);
+      print("crba", k, M.data(), n * n); // column-major, as the Rust side prints M
+      print("aba", k, ddq.data(), n);
+    }
+  }
+}
+
 int main(int argc, char ** argv)
 {
   const long calls = argc > 1 ? std::atol(argv[1]) : 200000;
-  const std::vector<Arm> all = arms();
-  checks(all);
+  const bool prismatic = argc > 2 && std::string(argv[2]) == "prismatic";
+  const std::vector<Arm> all = prismatic ? prismatic_arms() : arms();
+  if (prismatic)
+    prismatic_checks(all);
+  else
+    checks(all);
 
   std::printf("# variant=%s pinocchio=%s calls/round=%ld rounds=%d states=%d\n", VARIANT,
               PINOCCHIO_VERSION, calls, ROUNDS, NSTATES);
@@ -302,17 +419,20 @@ int main(int argc, char ** argv)
     pin::Model model = build(arm);
     pin::Data data(model);
     const States s = states(n);
+    // The prismatic set has two arms of each N: the op is named `ARM/op` there.
     auto report = [&](const char * op, Timing t) {
-      std::printf("%s, %d, %s, %.1f, %.1f\n", VARIANT, n, op, t.wall, t.cpu);
+      const std::string name = prismatic ? std::string(arm.name) + "/" + op : std::string(op);
+      std::printf("%s, %d, %s, %.1f, %.1f\n", VARIANT, n, name.c_str(), t.wall, t.cpu);
       std::fflush(stdout);
     };
 
-    report("regressor", time_op(
-                          [&](int k) {
-                            return pin::computeJointTorqueRegressor(
-                              model, data, s.q[k], s.v[k], s.a[k])(n - 1, 10 * n - 1);
-                          },
-                          calls));
+    if (!prismatic)
+      report("regressor", time_op(
+                            [&](int k) {
+                              return pin::computeJointTorqueRegressor(
+                                model, data, s.q[k], s.v[k], s.a[k])(n - 1, 10 * n - 1);
+                            },
+                            calls));
     report("rnea", time_op(
                      [&](int k) { return pin::rnea(model, data, s.q[k], s.v[k], s.a[k])[0]; },
                      calls));
@@ -323,6 +443,8 @@ int main(int argc, char ** argv)
                       return pin::aba(model, data, Ref(s.q[k]), Ref(s.v[k]), Ref(s.a[k]))[n - 1];
                     },
                     calls));
+    if (prismatic)
+      continue;
     report("rnea_derivatives", time_op(
                                  [&](int k) {
                                    pin::computeRNEADerivatives(model, data, s.q[k], s.v[k], s.a[k]);

@@ -3,6 +3,7 @@
 #
 #   bash bench/pinocchio/run.sh            # 200000 calls per round
 #   CALLS=20000 bash bench/pinocchio/run.sh
+#   ARMS=prismatic VARIANTS=hdr-generic bash bench/pinocchio/run.sh
 #
 # Environment:
 #   WORK        work dir (default /tmp/pinocchio_bench): venv, binaries, outputs
@@ -10,6 +11,11 @@
 #   CALLS       calls per timing round (default 200000; 21 rounds, median reported)
 #   VARIANTS    subset of "hdr-native hdr-generic lib" (default: all three)
 #   CXX         compiler (default g++)
+#   ARMS        "random" (default: the RandomN arms of benches/dynamics.rs, six ops) or
+#               "prismatic" (the arms of benches/support/prismatic_arms.rs, rnea/crba/aba;
+#               before timing, Pinocchio's results at four states are compared with the
+#               generated code's from `cargo bench --bench prismatic -- --values`, which
+#               this script runs in the repository, with the caller's CARGO_TARGET_DIR)
 #
 # Builds (all -O3 -DNDEBUG -std=c++17 plus the compile definitions that the wheel's
 # pinocchio::pinocchio_headers CMake target exports):
@@ -30,6 +36,12 @@ PIN_VERSION="${PIN_VERSION:-4.1.0}"
 CALLS="${CALLS:-200000}"
 VARIANTS="${VARIANTS:-hdr-native hdr-generic lib}"
 CXX="${CXX:-g++}"
+ARMS="${ARMS:-random}"
+case "$ARMS" in
+  random) OUT=out ;;
+  prismatic) OUT=out_prismatic ;;
+  *) echo "ARMS is random or prismatic, not $ARMS" >&2; exit 1 ;;
+esac
 mkdir -p "$WORK"
 
 # 1. pin (+ its cmeel dependencies: boost, urdfdom, coal, ...) and Eigen's headers.
@@ -86,19 +98,51 @@ if [ "$status" != 0 ]; then
   exit 1
 fi
 
+# The prismatic arms: Pinocchio's rnea, crba and aba against the generated code at the same
+# states (one call per round, so only the checks take time), to 1e-9 relative.
+if [ "$ARMS" = prismatic ]; then
+  (cd "$HERE/../.." && cargo bench -q --bench prismatic -- --values) >"$WORK/values_rust.txt"
+  for v in $VARIANTS; do
+    "$WORK/peers_$v" 1 prismatic >"$WORK/values_$v.txt"
+    "$PY" - "$WORK/values_rust.txt" "$WORK/values_$v.txt" "$v" <<'EOF'
+import sys
+def values(path):
+    out = {}
+    for line in open(path):
+        if line.startswith("# value,"):
+            _, arm, op, k, nums = [x.strip() for x in line.split(",")]
+            out[(arm, op, int(k))] = [float(x) for x in nums.split()]
+    return out
+rust, pin, variant = values(sys.argv[1]), values(sys.argv[2]), sys.argv[3]
+assert rust and set(rust) == set(pin), "the two programs print different results"
+worst = {}
+for key, a in rust.items():
+    b = pin[key]
+    scale = max(max(map(abs, a)), max(map(abs, b)), 1.0)
+    err = max(abs(x - y) for x, y in zip(a, b)) / scale
+    worst[key[:2]] = max(worst.get(key[:2], 0.0), err)
+print(f"# agreement ({variant}), generated vs Pinocchio, largest relative difference over 4 states:")
+for (arm, op), err in worst.items():
+    print(f"#   {arm:13s} {op:5s} {err:.1e}")
+if max(worst.values()) > 1e-9:
+    sys.exit("generated and Pinocchio disagree")
+EOF
+  done
+fi
+
 for v in $VARIANTS; do
   echo "# run $v (load: $(cut -d' ' -f1-3 /proc/loadavg))"
-  "$WORK/peers_$v" "$CALLS" | tee "$WORK/out_$v.txt"
+  "$WORK/peers_$v" "$CALLS" "$ARMS" | tee "$WORK/${OUT}_$v.txt"
 done
 
 # 4. Tables: N, op, ns/call per build, by thread CPU time (robust when the machine is shared)
 #    and by the wall clock (std::chrono::steady_clock).
-"$PY" - "$WORK" $VARIANTS <<'EOF'
+"$PY" - "$WORK" "$OUT" $VARIANTS <<'EOF'
 import sys
-work, variants = sys.argv[1], sys.argv[2:]
+work, out, variants = sys.argv[1], sys.argv[2], sys.argv[3:]
 rows, order = {}, []
 for v in variants:
-    for line in open(f"{work}/out_{v}.txt"):
+    for line in open(f"{work}/{out}_{v}.txt"):
         if line.startswith("#") or line.startswith("variant"):
             continue
         _, n, op, wall, cpu = [x.strip() for x in line.split(",")]
