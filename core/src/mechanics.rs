@@ -212,6 +212,18 @@ impl<C> ArmSpec<C> {
     pub fn all_revolute(&self) -> bool {
         self.links.iter().all(|l| l.joint == JointKind::Revolute)
     }
+
+    /// The same arm with joint `i` prismatic where bit `i` of `pattern` is set: the tests'
+    /// way to run one check over every mix of joint kinds.
+    #[cfg(test)]
+    pub(crate) fn with_prismatic(mut self, pattern: u32) -> Self {
+        for (i, l) in self.links.iter_mut().enumerate() {
+            if pattern >> i & 1 == 1 {
+                l.joint = JointKind::Prismatic;
+            }
+        }
+        self
+    }
 }
 
 /// `(x, y)` of the point `at` (in link `i`'s frame, from its own frame's origin) of link `i`:

@@ -23,16 +23,6 @@ fn two_equal_links_mass_matrix() {
     assert_eq!(d.mass_matrix[0][1], d.mass_matrix[1][0]);
 }
 
-/// Joint kinds from the bits of `pattern` (bit `i` set: joint `i` prismatic).
-fn with_joints<C>(mut arm: ArmSpec<C>, pattern: u32) -> ArmSpec<C> {
-    for (i, l) in arm.links.iter_mut().enumerate() {
-        if pattern >> i & 1 == 1 {
-            l.joint = JointKind::Prismatic;
-        }
-    }
-    arm
-}
-
 #[test]
 fn mass_matrix_two_ways_agree_and_c_is_christoffel() {
     for (n, pattern) in (1..=4).flat_map(|n| (0..1u32 << n).map(move |p| (n, p))) {
@@ -48,7 +38,7 @@ fn mass_matrix_two_ways_agree_and_c_is_christoffel() {
                 ..LinkSpec::rod(int(1), int(1))
             };
         }
-        let arm = with_joints(arm, pattern);
+        let arm = arm.with_prismatic(pattern);
         let d = Dynamics::derive(&arm);
         assert_eq!(d.mass_matrix, d.mass_matrix_from_lagrange(), "n = {n}");
         assert_eq!(d.coriolis_matrix, christoffel(&d.mass_matrix), "n = {n}");
@@ -129,27 +119,34 @@ fn kinetic_energy_by_velocities<C: Coefficient>(arm: &ArmSpec<C>) -> Expr<C> {
     kinetic
 }
 
+/// `n` links of uneven lengths, masses, inertias, offset centres of mass and armature, holding
+/// an offset payload.
+fn uneven_arm(n: usize) -> ArmSpec {
+    let mut arm = ArmSpec::paper(n);
+    for (i, l) in arm.links.iter_mut().enumerate() {
+        let i = i as i64;
+        *l = LinkSpec {
+            length: ratio(i + 2, 3),
+            mass: ratio(2 * i + 1, 2),
+            inertia: ratio(1, i + 5),
+            com: (ratio(1 - i, i + 2), ratio(1 - i, 7)),
+            armature: ratio(i, 10),
+            ..LinkSpec::rod(int(1), int(1))
+        };
+    }
+    arm.payload = Some(PayloadSpec {
+        mass: ratio(3, 4),
+        inertia: ratio(1, 9),
+        com: (ratio(1, 5), ratio(-2, 7)),
+    });
+    arm
+}
+
 #[test]
 fn kinetic_energy_of_any_joints_is_the_squared_velocities() {
     for (n, pattern) in (1..=4).flat_map(|n| (0..1u32 << n).map(move |p| (n, p))) {
-        let mut arm = ArmSpec::paper(n);
-        for (i, l) in arm.links.iter_mut().enumerate() {
-            let i = i as i64;
-            *l = LinkSpec {
-                length: ratio(i + 2, 3),
-                mass: ratio(2 * i + 1, 2),
-                inertia: ratio(1, i + 5),
-                com: (ratio(1 - i, i + 2), ratio(1 - i, 7)),
-                armature: ratio(i, 10),
-                ..LinkSpec::rod(int(1), int(1))
-            };
-        }
-        arm.payload = Some(PayloadSpec {
-            mass: ratio(3, 4),
-            inertia: ratio(1, 9),
-            com: (ratio(1, 5), ratio(-2, 7)),
-        });
-        let arm = with_joints(arm, pattern);
+        let arm = uneven_arm(n);
+        let arm = arm.with_prismatic(pattern);
         let bodies = standard_bodies(&arm);
         let by_velocities = kinetic_energy_by_velocities(&arm);
         assert_eq!(
@@ -225,23 +222,7 @@ fn polar_arm_by_hand() {
 #[test]
 fn pairwise_kinetic_energy_is_the_squared_velocities() {
     for n in 1..=5 {
-        let mut arm = ArmSpec::paper(n);
-        for (i, l) in arm.links.iter_mut().enumerate() {
-            let i = i as i64;
-            *l = LinkSpec {
-                length: ratio(i + 2, 3),
-                mass: ratio(2 * i + 1, 2),
-                inertia: ratio(1, i + 5),
-                com: (ratio(1 - i, i + 2), ratio(1 - i, 7)),
-                armature: ratio(i, 10),
-                ..LinkSpec::rod(int(1), int(1))
-            };
-        }
-        arm.payload = Some(PayloadSpec {
-            mass: ratio(3, 4),
-            inertia: ratio(1, 9),
-            com: (ratio(1, 5), ratio(-2, 7)),
-        });
+        let arm = uneven_arm(n);
         assert_eq!(
             kinetic_energy(&arm, &standard_bodies(&arm), &mut RateProducts::new()),
             kinetic_energy_by_velocities(&arm),

@@ -170,17 +170,6 @@ fn every_candidate_agrees() {
     }
 }
 
-/// The arm with the joints whose bit is set in `pattern` prismatic.
-fn mixed(n: usize, pattern: u32) -> ArmSpec {
-    let mut a = arm(n);
-    for (i, l) in a.links.iter_mut().enumerate() {
-        if pattern >> i & 1 == 1 {
-            l.joint = JointKind::Prismatic;
-        }
-    }
-    a
-}
-
 /// For every joint pattern of 1-4 links and a few longer ones, the unrolled recursions
 /// (the Newton-Euler torques, the mass matrix by unit accelerations) and forward dynamics
 /// agree with the expanded Lagrangian, over the rationals and over parameters.
@@ -190,7 +179,7 @@ fn prismatic_candidates_agree() {
         .flat_map(|n| (1..1u32 << n).map(move |p| (n, p)))
         .chain([(6, 0b10_1010), (7, 0b110_0001)]);
     for (n, pattern) in patterns {
-        let spec = mixed(n, pattern);
+        let spec = arm(n).with_prismatic(pattern);
         let d = Derived::new(&spec);
         let what = format!("n = {n}, joints {pattern:b}");
         let tau = eval(&d.inverse_dynamics_lagrange_method(), n);

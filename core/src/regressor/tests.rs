@@ -55,15 +55,6 @@ fn patterns(n: usize) -> Vec<u32> {
     }
 }
 
-fn with_joints(mut a: ArmSpec, pattern: u32) -> ArmSpec {
-    for (i, l) in a.links.iter_mut().enumerate() {
-        if pattern >> i & 1 == 1 {
-            l.joint = crate::mechanics::JointKind::Prismatic;
-        }
-    }
-    a
-}
-
 #[test]
 fn regressor_times_standard_parameters_is_the_torque_exactly() {
     for (n, pattern) in (1..=4).flat_map(|n| patterns(n).into_iter().map(move |p| (n, p))) {
@@ -72,7 +63,7 @@ fn regressor_times_standard_parameters_is_the_torque_exactly() {
             (true, true, true),
             (false, true, false),
         ] {
-            let literal = with_joints(arm(n, g, a, p), pattern);
+            let literal = arm(n, g, a, p).with_prismatic(pattern);
             let reg = regressor(&poly_arm(&literal));
             let values = standard_values(&literal, &reg.parameters);
             let torques = Dynamics::derive(&poly_arm(&literal)).torques;
@@ -105,7 +96,7 @@ fn energies_give_the_torques_base_parameters() {
             (true, true, true),
             (false, true, true),
         ] {
-            let arm = poly_arm(&with_joints(arm(n, g, a, p), pattern));
+            let arm = poly_arm(&arm(n, g, a, p).with_prismatic(pattern));
             let reg = regressor(&arm);
             let from_torques = base_parameters(&reg).expect("rational");
             let (params, from_energies) = base_parameters_from_energies(&arm).expect("rational");
