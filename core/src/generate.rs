@@ -283,12 +283,22 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
             m_rows.push((format!("M{}{}", i + 1, j + 1), &dy.mass_matrix[i][j]));
         }
     }
+    // The expanded C is built only to be printed: the method does not need it (see
+    // `christoffel`), and for long arms it is far past what the docs print (each entry has
+    // about n times the terms of an entry of M).
+    let m_terms: usize = dy.mass_matrix.iter().flatten().map(Expr::len).sum();
+    let cm = if m_terms * n <= crate::emit::DOC_TERMS {
+        dy.coriolis_matrix()
+    } else {
+        Vec::new()
+    };
     let mut cm_rows = Vec::new();
-    for i in 0..n {
-        for j in 0..n {
-            cm_rows.push((format!("C{}{}", i + 1, j + 1), &dy.coriolis_matrix[i][j]));
+    for (i, row) in cm.iter().enumerate() {
+        for (j, e) in row.iter().enumerate() {
+            cm_rows.push((format!("C{}{}", i + 1, j + 1), e));
         }
     }
+    let cm_title = "The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.";
     let conventions = "Joint angles `q`, rates `qd`, accelerations `qdd` (1-based in the formulas); \
                        `cK` and `sK...` are the cosine and sine of the sum of the joint angles named by the digits.";
     let mut specs = Vec::new();
@@ -320,7 +330,14 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
         generic: true,
         params: vec![q, qd],
         ret: smat.clone(),
-        doc: formula_doc("The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.", &cm_rows),
+        doc: if cm.is_empty() {
+            format!(
+                "{cm_title}\n\nThe exact formulas are too long to print here; \
+                 `planar_arm::symbolic::Dynamics::coriolis_matrix` expands them."
+            )
+        } else {
+            formula_doc(cm_title, &cm_rows)
+        },
         method: d.coriolis_matrix_method(),
         touch: TokenStream::new(),
         finish: Box::new(|ids| matrix(n, n, ids)),

@@ -54,6 +54,7 @@ pub use mechanics::{ArmSpec, Body, Dynamics, JointKind, Kinematics, LinkSpec, Pa
 pub use poly::{Param, Poly};
 pub use ring::{Coefficient, Rational};
 pub use trig::{Angle, Trig};
+pub mod christoffel;
 pub mod closed_forms;
 pub mod compact;
 pub mod derivative;
@@ -62,6 +63,7 @@ pub mod frozen;
 pub mod generate;
 pub mod identification;
 pub mod methods;
+mod metric;
 pub mod paths;
 pub mod regressor;
 pub mod slp;

@@ -169,8 +169,6 @@ pub struct Dynamics<C = Rational> {
     pub mass_matrix: Vec<Vec<Expr<C>>>,
     /// The velocity-product torques c(q, qd).
     pub coriolis: Vec<Expr<C>>,
-    /// The Coriolis matrix from Christoffel symbols, row-major: `C qd = c`.
-    pub coriolis_matrix: Vec<Vec<Expr<C>>>,
     /// The gravity torques g(q) = dV/dq.
     pub gravity: Vec<Expr<C>>,
 }
@@ -351,16 +349,11 @@ impl<C: Coefficient> RateProducts<C> {
     }
 }
 
-/// The kinetic energy, built in its pairwise form.
-///
-/// A body of link `i` has velocity `sum_a omega_a i z_a` (complex plane), `z_a = r_a e^(i theta_a)`
-/// with `r_a = l_a` for the links before it and `r_i = cx + i cy` its centre of mass, `theta_a`
-/// the absolute angle of link `a` and `omega_a` its rate. So
-/// `|v|^2 = sum_(a,b) omega_a omega_b Re(r_a conj(r_b) e^(i (theta_a - theta_b)))`, and T is a
-/// sum over pairs of links `a >= b` of `omega_a omega_b` times `A cos(theta_a - theta_b) -
-/// B sin(theta_a - theta_b)`, `A` and `B` summed over the bodies. Squaring the velocity's x
-/// and y expressions gives the same canonical expression (checked in the tests) but creates
-/// every `cos(theta_a + theta_b)` term only to cancel it, and dominated the derive's time.
+/// The kinetic energy, built in its pairwise form: a sum over pairs of links `a >= b` of
+/// `omega_a omega_b` times `A cos(theta_a - theta_b) - B sin(theta_a - theta_b)`, `A` and `B`
+/// summed over the bodies ([`crate::metric`]). Squaring the velocity's x and y expressions
+/// gives the same canonical expression (checked in the tests) but creates every
+/// `cos(theta_a + theta_b)` term only to cancel it, and dominated the derive's time.
 fn kinetic_energy<C: Coefficient>(
     arm: &ArmSpec<C>,
     bodies: &[Body<C>],
@@ -370,27 +363,7 @@ fn kinetic_energy<C: Coefficient>(
         return kinetic_energy_of_velocities(arm, bodies);
     }
     let n = arm.links.len();
-    let zero = || C::from_rational(int(0));
-    // diag[a]: twice the coefficient of omega_a^2; cross[a][b] (a > b): (A, B).
-    let mut diag: Vec<C> = (0..n).map(|_| zero()).collect();
-    let mut cross: Vec<Vec<(C, C)>> = (0..n)
-        .map(|a| (0..a).map(|_| (zero(), zero())).collect())
-        .collect();
-    for body in bodies {
-        let (i, m) = (body.link, &body.mass);
-        let (mx, my) = &body.first_moment;
-        for a in 0..i {
-            let la = &arm.links[a].length;
-            diag[a] = diag[a].clone() + m.clone() * la.clone() * la.clone();
-            for (pair, link_b) in cross[a].iter_mut().zip(&arm.links) {
-                pair.0 = pair.0.clone() + m.clone() * la.clone() * link_b.length.clone();
-            }
-            // The body's own term: m r_i conj(l_a) = (m cx + i m cy) l_a.
-            cross[i][a].0 = cross[i][a].0.clone() + mx.clone() * la.clone();
-            cross[i][a].1 = cross[i][a].1.clone() + my.clone() * la.clone();
-        }
-        diag[i] = diag[i].clone() + body.joint_inertia.clone();
-    }
+    let crate::metric::Pairs { diag, cross } = crate::metric::pairs(arm, bodies);
     let half = ratio(1, 2);
     let mut kinetic = Expr::zero();
     for a in 0..n {
@@ -546,23 +519,32 @@ impl<C: Coefficient> Dynamics<C> {
     #[must_use]
     pub fn of_bodies(arm: &ArmSpec<C>, bodies: &[Body<C>]) -> Self {
         let n = arm.links.len();
-        let kinetic = kinetic_energy(arm, bodies, &mut RateProducts::new());
+        let mut rates = RateProducts::new();
+        let kinetic = kinetic_energy(arm, bodies, &mut rates);
         let potential = potential_energy(arm, bodies);
         let lagrangian = kinetic.sub(&potential);
         // M as the Hessian of T in the rates, g = dV/dq, and the velocity terms from the
         // momenta p = dT/dqd: the same exact functions Lagrange's equation gives (checked
         // against it by `lagrange_torques`), without expanding d/dt dL/dqd, the costliest step.
-        let momenta: Vec<Expr<C>> = (0..n).map(|i| kinetic.diff_var(rate(i))).collect();
-        let mass_matrix: Vec<Vec<Expr<C>>> = (0..n)
-            .map(|i| (0..n).map(|j| momenta[i].diff_var(rate(j))).collect())
-            .collect();
+        // For arms whose joints all turn, M and c are summed from the metric in absolute
+        // angles instead (small expressions per pair of links): the same expressions at a
+        // fraction of the cost for long arms.
+        let (mass_matrix, coriolis) = if arm.all_revolute() {
+            let pairs = crate::metric::pairs(arm, bodies);
+            (pairs.mass_matrix(arm), pairs.coriolis(&mut rates))
+        } else {
+            let p: Vec<Expr<C>> = (0..n).map(|i| kinetic.diff_var(rate(i))).collect();
+            let m: Vec<Vec<Expr<C>>> = (0..n)
+                .map(|i| (0..n).map(|j| p[i].diff_var(rate(j))).collect())
+                .collect();
+            // c_i = sum_j Mdot_ij qd_j - dT/dq_i, with sum_j Mdot_ij qd_j the derivative of
+            // p_i along the angles; equal to C qd (checked in the tests).
+            let c = (0..n)
+                .map(|i| p[i].dt_q(n).sub(&kinetic.diff_q(i)))
+                .collect();
+            (m, c)
+        };
         let gravity: Vec<Expr<C>> = (0..n).map(|i| potential.diff_q(i)).collect();
-        let coriolis_matrix = coriolis_matrix(&mass_matrix, &momenta);
-        // c_i = sum_j Mdot_ij qd_j - dT/dq_i, with sum_j Mdot_ij qd_j the derivative of p_i
-        // along the angles; equal to C qd (checked in the tests).
-        let coriolis: Vec<Expr<C>> = (0..n)
-            .map(|i| momenta[i].dt_q(n).sub(&kinetic.diff_q(i)))
-            .collect();
         let torques: Vec<Expr<C>> = (0..n)
             .map(|i| {
                 let mut t = coriolis[i].add(&gravity[i]);
@@ -580,7 +562,6 @@ impl<C: Coefficient> Dynamics<C> {
             torques,
             mass_matrix,
             coriolis,
-            coriolis_matrix,
             gravity,
         }
     }
@@ -600,6 +581,14 @@ impl<C: Coefficient> Dynamics<C> {
             .collect()
     }
 
+    /// The Coriolis matrix of Christoffel symbols, row-major, expanded: `C qd = c` and
+    /// `Mdot - 2 C` is skew (see [`crate::christoffel`]; the generated method evaluates the
+    /// same function by a cheaper route for arms whose joints all turn).
+    #[must_use]
+    pub fn coriolis_matrix(&self) -> Vec<Vec<Expr<C>>> {
+        crate::christoffel::expanded(&self.mass_matrix)
+    }
+
     /// The mass matrix read off Lagrange's equation (the coefficients of the accelerations in
     /// [`lagrange_torques`](Self::lagrange_torques)): an independent reading of M that must
     /// agree with the Hessian of the kinetic energy that [`derive`](Self::derive) takes.
@@ -614,27 +603,6 @@ impl<C: Coefficient> Dynamics<C> {
             })
             .collect()
     }
-}
-
-/// The Coriolis matrix from the Christoffel symbols of M,
-/// `C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k`, summed in closed form:
-/// `sum_k dM_ij/dq_k qd_k` is `Mdot_ij` and `sum_k dM_ik/dq_j qd_k = dp_i/dq_j` for the
-/// momentum `p_i = sum_k M_ik qd_k`, so `2 C_ij = Mdot_ij + dp_i/dq_j - dp_j/dq_i`: `n^2`
-/// derivatives instead of the `n^3` symbols (the symbol-by-symbol sum is the test's check).
-fn coriolis_matrix<C: Coefficient>(m: &[Vec<Expr<C>>], momenta: &[Expr<C>]) -> Vec<Vec<Expr<C>>> {
-    let n = m.len();
-    let half = ratio(1, 2);
-    let dp: Vec<Vec<Expr<C>>> = momenta
-        .iter()
-        .map(|p| (0..n).map(|j| p.diff_q(j)).collect())
-        .collect();
-    (0..n)
-        .map(|i| {
-            (0..n)
-                .map(|j| m[i][j].dt_q(n).add(&dp[i][j]).sub(&dp[j][i]).scale(&half))
-                .collect()
-        })
-        .collect()
 }
 
 impl<C: Coefficient> fmt::Display for Dynamics<C> {
@@ -659,4 +627,4 @@ impl<C: Coefficient> fmt::Display for Dynamics<C> {
 }
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;

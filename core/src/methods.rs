@@ -29,6 +29,11 @@ pub struct Derived<C = Rational> {
     pub kinematics: Kinematics<C>,
     /// The chosen programs of M, c and g, which forward dynamics reuses.
     chosen: [std::cell::OnceCell<Method>; 3],
+    /// M from the expanded formulas, and the bias's unrolled recursion: candidates of more
+    /// than one method, built once.
+    expanded_mass_matrix: std::cell::OnceCell<Method>,
+    expanded_bias: std::cell::OnceCell<Method>,
+    recursive_bias: std::cell::OnceCell<Method>,
 }
 
 impl<C: Emit> Derived<C> {
@@ -40,6 +45,9 @@ impl<C: Emit> Derived<C> {
             kinematics: Kinematics::derive(arm),
             arm: arm.clone(),
             chosen: Default::default(),
+            expanded_mass_matrix: std::cell::OnceCell::new(),
+            expanded_bias: std::cell::OnceCell::new(),
+            recursive_bias: std::cell::OnceCell::new(),
         }
     }
 
@@ -180,9 +188,13 @@ impl<C: Emit> Derived<C> {
     /// `M(q)` evaluated entry by entry from the expanded formulas.
     #[must_use]
     pub fn mass_matrix_expanded_method(&self) -> Method {
-        let mut p = Program::new();
-        let m = expanded_mass_matrix(&mut p, &self.dynamics);
-        Method::new(p, matrix_outputs(&m))
+        self.expanded_mass_matrix
+            .get_or_init(|| {
+                let mut p = Program::new();
+                let m = expanded_mass_matrix(&mut p, &self.dynamics);
+                Method::new(p, matrix_outputs(&m))
+            })
+            .clone()
     }
 
     /// `M(q)` by the composite-rigid-body recursion, unrolled for this arm.
@@ -231,7 +243,7 @@ impl<C: Emit> Derived<C> {
     /// friction.
     #[must_use]
     pub fn bias_method(&self) -> Method {
-        let recursive = self.with_friction(self.newton_euler_method("h", Terms::BIAS));
+        let recursive = self.with_friction(self.bias_recursive_method());
         if self.worth_expanding(self.bias_terms(), &recursive) {
             cheapest(vec![
                 self.with_friction(self.expanded_bias_method()),
@@ -243,14 +255,18 @@ impl<C: Emit> Derived<C> {
     }
 
     fn expanded_bias_method(&self) -> Method {
-        let mut p = Program::new();
-        let h = self.expanded_bias(&mut p);
-        let outputs = h
-            .into_iter()
-            .enumerate()
-            .map(|(i, id)| (format!("h{}", i + 1), id))
-            .collect();
-        Method::new(p, outputs)
+        self.expanded_bias
+            .get_or_init(|| {
+                let mut p = Program::new();
+                let h = self.expanded_bias(&mut p);
+                let outputs = h
+                    .into_iter()
+                    .enumerate()
+                    .map(|(i, id)| (format!("h{}", i + 1), id))
+                    .collect();
+                Method::new(p, outputs)
+            })
+            .clone()
     }
 
     /// `c + g` from the expanded formulas.
@@ -263,63 +279,74 @@ impl<C: Emit> Derived<C> {
             .collect()
     }
 
+    /// The bias without friction by the unrolled Newton-Euler recursion.
+    fn bias_recursive_method(&self) -> Method {
+        self.recursive_bias
+            .get_or_init(|| self.newton_euler_method("h", Terms::BIAS))
+            .clone()
+    }
+
     /// `M(q)` and `h(q, qd) = c + g + f` in one program: one `sin_cos` per joint, and every
     /// subexpression the two share (rotations, products of parameters) computed once. The
     /// cheapest of the expanded and recursive forms of each, chosen together.
+    ///
+    /// A program holding the expanded M costs at least what the expanded M alone costs (its
+    /// operations are among the program's, its chain of dependent operations too), so when
+    /// that alone costs more than the all-recursive program, no program with it can win and
+    /// none is built; likewise for the expanded bias.
     #[must_use]
     pub fn mass_matrix_and_bias_method(&self) -> Method {
-        let mut candidates = Vec::new();
-        let mut composites = vec![true];
-        if self.worth_expanding(
+        let joint = |composite: bool, recursive: bool| {
+            let mut p = Program::new();
+            let m = if composite {
+                composite_mass_matrix(&mut p, &self.arm)
+            } else {
+                expanded_mass_matrix(&mut p, &self.dynamics)
+            };
+            let h = if recursive {
+                newton_euler(&mut p, &self.arm, Terms::BIAS)
+            } else {
+                self.expanded_bias(&mut p)
+            };
+            let f = self.friction_nodes(&mut p);
+            let mut outputs = matrix_outputs(&m);
+            for (i, (h, f)) in h.into_iter().zip(f).enumerate() {
+                outputs.push((format!("h{}", i + 1), p.add(h, f)));
+            }
+            let how = match (composite, recursive) {
+                (false, false) => String::new(),
+                (c, r) => format!(
+                    "M {}, h {}.",
+                    if c {
+                        "by the composite-rigid-body algorithm unrolled for this arm"
+                    } else {
+                        "from the formulas"
+                    },
+                    if r {
+                        "by the recursive Newton-Euler algorithm unrolled for this arm"
+                    } else {
+                        "from the formulas"
+                    }
+                ),
+            };
+            Method::new(p, outputs).described(&how)
+        };
+        let recursive = joint(true, true);
+        let bound = cost(&recursive);
+        let expand_m = self.worth_expanding(
             self.mass_matrix_terms(),
             &self.mass_matrix_composite_method(),
-        ) {
-            composites.insert(0, false);
-        }
-        let mut recursions = vec![true];
-        if self.worth_expanding(
-            self.bias_terms(),
-            &self.newton_euler_method("h", Terms::BIAS),
-        ) {
-            recursions.insert(0, false);
-        }
-        for &composite in &composites {
-            for &recursive in &recursions {
-                let mut p = Program::new();
-                let m = if composite {
-                    composite_mass_matrix(&mut p, &self.arm)
-                } else {
-                    expanded_mass_matrix(&mut p, &self.dynamics)
-                };
-                let h = if recursive {
-                    newton_euler(&mut p, &self.arm, Terms::BIAS)
-                } else {
-                    self.expanded_bias(&mut p)
-                };
-                let f = self.friction_nodes(&mut p);
-                let mut outputs = matrix_outputs(&m);
-                for (i, (h, f)) in h.into_iter().zip(f).enumerate() {
-                    outputs.push((format!("h{}", i + 1), p.add(h, f)));
-                }
-                let how = match (composite, recursive) {
-                    (false, false) => String::new(),
-                    (c, r) => format!(
-                        "M {}, h {}.",
-                        if c {
-                            "by the composite-rigid-body algorithm unrolled for this arm"
-                        } else {
-                            "from the formulas"
-                        },
-                        if r {
-                            "by the recursive Newton-Euler algorithm unrolled for this arm"
-                        } else {
-                            "from the formulas"
-                        }
-                    ),
-                };
-                candidates.push(Method::new(p, outputs).described(&how));
+        ) && cost(&self.mass_matrix_expanded_method()) <= bound;
+        let expand_h = self.worth_expanding(self.bias_terms(), &self.bias_recursive_method())
+            && cost(&self.expanded_bias_method()) <= bound;
+        // The term-by-term forms first, so that they are kept on a tie.
+        let mut candidates = Vec::new();
+        for (composite, recursive) in [(false, false), (false, true), (true, false)] {
+            if (composite || expand_m) && (recursive || expand_h) {
+                candidates.push(joint(composite, recursive));
             }
         }
+        candidates.push(recursive);
         cheapest(candidates)
     }
 
@@ -360,18 +387,53 @@ impl<C: Emit> Derived<C> {
         Method::new(p, outputs).described(RNEA)
     }
 
-    /// `C(q, qd)`.
+    /// `C(q, qd)`, Christoffel's: for arms whose joints all turn, by the absolute angles'
+    /// route of [`crate::christoffel`] (the expanded entries are built and compared only for
+    /// fewer than four links, where they can be cheaper); the expanded entries otherwise.
     #[must_use]
     pub fn coriolis_matrix_method(&self) -> Method {
+        let Some(d) =
+            crate::christoffel::absolute_derivatives(&self.arm, &self.dynamics.mass_matrix)
+        else {
+            return self.coriolis_matrix_expanded_method();
+        };
+        let absolute = self.coriolis_matrix_absolute_method(&d);
+        if self.n() < 4 {
+            cheapest(vec![self.coriolis_matrix_expanded_method(), absolute])
+        } else {
+            absolute
+        }
+    }
+
+    /// `C(q, qd)` entry by entry from the expanded formulas.
+    #[must_use]
+    pub fn coriolis_matrix_expanded_method(&self) -> Method {
+        let cm = self.dynamics.coriolis_matrix();
         let mut p = Program::new();
         let mut outputs = Vec::new();
-        for i in 0..self.n() {
-            for j in 0..self.n() {
-                let id = p.expr(&self.dynamics.coriolis_matrix[i][j]);
+        for (i, row) in cm.iter().enumerate() {
+            for (j, e) in row.iter().enumerate() {
+                let id = p.expr(e);
                 outputs.push((format!("cm{}", two(i, j)), id));
             }
         }
         Method::new(p, outputs)
+    }
+
+    /// `C(q, qd) = J^T Ct J` in the links' absolute angles, from `D` of
+    /// [`crate::christoffel::absolute_derivatives`].
+    fn coriolis_matrix_absolute_method(&self, d: &[Vec<Expr<C>>]) -> Method {
+        let n = self.n();
+        let mut p = Program::new();
+        let c = crate::christoffel::absolute_program(&mut p, d);
+        let outputs = (0..n * n)
+            .map(|k| (format!("cm{}", two(k / n, k % n)), c[k]))
+            .collect();
+        Method::new(p, outputs).described(
+            "Evaluated in the links' absolute angles, where each entry of C is a sum of \
+             products `dM~_ab/dphi_b w_b` of one small derivative and one absolute rate \
+             (see `planar_arm::symbolic::christoffel`).",
+        )
     }
 
     /// `T(q, qd)`.

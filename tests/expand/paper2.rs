@@ -118,6 +118,8 @@ C22 = 0
 ```
 
 
+Evaluated in the links' absolute angles, where each entry of C is a sum of products `dM~_ab/dphi_b w_b` of one small derivative and one absolute rate (see `planar_arm::symbolic::christoffel`).
+
 Cost: 3 multiplications, 3 additions, 0 divisions, 1 sin_cos pairs.*/
     #[inline]
     fn coriolis_matrix<__T: ::planar_arm::Real>(
@@ -129,10 +131,10 @@ Cost: 3 multiplications, 3 additions, 0 divisions, 1 sin_cos pairs.*/
         let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
         let [(__s2, _)] = ::planar_arm::__private::sin_cos([__q2]);
         let __t1 = __T::from_f64(1.0 / 2.0) * __s2;
-        let __t2 = __t1 * __qd2;
-        let __cm11 = -__t2;
-        let __cm21 = __t1 * __qd1;
-        let __cm12 = -__cm21 - __t2;
+        let __t2 = (__qd1 + __qd2) * __t1;
+        let __cm12 = -__t2;
+        let __cm21 = __qd1 * __t1;
+        let __cm11 = __cm21 - __t2;
         let __cm22 = __T::from_f64(0.0);
         ::planar_arm::__private::matrix([[__cm11, __cm12], [__cm21, __cm22]])
     }

@@ -203,7 +203,9 @@ C33 = 0
 ```
 
 
-Cost: 15 multiplications, 19 additions, 0 divisions, 2 sin_cos pairs.*/
+Evaluated in the links' absolute angles, where each entry of C is a sum of products `dM~_ab/dphi_b w_b` of one small derivative and one absolute rate (see `planar_arm::symbolic::christoffel`).
+
+Cost: 11 multiplications, 13 additions, 0 divisions, 2 sin_cos pairs.*/
     #[inline]
     fn coriolis_matrix<__T: ::planar_arm::Real>(
         &self,
@@ -216,25 +218,23 @@ Cost: 15 multiplications, 19 additions, 0 divisions, 2 sin_cos pairs.*/
             __q2,
             __q3,
         ]);
-        let __t1 = __T::from_f64(3.0 / 2.0) * __s2;
+        let __t1 = __qd1 + __qd2;
+        let __t2 = __t1 + __qd3;
+        let __t3 = __T::from_f64(3.0 / 2.0) * __s2;
         let __s23 = __s2 * __c3 + __c2 * __s3;
-        let __t2 = __T::from_f64(1.0 / 2.0) * __s23;
-        let __t3 = -__t1 - __t2;
-        let __t4 = __t3 * __qd2;
+        let __t4 = __T::from_f64(1.0 / 2.0) * __s23;
         let __t5 = __T::from_f64(1.0 / 2.0) * __s3;
-        let __t6 = -__t2 - __t5;
-        let __t7 = __t6 * __qd3;
-        let __cm11 = __t4 + __t7;
-        let __cm12 = __t7 + __t4 + __t3 * __qd1;
-        let __cm13 = __t7 + __t6 * __qd1 + __qd2 * __t6;
-        let __t8 = __t5 * __qd3;
-        let __cm21 = (__t1 + __t2) * __qd1 - __t8;
-        let __cm22 = -__t8;
-        let __t9 = __t5 * __qd1;
-        let __t10 = __qd2 * __t5;
-        let __cm32 = __t9 + __t10;
-        let __cm23 = -__t9 - (__t8 + __t10);
-        let __cm31 = __t10 + (__t2 + __t5) * __qd1;
+        let __t6 = -(__t2 * __t4);
+        let __t7 = __t6 - __t1 * __t3;
+        let __t8 = __t2 * __t5;
+        let __cm23 = -__t8;
+        let __cm32 = __t1 * __t5;
+        let __cm31 = __cm32 + __qd1 * __t4;
+        let __cm21 = __qd1 * __t3 - __t8 + __cm31;
+        let __cm11 = __t7 + __cm21;
+        let __cm22 = __cm32 - __t8;
+        let __cm12 = __t7 + __cm22;
+        let __cm13 = __t6 - __t8;
         let __cm33 = __T::from_f64(0.0);
         ::planar_arm::__private::matrix([
             [__cm11, __cm12, __cm13],
