@@ -272,7 +272,7 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
         let get = |c: Id, exprs: &Vec<Option<(Prec, TokenStream)>>| {
             exprs[c.0 as usize]
                 .clone()
-                .unwrap_or((Prec::Atom, scalar.zero()))
+                .unwrap_or_else(|| (Prec::Atom, scalar.zero()))
         };
         let paren = |(prec, ts): (Prec, TokenStream), min: Prec| {
             if prec >= min {
@@ -365,7 +365,7 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
     for (name, id) in &method.outputs {
         let (_, ts) = exprs[id.0 as usize]
             .clone()
-            .unwrap_or((Prec::Atom, scalar.zero()));
+            .unwrap_or_else(|| (Prec::Atom, scalar.zero()));
         // Leaves and repeated outputs (the symmetric half of M) get their own readable let.
         let ident = match syn_ident(&ts) {
             Some(existing) => existing,

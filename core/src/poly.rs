@@ -81,6 +81,13 @@ impl ParamMonomial {
     }
 
     fn mul(&self, other: &Self) -> Self {
+        // Most products in a derivation have a constant side.
+        if other.0.is_empty() {
+            return self.clone();
+        }
+        if self.0.is_empty() {
+            return other.clone();
+        }
         let mut out: BTreeMap<Param, u32> = self.0.iter().cloned().collect();
         for (p, e) in &other.0 {
             *out.entry(p.clone()).or_insert(0) += e;
@@ -222,6 +229,14 @@ impl Sub for Poly {
 impl Mul for Poly {
     type Output = Self;
     fn mul(self, other: Self) -> Self {
+        // A constant factor (the rates' 1 and 2, the lengths of literal links) only scales:
+        // no monomial products, no map rebuilt.
+        if let Some(r) = other.as_rational() {
+            return crate::ring::Coefficient::scale(&self, &r);
+        }
+        if let Some(r) = self.as_rational() {
+            return crate::ring::Coefficient::scale(&other, &r);
+        }
         let mut out = Self::default();
         for (m1, c1) in &self.0 {
             for (m2, c2) in &other.0 {

@@ -99,7 +99,9 @@ impl std::fmt::Display for OpCount {
 #[derive(Clone, Debug, Default)]
 pub struct Program {
     nodes: Vec<Node>,
-    memo: BTreeMap<Node, Id>,
+    // Looked up, never iterated: ids follow insertion order, so a hash map keeps the output
+    // deterministic while sparing the exact constants' comparisons of an ordered map.
+    memo: rustc_hash::FxHashMap<Node, Id>,
     trig: BTreeMap<Angle, (Id, Id)>,
     names: BTreeMap<Id, String>,
     params: Vec<Param>,
