@@ -5,7 +5,7 @@
 //!   `2 C_ij = Mdot_ij + dp_i/dq_j - dp_j/dq_i` from the momenta `p = M qd`. Its entries have
 //!   as many terms as M's times the rates, and deriving and emitting them cost long arms most
 //!   of the derive's time.
-//! - [`absolute`]: for arms whose joints all turn. In the links' absolute angles
+//! - [`absolute_derivatives`] and [`absolute_program`]: for arms whose joints all turn. In the links' absolute angles
 //!   `phi_a = q_1 + ... + q_a` (rates `w = J qd`, `J` the lower triangle of ones) the kinetic
 //!   energy is `1/2 w^T Mt(phi) w` with `M = J^T Mt J + diag(armature)` and each `Mt_ab` a
 //!   function of `phi_a - phi_b` alone. For such a metric the Christoffel sum collapses to

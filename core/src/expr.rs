@@ -399,16 +399,21 @@ impl<C: Coefficient> Expr<C> {
     #[must_use]
     pub fn mul(&self, other: &Self) -> Self {
         let mut out = Self::zero();
-        for ((m1, t1), c1) in &self.terms {
-            for ((m2, t2), c2) in &other.terms {
+        out.add_product(self, other);
+        out
+    }
+
+    /// `self += a x b`, without building the product on its own first.
+    pub fn add_product(&mut self, a: &Self, b: &Self) {
+        for ((m1, t1), c1) in &a.terms {
+            for ((m2, t2), c2) in &b.terms {
                 let m = m1.mul(m2);
                 let c = c1.clone() * c2.clone();
                 for (r, t) in t1.mul(t2) {
-                    out.add_term(c.scale(&r), t, m.clone());
+                    self.add_term(c.scale(&r), t, m.clone());
                 }
             }
         }
-        out
     }
 
     /// `d/dq_j` (0-based joint): through the trig atoms for a revolute joint, through the

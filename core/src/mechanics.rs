@@ -377,7 +377,7 @@ fn kinetic_energy<C: Coefficient>(
             }
             let angle = Angle::range(b + 1, a + 1);
             let trig = Expr::cos(ca.clone(), angle.clone()).sub(&Expr::sin(cb.clone(), angle));
-            kinetic.add_assign(&rates.product(a, b).mul(&trig));
+            kinetic.add_product(rates.product(a, b), &trig);
         }
     }
     // The rotors: armature times the joint's own rate squared.

@@ -72,7 +72,7 @@ impl<C: Emit> Derived<C> {
         exprs
             .iter()
             .flat_map(|e| e.terms())
-            .map(|(_, _, c)| c.parts().len().max(1))
+            .map(|(_, _, c)| c.part_count().max(1))
             .sum()
     }
 

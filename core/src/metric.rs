@@ -117,10 +117,8 @@ impl<C: Coefficient> Pairs<C> {
                 if d.is_zero() {
                     continue;
                 }
-                let w2 = rates.product(b, b);
-                ct[a].add_assign(&d.mul(w2));
-                let w2 = rates.product(a, a);
-                ct[b].sub_assign(&d.mul(w2));
+                ct[a].add_product(&d, rates.product(b, b));
+                ct[b].add_product(&d.scale(&int(-1)), rates.product(a, a));
             }
         }
         let mut c = vec![Expr::zero(); n];

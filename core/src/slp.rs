@@ -637,6 +637,10 @@ pub trait Emit: crate::ring::Coefficient {
     /// The terms: each product of parameters with its rational coefficient (one term with no
     /// parameter for a constant; none for zero).
     fn parts(&self) -> Vec<(ParamMonomial, Rational)>;
+    /// How many [`parts`](Self::parts), without building them.
+    fn part_count(&self) -> usize {
+        self.parts().len()
+    }
 }
 
 impl Emit for Rational {
@@ -655,6 +659,9 @@ impl Emit for Rational {
         } else {
             vec![(ParamMonomial::default(), self.clone())]
         }
+    }
+    fn part_count(&self) -> usize {
+        usize::from(!Zero::is_zero(self))
     }
 }
 
@@ -676,5 +683,8 @@ impl Emit for Poly {
     }
     fn parts(&self) -> Vec<(ParamMonomial, Rational)> {
         self.terms().map(|(m, c)| (m.clone(), c.clone())).collect()
+    }
+    fn part_count(&self) -> usize {
+        self.terms().count()
     }
 }
