@@ -7,7 +7,10 @@
 //!
 //! Each term is a sequence of numbers: the atom's kind (0 for `1`, 1 for `cos`, 2 for
 //! `sin`), the coefficient's numerator and denominator (signed), for `cos` and `sin` the
-//! angle's length and coefficients (signed), the number of rate, acceleration and prismatic
+//! angle's length (its coefficients up to the last non-zero one) and its coefficients as
+//! runs of one non-zero value: the number of runs, then for each the zeros before it, its
+//! length and its value (signed; `q_3 + ... + q_9` is one run, not nine numbers, which made
+//! the angles most of a long arm's data), the number of rate, acceleration and prismatic
 //! displacement factors and for each `3 j` (`qd_j`), `3 j + 1` (`qdd_j`) or `3 j + 2` (`q_j`
 //! of a prismatic joint) with its exponent, the number of run-time
 //! parameters and for each its index in the derivation's name table with its exponent.
@@ -20,6 +23,29 @@ use crate::expr::{Expr, Var};
 use crate::ring::to_i128_pair;
 use crate::slp::Emit;
 use crate::trig::Trig;
+
+/// An angle's coefficients as runs `(zeros before, length, value)` of one non-zero value.
+fn runs(k: &[i32]) -> Vec<(usize, usize, i32)> {
+    let mut out = Vec::new();
+    let mut j = 0;
+    while j < k.len() {
+        let start = j;
+        while j < k.len() && k[j] == 0 {
+            j += 1;
+        }
+        if j == k.len() {
+            break;
+        }
+        let zeros = j - start;
+        let value = k[j];
+        let first = j;
+        while j < k.len() && k[j] == value {
+            j += 1;
+        }
+        out.push((zeros, j - first, value));
+    }
+    out
+}
 
 /// The digits, in order of value.
 pub const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -67,7 +93,11 @@ pub fn encode<C: Emit>(e: &Expr<C>, names: &mut Vec<String>) -> Result<Vec<u8>, 
             push_signed(&mut out, den);
             if kind != 0 {
                 push_usize(&mut out, angle.len());
-                for &k in angle {
+                let runs = runs(angle);
+                push_usize(&mut out, runs.len());
+                for (zeros, length, k) in runs {
+                    push_usize(&mut out, zeros);
+                    push_usize(&mut out, length);
                     push_signed(&mut out, i128::from(k));
                 }
             }
@@ -118,6 +148,16 @@ mod tests {
                 return v;
             }
         }
+    }
+
+    #[test]
+    fn angles_are_runs() {
+        assert_eq!(runs(&[1]), vec![(0, 1, 1)]);
+        assert_eq!(runs(&[0, 0, 1, 1, 1]), vec![(2, 3, 1)]);
+        assert_eq!(
+            runs(&[0, 1, 1, 0, -1, 2, 2]),
+            vec![(1, 2, 1), (1, 1, -1), (0, 2, 2)]
+        );
     }
 
     #[test]

@@ -193,10 +193,15 @@ const fn layout(code: &[u8], pos: usize) -> Layout {
         read_small(code, pos)
     };
     let mut pos = angle;
-    let mut k = 0;
-    while k < angle_len {
-        pos = read(code, pos).1;
-        k += 1;
+    if kind != 0 {
+        // The runs: their count, then (zeros before, length, value) each.
+        let (runs, next) = read_small(code, pos);
+        pos = next;
+        let mut k = 0;
+        while k < 3 * runs {
+            pos = read(code, pos).1;
+            k += 1;
+        }
     }
     let (powers_len, powers) = read_small(code, pos);
     let pos = skip_pairs(code, powers, powers_len);
@@ -331,12 +336,16 @@ pub struct Angle {
 impl Angle {
     /// The coefficients `k`, q1's first, trailing zeros trimmed.
     pub fn coefficients(&self) -> impl Iterator<Item = i32> + '_ {
-        let mut pos = self.pos;
-        (0..self.len).map(move |_| {
-            let (k, next) = read_signed(self.code, pos);
-            pos = next;
-            i32::try_from(k).unwrap_or(0)
-        })
+        let (runs, pos) = read_small(self.code, self.pos);
+        let mut runs = Runs {
+            code: self.code,
+            pos,
+            runs,
+            zeros: 0,
+            left: 0,
+            value: 0,
+        };
+        (0..self.len).map(move |_| runs.next_coefficient())
     }
 
     /// Whether the coefficients are `k`.
@@ -345,14 +354,20 @@ impl Angle {
         if k.len() != self.len {
             return false;
         }
-        let mut pos = self.pos;
+        let (count, pos) = read_small(self.code, self.pos);
+        let mut runs = Runs {
+            code: self.code,
+            pos,
+            runs: count,
+            zeros: 0,
+            left: 0,
+            value: 0,
+        };
         let mut j = 0;
         while j < self.len {
-            let (c, next) = read_signed(self.code, pos);
-            if c != k[j] as i128 {
+            if runs.next_coefficient() != k[j] {
                 return false;
             }
-            pos = next;
             j += 1;
         }
         true
@@ -365,6 +380,42 @@ impl Angle {
             .zip(q)
             .map(|(k, &x)| f64::from(k) * x)
             .sum()
+    }
+}
+
+/// An angle's coefficients as stored: runs of one non-zero value, each after some zeros (most
+/// angles of an arm are `q_a + ... + q_b`, one run).
+struct Runs {
+    code: &'static [u8],
+    pos: usize,
+    runs: usize,
+    zeros: usize,
+    left: usize,
+    value: i32,
+}
+
+impl Runs {
+    #[allow(clippy::cast_possible_truncation)]
+    const fn next_coefficient(&mut self) -> i32 {
+        if self.zeros == 0 && self.left == 0 && self.runs > 0 {
+            let (zeros, pos) = read_small(self.code, self.pos);
+            let (left, pos) = read_small(self.code, pos);
+            let (value, pos) = read_signed(self.code, pos);
+            self.zeros = zeros;
+            self.left = left;
+            self.value = value as i32;
+            self.pos = pos;
+            self.runs -= 1;
+        }
+        if self.zeros > 0 {
+            self.zeros -= 1;
+            0
+        } else if self.left > 0 {
+            self.left -= 1;
+            self.value
+        } else {
+            0
+        }
     }
 }
 
