@@ -4,30 +4,30 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
         const __NAMES: &[&::core::primitive::str] = &[];
         ::planar_arm::exact::Derivation {
             kinetic_energy: ::planar_arm::__private::terms(
-                b"AKMBACABCECACBACAACGCABDBABCECACCABDBAACMBDCA",
+                b"AKMBACABCECBBBCBACAACGCABDBABCECBBBCCABDBAACMBDCA",
                 __NAMES,
             ),
             potential_energy: ::planar_arm::__private::terms(
-                b"C+3FwMBCAACq9BwMCCCAA",
+                b"C+3FwMBBABCAACq9BwMCBACCAA",
                 __NAMES,
             ),
             mass_matrix: [
                 [
-                    ::planar_arm::__private::terms(b"AKGAABCCCACAA", __NAMES),
-                    ::planar_arm::__private::terms(b"ACGAABCECACAA", __NAMES),
+                    ::planar_arm::__private::terms(b"AKGAABCCCBBBCAA", __NAMES),
+                    ::planar_arm::__private::terms(b"ACGAABCECBBBCAA", __NAMES),
                 ],
                 [
-                    ::planar_arm::__private::terms(b"ACGAABCECACAA", __NAMES),
+                    ::planar_arm::__private::terms(b"ACGAABCECBBBCAA", __NAMES),
                     ::planar_arm::__private::terms(b"ACGAA", __NAMES),
                 ],
             ],
             coriolis: [
-                ::planar_arm::__private::terms(b"CBCCACCABDBACBECACBDCA", __NAMES),
-                ::planar_arm::__private::terms(b"CCECACBACA", __NAMES),
+                ::planar_arm::__private::terms(b"CBCCBBBCCABDBACBECBBBCBDCA", __NAMES),
+                ::planar_arm::__private::terms(b"CCECBBBCBACA", __NAMES),
             ],
             gravity: [
-                ::planar_arm::__private::terms(b"B+3FwMBCAABq9BwMCCCAA", __NAMES),
-                ::planar_arm::__private::terms(b"Bq9BwMCCCAA", __NAMES),
+                ::planar_arm::__private::terms(b"B+3FwMBBABCAABq9BwMCBACCAA", __NAMES),
+                ::planar_arm::__private::terms(b"Bq9BwMCBACCAA", __NAMES),
             ],
         }
     };

@@ -4,60 +4,63 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
         const __NAMES: &[&::core::primitive::str] = &[];
         ::planar_arm::exact::Derivation {
             kinetic_energy: ::planar_arm::__private::terms(
-                b"AECBACABGECACBACABCEDACCBACABCEDAACBACAAKGCABDBABGECACCABDBABCEDACCCABDBABCCDAACCABDBAACGCABGBABCEDACCCABGBABCEDAACCABGBAAKMBDCABCEDAACBDCAACGCDBGBABCEDAACCDBGBAACMBGCA",
+                b"AECBACABGECBBBCBACABCEDBBCCBACABCEDBCBCBACAAKGCABDBABGECBBBCCABDBABCEDBBCCCABDBABCCDBCBCCABDBAACGCABGBABCEDBBCCCABGBABCEDBCBCCABGBAAKMBDCABCEDBCBCBDCAACGCDBGBABCEDBCBCCDBGBAACMBGCA",
                 __NAMES,
             ),
             potential_energy: ::planar_arm::__private::terms(
-                b"Cq9BwCBCAAC+3FwMCCCAACq9BwMDCCCAA",
+                b"Cq9BwCBBABCAAC+3FwMCBACCAACq9BwMDBADCAA",
                 __NAMES,
             ),
             mass_matrix: [
                 [
                     ::planar_arm::__private::terms(
-                        b"AICAABGCCACAABCCDACCAABCCDAACAA",
+                        b"AICAABGCCBBBCAABCCDBBCCAABCCDBCBCAA",
                         __NAMES,
                     ),
                     ::planar_arm::__private::terms(
-                        b"AKGAABGECACAABCEDACCAABCCDAACAA",
+                        b"AKGAABGECBBBCAABCEDBBCCAABCCDBCBCAA",
                         __NAMES,
                     ),
-                    ::planar_arm::__private::terms(b"ACGAABCEDACCAABCEDAACAA", __NAMES),
+                    ::planar_arm::__private::terms(b"ACGAABCEDBBCCAABCEDBCBCAA", __NAMES),
                 ],
                 [
                     ::planar_arm::__private::terms(
-                        b"AKGAABGECACAABCEDACCAABCCDAACAA",
+                        b"AKGAABGECBBBCAABCEDBBCCAABCCDBCBCAA",
                         __NAMES,
                     ),
-                    ::planar_arm::__private::terms(b"AKGAABCCDAACAA", __NAMES),
-                    ::planar_arm::__private::terms(b"ACGAABCEDAACAA", __NAMES),
+                    ::planar_arm::__private::terms(b"AKGAABCCDBCBCAA", __NAMES),
+                    ::planar_arm::__private::terms(b"ACGAABCEDBCBCAA", __NAMES),
                 ],
                 [
-                    ::planar_arm::__private::terms(b"ACGAABCEDACCAABCEDAACAA", __NAMES),
-                    ::planar_arm::__private::terms(b"ACGAABCEDAACAA", __NAMES),
+                    ::planar_arm::__private::terms(
+                        b"ACGAABCEDBBCCAABCEDBCBCAA",
+                        __NAMES,
+                    ),
+                    ::planar_arm::__private::terms(b"ACGAABCEDBCBCAA", __NAMES),
                     ::planar_arm::__private::terms(b"ACGAA", __NAMES),
                 ],
             ],
             coriolis: [
                 ::planar_arm::__private::terms(
-                    b"CFCCACCABDBACBCDACCCABDBACBCDACCCABGBACBCDAACCABGBACFECACBDCACBEDACCBDCACBCDACCCDBGBACBCDAACCDBGBACBEDACCBGCACBEDAACBGCA",
+                    b"CFCCBBBCCABDBACBCDBBCCCABDBACBCDBBCCCABGBACBCDBCBCCABGBACFECBBBCBDCACBEDBBCCBDCACBCDBBCCCDBGBACBCDBCBCCDBGBACBEDBBCCBGCACBEDBCBCBGCA",
                     __NAMES,
                 ),
                 ::planar_arm::__private::terms(
-                    b"CGECACBACACCEDACCBACACBCDAACCABGBACBCDAACCDBGBACBEDAACBGCA",
+                    b"CGECBBBCBACACCEDBBCCBACACBCDBCBCCABGBACBCDBCBCCDBGBACBEDBCBCBGCA",
                     __NAMES,
                 ),
                 ::planar_arm::__private::terms(
-                    b"CCEDACCBACACCEDAACBACACCCDAACCABDBACCEDAACBDCA",
+                    b"CCEDBBCCBACACCEDBCBCBACACCCDBCBCCABDBACCEDBCBCBDCA",
                     __NAMES,
                 ),
             ],
             gravity: [
                 ::planar_arm::__private::terms(
-                    b"Bq9BwCBCAAB+3FwMCCCAABq9BwMDCCCAA",
+                    b"Bq9BwCBBABCAAB+3FwMCBACCAABq9BwMDBADCAA",
                     __NAMES,
                 ),
-                ::planar_arm::__private::terms(b"B+3FwMCCCAABq9BwMDCCCAA", __NAMES),
-                ::planar_arm::__private::terms(b"Bq9BwMDCCCAA", __NAMES),
+                ::planar_arm::__private::terms(b"B+3FwMCBACCAABq9BwMDBADCAA", __NAMES),
+                ::planar_arm::__private::terms(b"Bq9BwMDBADCAA", __NAMES),
             ],
         }
     };

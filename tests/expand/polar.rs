@@ -8,7 +8,7 @@ impl ::planar_arm::PlanarArm<2> for Polar {
                 __NAMES,
             ),
             potential_energy: ::planar_arm::__private::terms(
-                b"Cm3qCg6HBCAAC+3FwMBCBFBA",
+                b"Cm3qCg6HBBABCAAC+3FwMBBABCBFBA",
                 __NAMES,
             ),
             mass_matrix: [
@@ -26,8 +26,11 @@ impl ::planar_arm::PlanarArm<2> for Polar {
                 ::planar_arm::__private::terms(b"A1BwCBACAAFECACFBA", __NAMES),
             ],
             gravity: [
-                ::planar_arm::__private::terms(b"Bm3qCg6HBCAAB+3FwMBCBFBA", __NAMES),
-                ::planar_arm::__private::terms(b"C+3FwMBCAA", __NAMES),
+                ::planar_arm::__private::terms(
+                    b"Bm3qCg6HBBABCAAB+3FwMBBABCBFBA",
+                    __NAMES,
+                ),
+                ::planar_arm::__private::terms(b"C+3FwMBBABCAA", __NAMES),
             ],
         }
     };
