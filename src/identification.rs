@@ -15,12 +15,13 @@ use crate::PlanarArm;
 /// rank threshold), and [`BASE_PARAMETERS`](Self::BASE_PARAMETERS) shows each as a formula
 /// in the standard ones (`zz1 + 9/16 m2 + 9/16 m3`: Gautier and Khalil's grouping).
 ///
-/// Derived for every arm of up to 20 links whose gravity is a literal; its masses, inertias,
+/// Derived for every arm of up to 30 links whose gravity is a literal; its masses, inertias,
 /// centres of mass, payload, armature and friction may be run-time parameters, and so may its
 /// lengths if it has gravity (the groupings are then polynomials in them, `zz1 + l1^2 m2`).
 /// Not derived for a run-time gravity, nor for run-time lengths without gravity: some
-/// groupings would then be fractions in them. Beyond 20 links the exact elimination would cost more compile time than the rest of the
-/// derive (docs/performance.md). `P` is the number of standard parameters, `B` of base
+/// groupings would then be fractions in them. Beyond 30 links the exact elimination, which
+/// grows about as the fifth power of the links, would cost more compile time than the rest of
+/// the derive (docs/performance.md). `P` is the number of standard parameters, `B` of base
 /// parameters. docs/identification.md lists the parameters, compares the groupings with
 /// Gautier and Khalil's rules and gives operation counts.
 ///

@@ -264,9 +264,24 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
     }
     let mut exprs: Vec<Option<(Prec, TokenStream)>> = vec![None; p.nodes().len()];
     let mut temp = 0usize;
+    // For the chunking of long methods (see `chunked`): the statements after the inputs',
+    // which statement each node's expression reads, and each statement's last reader.
+    let prefix = statements.len();
+    let mut reads: Vec<Vec<usize>> = vec![Vec::new(); p.nodes().len()];
+    let mut bound: Vec<Option<usize>> = vec![None; p.nodes().len()];
+    let mut last_read: Vec<usize> = vec![0; statements.len()];
+    let mut defined: Vec<(usize, Ident)> = Vec::new();
     for (idx, node) in p.nodes().iter().enumerate() {
         if uses[idx] == 0 {
             continue;
+        }
+        let mut read = Vec::new();
+        for c in crate::slp::children(node) {
+            match bound[c.0 as usize] {
+                Some(s) => read.push(s),
+                // An inlined child is read by this node only.
+                None => read.append(&mut reads[c.0 as usize]),
+            }
         }
         let id = Id(u32::try_from(idx).unwrap_or(u32::MAX));
         let get = |c: Id, exprs: &Vec<Option<(Prec, TokenStream)>>| {
@@ -355,9 +370,17 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
                     format!("t{temp}")
                 });
             let name = local(&fresh(&base, &mut taken));
+            let at = statements.len();
+            for &r in &read {
+                last_read[r] = at;
+            }
             statements.push(quote!(let #name = #ts;));
+            last_read.push(0);
+            defined.push((at, name.clone()));
+            bound[idx] = Some(at);
             exprs[idx] = Some((Prec::Atom, name.into_token_stream()));
         } else {
+            reads[idx] = read;
             exprs[idx] = Some((prec, ts));
         }
     }
@@ -366,23 +389,76 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
         let (_, ts) = exprs[id.0 as usize]
             .clone()
             .unwrap_or_else(|| (Prec::Atom, scalar.zero()));
+        let k = id.0 as usize;
         // Leaves and repeated outputs (the symmetric half of M) get their own readable let.
         let ident = match syn_ident(&ts) {
-            Some(existing) => existing,
+            Some(existing) => {
+                if let Some(s) = bound[k] {
+                    last_read[s] = usize::MAX;
+                }
+                existing
+            }
             None => {
                 let ident = local(&fresh(name, &mut taken));
+                let at = statements.len();
+                for &r in &reads[k] {
+                    last_read[r] = at;
+                }
                 statements.push(quote!(let #ident = #ts;));
-                exprs[id.0 as usize] = Some((Prec::Atom, ident.clone().into_token_stream()));
+                last_read.push(usize::MAX);
+                defined.push((at, ident.clone()));
+                bound[k] = Some(at);
+                exprs[k] = Some((Prec::Atom, ident.clone().into_token_stream()));
                 ident
             }
         };
         outputs.push(ident);
     }
     Ok(Rendered {
-        statements,
+        statements: chunked(statements, prefix, &defined, &last_read),
         outputs,
         inputs_used,
     })
+}
+
+/// The most `let`s in one block of a generated method.
+///
+/// Each `let` opens a scope that nests until the end of its block, and LLVM builds the debug
+/// information of nested scopes recursively: a method of several thousand `let`s (the
+/// regressor of a 30-link arm has 4,000) overflowed rustc's stack in a `dev` build
+/// (`debuginfo = 2`), where 2,700 still compiled.
+const CHUNK: usize = 1000;
+
+/// `statements[prefix..]` in blocks of at most [`CHUNK`] `let`s, each block handing on what
+/// later statements read: `let (a, b, ...) = { ...; (a, b, ...) };`. Methods of fewer
+/// statements are left as they are.
+fn chunked(
+    statements: Vec<TokenStream>,
+    prefix: usize,
+    defined: &[(usize, Ident)],
+    last_read: &[usize],
+) -> Vec<TokenStream> {
+    if statements.len() - prefix <= CHUNK {
+        return statements;
+    }
+    let name_of: BTreeMap<usize, &Ident> = defined.iter().map(|(s, i)| (*s, i)).collect();
+    let mut out = Vec::new();
+    let mut it = statements.into_iter().enumerate().peekable();
+    while let Some((_, st)) = it.next_if(|(s, _)| *s < prefix) {
+        out.push(st);
+    }
+    let rest: Vec<(usize, TokenStream)> = it.collect();
+    for chunk in rest.chunks(CHUNK) {
+        let end = chunk.last().map_or(0, |c| c.0 + 1);
+        let handed: Vec<&Ident> = chunk
+            .iter()
+            .filter(|(s, _)| last_read[*s] >= end)
+            .filter_map(|(s, _)| name_of.get(s).copied())
+            .collect();
+        let body = chunk.iter().map(|(_, st)| st);
+        out.push(quote!(let (#(#handed,)*) = { #(#body)* (#(#handed,)*) };));
+    }
+    out
 }
 
 use quote::ToTokens as _;

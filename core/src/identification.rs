@@ -170,10 +170,10 @@ impl<C: Emit> Derived<C> {
 }
 
 /// The longest arm that gets an `Identification` impl. The exact elimination grows about as
-/// the fifth power of the links and runs unoptimised in a user's build: at 30 links it took 40
-/// of a 100 s build (docs/performance.md), past the compile-time budget, for chains (snakes,
-/// discretised cables) that are rarely identified link by link.
-pub const MAX_LINKS: usize = 20;
+/// the fifth power of the links and runs unoptimised in a user's build: at 30 links the
+/// user crate's clean rebuild takes 24 s with it and 16 s without (docs/performance.md),
+/// inside the 90 s budget; longer chains would outgrow it.
+pub const MAX_LINKS: usize = 30;
 
 /// `impl ::planar_arm::Identification<N, P, B>` for the arm, or nothing when its lengths or
 /// gravity are such that the groupings are not polynomials (see
