@@ -5,10 +5,11 @@
 //!   `2 C_ij = Mdot_ij + dp_i/dq_j - dp_j/dq_i` from the momenta `p = M qd`. Its entries have
 //!   as many terms as M's times the rates, and deriving and emitting them cost long arms most
 //!   of the derive's time.
-//! - [`absolute_derivatives`] and [`absolute_program`]: for arms whose joints all turn. In the links' absolute angles
-//!   `phi_a = q_1 + ... + q_a` (rates `w = J qd`, `J` the lower triangle of ones) the kinetic
-//!   energy is `1/2 w^T Mt(phi) w` with `M = J^T Mt J + diag(armature)` and each `Mt_ab` a
-//!   function of `phi_a - phi_b` alone. For such a metric the Christoffel sum collapses to
+//! - [`absolute_derivatives`] and [`absolute_program`]: for arms whose joints all turn. In
+//!   the links' absolute angles `phi_a = q_1 + ... + q_a` (rates `w = J qd`, `J` the lower
+//!   triangle of ones) the kinetic energy is `1/2 w^T Mt(phi) w` with
+//!   `M = J^T Mt J + diag(armature)` and each `Mt_ab` a function of `phi_a - phi_b` alone
+//!   ([`crate::mechanics`] builds it pair by pair). For such a metric the Christoffel sum collapses to
 //!   `Ct_ab = dMt_ab/dphi_b w_b`, and since `J` is constant the symbols transform as a tensor:
 //!   `C = J^T Ct J`, sums of suffixes. `D_ab = dMt_ab/dphi_b` is antisymmetric, so the
 //!   program needs `n (n - 1) / 2` small derivatives, twice as many products with the rates
