@@ -259,11 +259,7 @@ impl<C: Emit> Derived<C> {
             .get_or_init(|| {
                 let mut p = Program::new();
                 let h = self.expanded_bias(&mut p);
-                let outputs = h
-                    .into_iter()
-                    .enumerate()
-                    .map(|(i, id)| (format!("h{}", i + 1), id))
-                    .collect();
+                let outputs = vector_outputs("h", h);
                 Method::new(p, outputs)
             })
             .clone()
@@ -379,11 +375,7 @@ impl<C: Emit> Derived<C> {
     fn newton_euler_method(&self, name: &str, terms: Terms) -> Method {
         let mut p = Program::new();
         let tau = newton_euler(&mut p, &self.arm, terms);
-        let outputs = tau
-            .into_iter()
-            .enumerate()
-            .map(|(i, id)| (format!("{name}{}", i + 1), id))
-            .collect();
+        let outputs = vector_outputs(name, tau);
         Method::new(p, outputs).described(RNEA)
     }
 
@@ -572,11 +564,7 @@ impl<C: Emit> Derived<C> {
     pub fn friction_method(&self) -> Method {
         let mut p = Program::new();
         let f = self.friction_nodes(&mut p);
-        let outputs = f
-            .into_iter()
-            .enumerate()
-            .map(|(i, id)| (format!("f{}", i + 1), id))
-            .collect();
+        let outputs = vector_outputs("f", f);
         Method::new(p, outputs)
     }
 
@@ -655,11 +643,7 @@ impl<C: Emit> Derived<C> {
                 ldlt_solve(&mut p, &m, &rhs, &floors)
             }
         };
-        let outputs = qdd
-            .into_iter()
-            .enumerate()
-            .map(|(i, id)| (format!("qdd{}", i + 1), id))
-            .collect();
+        let outputs = vector_outputs("qdd", qdd);
         let form = |recursive: bool, how: &str| {
             if recursive {
                 format!("by the {how} unrolled for this arm")
@@ -783,6 +767,14 @@ fn expanded_mass_matrix<C: Emit>(p: &mut Program, d: &Dynamics<C>) -> Vec<Vec<Id
 }
 
 /// Row-major outputs `m11, m12, ...` of a symmetric matrix (repeated nodes below the diagonal).
+/// `name1, name2, ...` for the nodes of a vector.
+fn vector_outputs(name: &str, ids: Vec<Id>) -> Vec<(String, Id)> {
+    ids.into_iter()
+        .enumerate()
+        .map(|(i, id)| (format!("{name}{}", i + 1), id))
+        .collect()
+}
+
 fn matrix_outputs(m: &[Vec<Id>]) -> Vec<(String, Id)> {
     let mut outputs = Vec::new();
     for (i, row) in m.iter().enumerate() {
