@@ -73,9 +73,36 @@ const LIMIT: f64 = 1_647_099.0;
 /// assert!(close(s1, 0.5_f64.sin()) && close(c1, 0.5_f64.cos()));
 /// assert!(close(s2, (-2.0_f64).sin()) && close(c2, (-2.0_f64).cos()));
 /// ```
-#[inline(always)] // Out of line, the results go through memory: 1.5x slower at N = 2.
+///
+/// In a build with debug assertions (Cargo's `dev` profile) the same kernel runs out of line,
+/// in one non-generic function compiled with this crate, so that a user's crate does not
+/// compile the kernel again for each array length its methods use; same operations, same bits.
+#[inline(always)]
 #[must_use]
 pub fn sin_cos<const N: usize>(q: [f64; N]) -> [(f64, f64); N] {
+    #[cfg(not(debug_assertions))]
+    {
+        pairs(q)
+    }
+    #[cfg(debug_assertions)]
+    {
+        let mut out = [(0.0, 0.0); N];
+        out_of_line(&q, &mut out);
+        out
+    }
+}
+
+/// [`sin_cos`] inlined into its caller, as optimised builds run it: out of line, the results
+/// go through memory, 1.5x slower at N = 2.
+///
+/// Not in a `dev` build: there nothing is inlined anyway, and every user crate would compile
+/// this function's two kernels and their eleven closures again for each `N` its generated
+/// methods use (at six links half the LLVM IR of a crate that calls four of them, and 0.08 s
+/// of its 0.74 s clean rebuild, docs/performance.md). [`out_of_line`] does the same
+/// operations in the same order, so both give the same bits (tested).
+#[cfg_attr(debug_assertions, allow(dead_code))]
+#[inline(always)]
+fn pairs<const N: usize>(q: [f64; N]) -> [(f64, f64); N] {
     let mut out = [(0.0, 0.0); N];
     let mut j = 0;
     while j + 1 < N {
@@ -89,14 +116,37 @@ pub fn sin_cos<const N: usize>(q: [f64; N]) -> [(f64, f64); N] {
     }
     // One test for the whole array keeps the common path free of per-angle branches (a
     // per-angle test alone made the kernel 1.4x slower at N = 2..4).
-    let mut in_range = true;
-    for x in q {
-        in_range &= x.abs() <= LIMIT;
-    }
-    if !in_range {
+    if !in_range(&q) {
         outside_the_range(&q, &mut out);
     }
     out
+}
+
+/// [`pairs`] over slices (`out` as long as `q`), compiled once, in this crate.
+#[cfg_attr(not(debug_assertions), allow(dead_code))]
+#[inline(never)]
+fn out_of_line(q: &[f64], out: &mut [(f64, f64)]) {
+    let mut j = 0;
+    while j + 1 < q.len() {
+        [out[j], out[j + 1]] = kernel([q[j], q[j + 1]]);
+        j += 2;
+    }
+    if j < q.len() {
+        [out[j]] = kernel([q[j]]);
+    }
+    if !in_range(q) {
+        outside_the_range(q, out);
+    }
+}
+
+/// Whether every angle is within the kernel's range (false for NaN).
+#[inline(always)]
+fn in_range(q: &[f64]) -> bool {
+    let mut all = true;
+    for x in q {
+        all &= x.abs() <= LIMIT;
+    }
+    all
 }
 
 /// `(sin x_i, cos x_i)` for the `L` lanes of a batch in the array form of the kernel (the
@@ -106,11 +156,7 @@ pub fn sin_cos<const N: usize>(q: [f64; N]) -> [(f64, f64); N] {
 #[must_use]
 pub(crate) fn sin_cos_lanes<const L: usize>(x: [f64; L]) -> ([f64; L], [f64; L]) {
     let mut out = kernel(x);
-    let mut in_range = true;
-    for v in x {
-        in_range &= v.abs() <= LIMIT;
-    }
-    if !in_range {
+    if !in_range(&x) {
         outside_the_range(&x, &mut out);
     }
     (out.map(|(s, _)| s), out.map(|(_, c)| c))
@@ -155,7 +201,7 @@ pub(crate) fn sin_cos_x4(x: wide::f64x4) -> (wide::f64x4, wide::f64x4) {
 /// The standard library's `sin_cos` for the angles the kernel does not cover.
 #[cold]
 #[inline(never)]
-fn outside_the_range<const N: usize>(q: &[f64; N], out: &mut [(f64, f64); N]) {
+fn outside_the_range(q: &[f64], out: &mut [(f64, f64)]) {
     use core::cmp::Ordering::{Equal, Less};
     for (x, sc) in q.iter().zip(out) {
         // NaN compares as not in range: those go to the standard library too.
@@ -461,7 +507,7 @@ static SIN_TABLE: [f64; 256] = [
 
 #[cfg(test)]
 mod tests {
-    use super::{sin_cos, LIMIT, SIN_TABLE};
+    use super::{out_of_line, pairs, sin_cos, LIMIT, SIN_TABLE};
 
     /// Distance in units in the last place (same-sign results; otherwise `u64::MAX`).
     fn ulps(a: f64, b: f64) -> u64 {
@@ -605,6 +651,39 @@ mod tests {
         for (j, &x) in xs.iter().enumerate() {
             assert_eq!(five[j], sin_cos([x])[0]);
             assert_eq!(five[j], sin_cos([f64::NAN, x])[1]);
+        }
+    }
+
+    /// The inlined form optimised builds run and the out-of-line form of `dev` builds give
+    /// the same bits, whatever the length, range or NaN.
+    #[test]
+    fn the_inlined_and_out_of_line_forms_agree_bit_for_bit() {
+        fn both<const N: usize>(q: [f64; N]) {
+            let mut slow = [(0.0, 0.0); N];
+            out_of_line(&q, &mut slow);
+            let fast = pairs(q);
+            for ((a, b), x) in fast.iter().zip(&slow).zip(q) {
+                assert_eq!(
+                    (a.0.to_bits(), a.1.to_bits()),
+                    (b.0.to_bits(), b.1.to_bits()),
+                    "{x:e}"
+                );
+            }
+        }
+        let mut rng = Rng(0x2545_F491_4F6C_DD1D);
+        let mut x = || {
+            let u = rng.unit();
+            match ((u + 1.0) * 1e6) as u64 % 50 {
+                0 => f64::NAN,
+                1 => 3.0 * LIMIT * u,
+                _ => 10.0 * u,
+            }
+        };
+        for _ in 0..20_000 {
+            both([x()]);
+            both([x(), x()]);
+            both([x(), x(), x()]);
+            both([x(), x(), x(), x(), x(), x(), x()]);
         }
     }
 }
