@@ -38,6 +38,25 @@ fn central<const N: usize>(
     }))
 }
 
+/// `(dtau/dq, dtau/dqd)`.
+type Derivatives<const N: usize> = (SMatrix<f64, N, N>, SMatrix<f64, N, N>);
+
+/// The forward dynamics' derivatives from the inverse dynamics' ones at `qdd = FD(q, qd, tau)`:
+/// `-M^-1 dtau/dq`, `-M^-1 dtau/dqd` and `M^-1`, by Cholesky (`None` if that fails).
+#[allow(clippy::type_complexity)]
+fn through_inverse<A: PlanarArm<N>, const N: usize>(
+    arm: &A,
+    q: &SVector<f64, N>,
+    qd: &SVector<f64, N>,
+    tau: &SVector<f64, N>,
+    inverse: impl Fn(&A, &SVector<f64, N>, &SVector<f64, N>, &SVector<f64, N>) -> Derivatives<N>,
+) -> Option<(SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>)> {
+    let qdd = arm.forward_dynamics(black_box(q), black_box(qd), black_box(tau));
+    let (dq, dqd) = inverse(arm, q, qd, &qdd);
+    let minv = arm.mass_matrix(q).cholesky()?.inverse();
+    Some((-(minv * dq), -(minv * dqd), minv))
+}
+
 #[allow(clippy::cast_precision_loss)]
 fn row<A: PlanarArm<N> + Default, const N: usize>() {
     let arm = A::default();
@@ -107,42 +126,21 @@ fn row<A: PlanarArm<N> + Default, const N: usize>() {
             ));
         },
     );
-    let (fd_jet, _) = interleaved(
-        || {
-            black_box(arm.forward_dynamics_derivatives(
-                black_box(&q),
-                black_box(&qd),
-                black_box(&tau),
-            ));
-        },
-        || {
-            let qdd = arm.forward_dynamics(black_box(&q), black_box(&qd), black_box(&tau));
-            let (dq, dqd) = planar_arm::Jet::inverse_dynamics_derivatives(&arm, &q, &qd, &qdd);
-            if let Some(chol) = arm.mass_matrix(&q).cholesky() {
-                let minv = chol.inverse();
-                black_box((-(minv * dq), -(minv * dqd), minv));
-            }
-        },
-    );
+    let emitted = || {
+        black_box(arm.forward_dynamics_derivatives(black_box(&q), black_box(&qd), black_box(&tau)));
+    };
+    let (fd_jet, _) = interleaved(emitted, || {
+        black_box(through_inverse(&arm, &q, &qd, &tau, |a, q, qd, qdd| {
+            planar_arm::Jet::inverse_dynamics_derivatives(a, q, qd, qdd)
+        }));
+    });
     // The trait's default, which arms without an emitted `forward_dynamics_derivatives` take:
-    // the emitted inverse dynamics' derivatives at `qdd`, M^-1 by Cholesky, two products.
-    let (fd_default, _) = interleaved(
-        || {
-            black_box(arm.forward_dynamics_derivatives(
-                black_box(&q),
-                black_box(&qd),
-                black_box(&tau),
-            ));
-        },
-        || {
-            let qdd = arm.forward_dynamics(black_box(&q), black_box(&qd), black_box(&tau));
-            let (dq, dqd) = arm.inverse_dynamics_derivatives(&q, &qd, &qdd);
-            if let Some(chol) = arm.mass_matrix(&q).cholesky() {
-                let minv = chol.inverse();
-                black_box((-(minv * dq), -(minv * dqd), minv));
-            }
-        },
-    );
+    // the emitted inverse dynamics' derivatives at `qdd`.
+    let (fd_default, _) = interleaved(emitted, || {
+        black_box(through_inverse(&arm, &q, &qd, &tau, |a, q, qd, qdd| {
+            a.inverse_dynamics_derivatives(q, qd, qdd)
+        }));
+    });
     println!(
         "| {N} | {id_ns:.0} | {:.0} | {id:.2}x | {id_jet:.2}x | {fd_ns:.0} | {:.0} | {fd:.2}x | {fd_jet:.2}x | {fd_default:.2}x |",
         id * id_ns,
