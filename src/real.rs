@@ -136,13 +136,19 @@ macro_rules! batch {
             #[allow(clippy::cast_possible_truncation)]
             #[inline(always)]
             fn sin_cos<const N: usize>(q: [Self; N]) -> [(Self, Self); N] {
-                q.map(|x| {
-                    let (s, c) = trig::sin_cos_lanes::<$lanes>(x.0.to_array().map(f64::from));
-                    (
+                // An index loop for the reason given at `WideF64x4`.
+                let zero = $ty(wide::$wide::ZERO);
+                let mut out = [(zero, zero); N];
+                let mut j = 0;
+                while j < N {
+                    let (s, c) = trig::sin_cos_lanes::<$lanes>(q[j].0.to_array().map(f64::from));
+                    out[j] = (
                         $ty(wide::$wide::from(s.map(|v| v as $lane))),
                         $ty(wide::$wide::from(c.map(|v| v as $lane))),
-                    )
-                })
+                    );
+                    j += 1;
+                }
+                out
             }
             #[allow(clippy::cast_possible_truncation)]
             #[inline(always)]
@@ -167,10 +173,18 @@ impl Real for WideF64x4 {
     }
     #[inline(always)]
     fn sin_cos<const N: usize>(q: [Self; N]) -> [(Self, Self); N] {
-        q.map(|x| {
-            let (s, c) = trig::sin_cos_x4(x.0);
-            (WideF64x4(s), WideF64x4(c))
-        })
+        // An index loop, not `q.map`: from six joints on, `map` was compiled as a separate
+        // function (`try_map`) that returned its 384 bytes through `memcpy`, which made the
+        // batched inverse dynamics at N = 6 half as fast as the mass matrix.
+        let zero = WideF64x4(wide::f64x4::ZERO);
+        let mut out = [(zero, zero); N];
+        let mut j = 0;
+        while j < N {
+            let (s, c) = trig::sin_cos_x4(q[j].0);
+            out[j] = (WideF64x4(s), WideF64x4(c));
+            j += 1;
+        }
+        out
     }
     #[inline(always)]
     fn sign(self) -> Self {
