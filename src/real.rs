@@ -173,9 +173,9 @@ impl Real for WideF64x4 {
     }
     #[inline(always)]
     fn sin_cos<const N: usize>(q: [Self; N]) -> [(Self, Self); N] {
-        // An index loop, not `q.map`: from six joints on, `map` was compiled as a separate
-        // function (`try_map`) that returned its 384 bytes through `memcpy`, which made the
-        // batched inverse dynamics at N = 6 half as fast as the mass matrix.
+        // An index loop, not `q.map`: where several methods shared an array length, `map` was
+        // compiled as a separate function (`try_map`) returning through `memcpy`, which made
+        // the batched inverse dynamics at N = 6 half as fast as the mass matrix.
         let zero = WideF64x4(wide::f64x4::ZERO);
         let mut out = [(zero, zero); N];
         let mut j = 0;
