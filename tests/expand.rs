@@ -54,8 +54,8 @@ fn expand(n: usize) -> String {
     };
     let mut tokens = generate(&derived, &header).expect("the paper's arms emit");
     tokens.extend(closed_forms(&derived, &header));
-    // As the derive finishes its output: primitives by their `::core` paths.
-    let tokens = planar_arm::symbolic::paths::qualify(tokens, None);
+    // Not rewritten by `paths::qualify`, as the derive's output is not without a crate path:
+    // the engine writes the primitives' `::core` paths itself.
     let file: syn::File = syn::parse2(tokens).expect("generated code parses");
     prettyplease::unparse(&file)
 }

@@ -11,6 +11,7 @@ use crate::emit::{coefficient_tokens, f64_tokens, local};
 use crate::generate::Header;
 use crate::mechanics::JointKind;
 use crate::methods::Derived;
+use crate::paths::F64;
 use crate::slp::Emit;
 
 /// Closed-form inverse kinematics and inverse statics for two and three links (the paper's
@@ -54,19 +55,19 @@ pub fn closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
             quote! {
                 #[automatically_derived]
                 impl #impl_generics ::planar_arm::kinematics::ClosedFormIk<2> for #ty #where_clause {
-                    type Target = ::planar_arm::nalgebra::Point2<f64>;
+                    type Target = ::planar_arm::nalgebra::Point2<#F64>;
                     #[doc = #doc]
                     #[inline]
-                    fn inverse_kinematics(&self, #target: &::planar_arm::nalgebra::Point2<f64>)
-                        -> ::core::result::Result<[::planar_arm::nalgebra::SVector<f64, 2>; 2], ::planar_arm::ArmError> {
+                    fn inverse_kinematics(&self, #target: &::planar_arm::nalgebra::Point2<#F64>)
+                        -> ::core::result::Result<[::planar_arm::nalgebra::SVector<#F64, 2>; 2], ::planar_arm::ArmError> {
                         #ik
                     }
                 }
                 #[automatically_derived]
                 impl #impl_generics ::planar_arm::kinematics::TipForce for #ty #where_clause {
                     #[inline]
-                    fn tip_force(&self, #q: &::planar_arm::nalgebra::SVector<f64, 2>, #tau: &::planar_arm::nalgebra::SVector<f64, 2>)
-                        -> ::core::result::Result<::planar_arm::nalgebra::Vector2<f64>, ::planar_arm::ArmError> {
+                    fn tip_force(&self, #q: &::planar_arm::nalgebra::SVector<#F64, 2>, #tau: &::planar_arm::nalgebra::SVector<#F64, 2>)
+                        -> ::core::result::Result<::planar_arm::nalgebra::Vector2<#F64>, ::planar_arm::ArmError> {
                         ::planar_arm::kinematics::tip_force2(#l1, #l2, #q, #tau)
                     }
                 }
@@ -81,20 +82,20 @@ pub fn closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
             quote! {
             #[automatically_derived]
             impl #impl_generics ::planar_arm::kinematics::ClosedFormIk<3> for #ty #where_clause {
-                type Target = ::planar_arm::nalgebra::Isometry2<f64>;
+                type Target = ::planar_arm::nalgebra::Isometry2<#F64>;
                 /// Through the wrist point, as in the paper: the two-link solution for
                 /// (x - l3 cos phi, y - l3 sin phi), then q3 = phi - q1 - q2.
                 #[inline]
-                fn inverse_kinematics(&self, #target: &::planar_arm::nalgebra::Isometry2<f64>)
-                    -> ::core::result::Result<[::planar_arm::nalgebra::SVector<f64, 3>; 2], ::planar_arm::ArmError> {
+                fn inverse_kinematics(&self, #target: &::planar_arm::nalgebra::Isometry2<#F64>)
+                    -> ::core::result::Result<[::planar_arm::nalgebra::SVector<#F64, 3>; 2], ::planar_arm::ArmError> {
                     #ik3
                 }
             }
             #[automatically_derived]
             impl #impl_generics ::planar_arm::kinematics::TipWrench for #ty #where_clause {
                 #[inline]
-                fn tip_wrench(&self, #q: &::planar_arm::nalgebra::SVector<f64, 3>, #tau: &::planar_arm::nalgebra::SVector<f64, 3>)
-                    -> ::core::result::Result<(::planar_arm::nalgebra::Vector2<f64>, f64), ::planar_arm::ArmError> {
+                fn tip_wrench(&self, #q: &::planar_arm::nalgebra::SVector<#F64, 3>, #tau: &::planar_arm::nalgebra::SVector<#F64, 3>)
+                    -> ::core::result::Result<(::planar_arm::nalgebra::Vector2<#F64>, #F64), ::planar_arm::ArmError> {
                     ::planar_arm::kinematics::tip_wrench3(#l1, #l2, #l3, #q, #tau)
                 }
             }
@@ -130,9 +131,9 @@ fn ik_impl(header: &Header, n: usize, doc: &str, solve: &TokenStream) -> TokenSt
     let target = local("target");
     let nn = Literal::usize_unsuffixed(n);
     let target_ty = if n == 2 {
-        quote!(::planar_arm::nalgebra::Point2<f64>)
+        quote!(::planar_arm::nalgebra::Point2<#F64>)
     } else {
-        quote!(::planar_arm::nalgebra::Isometry2<f64>)
+        quote!(::planar_arm::nalgebra::Isometry2<#F64>)
     };
     quote! {
         #[automatically_derived]
@@ -141,7 +142,7 @@ fn ik_impl(header: &Header, n: usize, doc: &str, solve: &TokenStream) -> TokenSt
             #[doc = #doc]
             #[inline]
             fn inverse_kinematics(&self, #target: &#target_ty)
-                -> ::core::result::Result<[::planar_arm::nalgebra::SVector<f64, #nn>; 2], ::planar_arm::ArmError> {
+                -> ::core::result::Result<[::planar_arm::nalgebra::SVector<#F64, #nn>; 2], ::planar_arm::ArmError> {
                 #solve
             }
         }
@@ -206,8 +207,8 @@ fn mixed_closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
                 /// By the generated Jacobian: `J^T F = tau`, a prismatic joint's entry of
                 /// `tau` a force along it.
                 #[inline]
-                fn tip_force(&self, #q: &::planar_arm::nalgebra::SVector<f64, 2>, #tau: &::planar_arm::nalgebra::SVector<f64, 2>)
-                    -> ::core::result::Result<::planar_arm::nalgebra::Vector2<f64>, ::planar_arm::ArmError> {
+                fn tip_force(&self, #q: &::planar_arm::nalgebra::SVector<#F64, 2>, #tau: &::planar_arm::nalgebra::SVector<#F64, 2>)
+                    -> ::core::result::Result<::planar_arm::nalgebra::Vector2<#F64>, ::planar_arm::ArmError> {
                     #force.map(|w| ::planar_arm::nalgebra::Vector2::new(w[0], w[1]))
                 }
             }
@@ -218,8 +219,8 @@ fn mixed_closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
                 /// By the generated Jacobian: `J^T (F, T) = tau`, a prismatic joint's entry of
                 /// `tau` a force along it.
                 #[inline]
-                fn tip_wrench(&self, #q: &::planar_arm::nalgebra::SVector<f64, 3>, #tau: &::planar_arm::nalgebra::SVector<f64, 3>)
-                    -> ::core::result::Result<(::planar_arm::nalgebra::Vector2<f64>, f64), ::planar_arm::ArmError> {
+                fn tip_wrench(&self, #q: &::planar_arm::nalgebra::SVector<#F64, 3>, #tau: &::planar_arm::nalgebra::SVector<#F64, 3>)
+                    -> ::core::result::Result<(::planar_arm::nalgebra::Vector2<#F64>, #F64), ::planar_arm::ArmError> {
                     #wrench.map(|w| (::planar_arm::nalgebra::Vector2::new(w[0], w[1]), w[2]))
                 }
             }

@@ -17,6 +17,7 @@ use quote::quote;
 
 use crate::expr::Expr;
 use crate::methods::{two, Derived, Method};
+use crate::paths::F64;
 use crate::poly::Param;
 use crate::ring::{show, to_f64, to_i128_pair, Rational};
 use crate::slp::{Emit, Id, Input, Node, Program};
@@ -222,7 +223,7 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
                 None => Ident::new(name_of_field, Span::call_site()),
             };
             statements.push(match scalar {
-                Scalar::F64 => quote!(let #name: f64 = self.#field;),
+                Scalar::F64 => quote!(let #name: #F64 = self.#field;),
                 Scalar::Generic => {
                     quote!(let #name: __T = ::planar_arm::__private::real(self.#field);)
                 }
@@ -235,7 +236,7 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
             let (name, block) = (local(&input_name(i, p.params())), local("block"));
             let k = proc_macro2::Literal::usize_unsuffixed(k);
             statements.push(match scalar {
-                Scalar::F64 => quote!(let #name: f64 = #block.0[#k];),
+                Scalar::F64 => quote!(let #name: #F64 = #block.0[#k];),
                 Scalar::Generic => {
                     quote!(let #name: __T = ::planar_arm::__private::real(#block.0[#k]);)
                 }

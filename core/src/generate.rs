@@ -13,6 +13,7 @@ use crate::emit::{
 use crate::expr::Expr;
 use crate::mechanics::JointKind;
 use crate::methods::{Derived, Method};
+use crate::paths::{F64, STR};
 use crate::slp::Emit;
 use crate::slp::Input;
 
@@ -85,7 +86,7 @@ pub(crate) fn emit_fn(
         Scalar::F64
     };
     let rendered = render(method, scalar)?;
-    let real = if f.generic { quote!(__T) } else { quote!(f64) };
+    let real = if f.generic { quote!(__T) } else { quote!(#F64) };
     let nn = Literal::usize_unsuffixed(n);
     let mut params = Vec::new();
     let mut unpack = Vec::new();
@@ -122,7 +123,7 @@ pub(crate) fn emit_fn(
                 let u = rendered.inputs_used.contains(&Input::Force(0));
                 let v = rendered.inputs_used.contains(&Input::Force(1));
                 let pname = if u || v { local("force") } else { local("_") };
-                params.push(quote!(#pname: &::planar_arm::nalgebra::Vector2<f64>));
+                params.push(quote!(#pname: &::planar_arm::nalgebra::Vector2<#F64>));
                 if u || v {
                     let (u, v) = (local("u"), local("v"));
                     unpack.push(quote!(let [#u, #v] = ::planar_arm::__private::unpack(#pname);));
@@ -134,7 +135,7 @@ pub(crate) fn emit_fn(
                 } else {
                     local("_")
                 };
-                params.push(quote!(#pname: f64));
+                params.push(quote!(#pname: #F64));
             }
         }
     }
@@ -486,7 +487,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
         name: "tip_pose",
         generic: false,
         params: vec![q],
-        ret: quote!(::planar_arm::nalgebra::Isometry2<f64>),
+        ret: quote!(::planar_arm::nalgebra::Isometry2<#F64>),
         doc: formula_doc(
             &format!(
                 "The tip pose; the orientation is the last link's angle {}.",
@@ -537,7 +538,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
         name: "tip_polar",
         generic: false,
         params: vec![q],
-        ret: quote!((f64, f64)),
+        ret: quote!((#F64, #F64)),
         doc: formula_doc(
             "The tip in polar form: r from r^2 (which does not depend on q1), theta = atan2(y, x).",
             &[("r^2".into(), &ki.radius_squared)],
@@ -553,14 +554,14 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
         name: "joint_torques",
         generic: false,
         params: vec![q, Param::Force, Param::Torque],
-        ret: quote!(::planar_arm::nalgebra::SVector<f64, #nn>),
+        ret: quote!(::planar_arm::nalgebra::SVector<#F64, #nn>),
         doc: "Statics: tau = J^T (u, v, torque), the motor torques that make the tip exert force (u, v) and torque `torque`.".to_string(),
         method: d.joint_torques_method(),
         touch: TokenStream::new(),
         finish: Box::new(vector),
     });
     if let Some(method) = d.inverse_dynamics_derivatives_method() {
-        let f64mat = quote!(::planar_arm::nalgebra::SMatrix<f64, #nn, #nn>);
+        let f64mat = quote!(::planar_arm::nalgebra::SMatrix<#F64, #nn, #nn>);
         specs.push(Fn {
             name: "inverse_dynamics_derivatives",
             generic: false,
@@ -581,7 +582,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
         });
     }
     if let Some(method) = d.forward_dynamics_derivatives_method() {
-        let f64mat = quote!(::planar_arm::nalgebra::SMatrix<f64, #nn, #nn>);
+        let f64mat = quote!(::planar_arm::nalgebra::SMatrix<#F64, #nn, #nn>);
         specs.push(Fn {
             name: "forward_dynamics_derivatives",
             generic: false,
@@ -674,7 +675,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
         #[automatically_derived]
         impl #impl_generics ::planar_arm::PlanarArm<#nn> for #ty #where_clause {
             const EXACT: ::planar_arm::exact::Derivation<#nn> = {
-                const #table: &[&str] = &[#(#names),*];
+                const #table: &[&#STR] = &[#(#names),*];
                 ::planar_arm::exact::Derivation {
                     kinetic_energy: #t_exact,
                     potential_energy: #v_exact,
@@ -726,8 +727,8 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
         ..
     } = header;
     let nn = Literal::usize_unsuffixed(n);
-    let v = quote!(&::planar_arm::nalgebra::SVector<f64, #nn>);
-    let sv = quote!(::planar_arm::nalgebra::SVector<f64, #nn>);
+    let v = quote!(&::planar_arm::nalgebra::SVector<#F64, #nn>);
+    let sv = quote!(::planar_arm::nalgebra::SVector<#F64, #nn>);
     let body = quote!({ ::core::unreachable!() });
     let g = quote!(<__T: ::planar_arm::Real>);
     let vt = quote!(&::planar_arm::nalgebra::SVector<__T, #nn>);
@@ -756,11 +757,11 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
             fn forward_dynamics #g(&self, _: #vt, _: #vt, _: #vt) -> #svt #body
             fn kinetic_energy #g(&self, _: #vt, _: #vt) -> __T #body
             fn potential_energy #g(&self, _: #vt) -> __T #body
-            fn tip_pose(&self, _: #v) -> ::planar_arm::nalgebra::Isometry2<f64> #body
+            fn tip_pose(&self, _: #v) -> ::planar_arm::nalgebra::Isometry2<#F64> #body
             fn jacobian #g(&self, _: #vt) -> ::planar_arm::nalgebra::SMatrix<__T, 3, #nn> #body
             fn joint_positions #g(&self, _: #vt) -> [::planar_arm::nalgebra::Point2<__T>; #nn] #body
             fn tip_polar(&self, _: #v) -> (f64, f64) #body
-            fn joint_torques(&self, _: #v, _: &::planar_arm::nalgebra::Vector2<f64>, _: f64) -> #sv #body
+            fn joint_torques(&self, _: #v, _: &::planar_arm::nalgebra::Vector2<#F64>, _: f64) -> #sv #body
         }
     }
 }

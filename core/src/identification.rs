@@ -15,6 +15,7 @@ use crate::emit::EmitError;
 use crate::generate::{emit_fn, matrix, vector, Fn, Header, Param};
 use crate::mechanics::{ArmSpec, LinkSpec, PayloadSpec};
 use crate::methods::{Derived, Method};
+use crate::paths::{F64, STR};
 use crate::poly::Poly;
 use crate::regressor::{
     base_parameters_from_energies, standard_values, BaseParameters, Kind, Standard,
@@ -232,7 +233,7 @@ pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenS
             name: "regressor",
             generic: false,
             params: vec![q, qd, qdd],
-            ret: quote!(::planar_arm::nalgebra::SMatrix<f64, #nn, #pl>),
+            ret: quote!(::planar_arm::nalgebra::SMatrix<#F64, #nn, #pl>),
             doc: format!("The regressor Y(q, qd, qdd): `Y * standard_parameters() == inverse_dynamics(q, qd, qdd)`. {standard_doc}"),
             method: d.regressor_method(&id.parameters, &all),
             touch: TokenStream::new(),
@@ -242,7 +243,7 @@ pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenS
             name: "standard_parameters",
             generic: false,
             params: vec![],
-            ret: quote!(::planar_arm::nalgebra::SVector<f64, #pl>),
+            ret: quote!(::planar_arm::nalgebra::SVector<#F64, #pl>),
             doc: format!("The arm's standard parameters now (run-time parameters read from their fields). {standard_doc}"),
             method: d.parameter_values_method(&id.parameters, None),
             touch: TokenStream::new(),
@@ -252,7 +253,7 @@ pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenS
             name: "base_regressor",
             generic: false,
             params: vec![q, qd, qdd],
-            ret: quote!(::planar_arm::nalgebra::SMatrix<f64, #nn, #bl>),
+            ret: quote!(::planar_arm::nalgebra::SMatrix<#F64, #nn, #bl>),
             doc: format!("The base regressor: the regressor's columns of the base parameters, `Y_b * base_parameters() == inverse_dynamics(q, qd, qdd)`. {base_doc}"),
             method: d.regressor_method(&id.parameters, &id.base.columns),
             touch: TokenStream::new(),
@@ -262,7 +263,7 @@ pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenS
             name: "base_parameters",
             generic: false,
             params: vec![],
-            ret: quote!(::planar_arm::nalgebra::SVector<f64, #bl>),
+            ret: quote!(::planar_arm::nalgebra::SVector<#F64, #bl>),
             doc: format!("The arm's base parameters now. {base_doc}"),
             method: d.parameter_values_method(&id.parameters, Some(&id.base)),
             touch: TokenStream::new(),
@@ -282,8 +283,8 @@ pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenS
     Ok(quote! {
         #[automatically_derived]
         impl #impl_generics ::planar_arm::Identification<#nn, #pl, #bl> for #ty #where_clause {
-            const PARAMETERS: [&'static str; #pl] = [#(#names),*];
-            const BASE_PARAMETERS: [&'static str; #bl] = [#(#formulas),*];
+            const PARAMETERS: [&'static #STR; #pl] = [#(#names),*];
+            const BASE_PARAMETERS: [&'static #STR; #bl] = [#(#formulas),*];
             #(#fns)*
         }
     })

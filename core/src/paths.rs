@@ -1,13 +1,37 @@
 //! The absolute paths of generated code, made to survive the user's scope.
 //!
-//! Generated code is written with `::planar_arm::...` and bare primitive types (`f64`), which
-//! reads well in the engine and in `cargo expand`. Two things in a user's crate break those
-//! names: a dependency renamed in Cargo.toml (`arm = { package = "planar_arm" }`, so that
-//! `::planar_arm` does not exist), and a type of the user's own named like a primitive
-//! (`struct f64;` in scope shadows the primitive, which is not a keyword). [`qualify`] rewrites
-//! the emitted tokens once, at the end, instead of threading a path through every `quote!`.
+//! Generated code names the run-time crate `::planar_arm::...` and its primitive types
+//! `::core::primitive::f64`. Two things in a user's crate would break shorter names: a
+//! dependency renamed in Cargo.toml (`arm = { package = "planar_arm" }`, so that `::planar_arm`
+//! does not exist), and a type of the user's own named like a primitive (`struct f64;` in scope
+//! shadows the primitive, which is not a keyword). The engine writes the primitives by their
+//! `::core` paths as it emits them ([`F64`] and [`STR`] in a `quote!`: `SVector<#F64, 2>`), and
+//! [`qualify`] rewrites `::planar_arm` (and any primitive left bare) only when a user renamed
+//! the crate: rewriting walks every token, which inside a procedural macro is a call into the
+//! compiler per token (a quarter of a 6-link arm's expansion). The derive's tests check that,
+//! without a rename, the rewrite would change nothing.
 
 use proc_macro2::{Group, Ident, Punct, Spacing, TokenStream, TokenTree};
+
+/// `::core::primitive::f64`, for `quote!`: `#F64`.
+#[derive(Clone, Copy, Debug)]
+pub struct F64;
+
+/// `::core::primitive::str`, for `quote!`: `&'static #STR`.
+#[derive(Clone, Copy, Debug)]
+pub struct STR;
+
+impl quote::ToTokens for F64 {
+    fn to_tokens(&self, tokens: &mut TokenStream) {
+        tokens.extend(quote::quote!(::core::primitive::f64));
+    }
+}
+
+impl quote::ToTokens for STR {
+    fn to_tokens(&self, tokens: &mut TokenStream) {
+        tokens.extend(quote::quote!(::core::primitive::str));
+    }
+}
 
 /// The primitive types generated code names.
 const PRIMITIVES: &[&str] = &[

@@ -8,6 +8,7 @@ use syn::DeriveInput;
 use planar_arm_core::emit::EmitError;
 use planar_arm_core::generate::{generate, Header};
 use planar_arm_core::methods::Derived;
+use planar_arm_core::paths::F64;
 use planar_arm_core::ring::{to_i128_pair, Rational};
 use planar_arm_core::slp::Emit;
 use planar_arm_core::{ArmSpec, Expr, JointKind, LinkSpec, PayloadSpec, Poly};
@@ -24,7 +25,13 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
             quote!(#errors #fallback)
         }
     };
-    planar_arm_core::paths::qualify(tokens, krate(input).as_ref())
+    // The engine writes primitives by their `::core` paths (the test below checks every
+    // form), so only a renamed crate needs the rewrite, which walks every token: through the
+    // compiler's bridge that walk was a quarter of the expansion of a 6-link arm.
+    match krate(input) {
+        Some(path) => planar_arm_core::paths::qualify(tokens, Some(&path)),
+        None => tokens,
+    }
 }
 
 /// The path of `planar_arm` given by `#[arm(crate = "...")]` (errors in it are reported by
@@ -260,21 +267,21 @@ fn fallback(input: &DeriveInput) -> TokenStream {
     let unreachable = quote!({ ::core::unreachable!() });
     let svec = |k: usize| {
         let k = proc_macro2::Literal::usize_unsuffixed(k);
-        quote!(::planar_arm::nalgebra::SVector<f64, #k>)
+        quote!(::planar_arm::nalgebra::SVector<#F64, #k>)
     };
     let result = |t: TokenStream| quote!(::core::result::Result<#t, ::planar_arm::ArmError>);
     match n {
         2 => {
             let (v, ik) = (
                 svec(2),
-                result(quote!([::planar_arm::nalgebra::SVector<f64, 2>; 2])),
+                result(quote!([::planar_arm::nalgebra::SVector<#F64, 2>; 2])),
             );
-            let force = result(quote!(::planar_arm::nalgebra::Vector2<f64>));
+            let force = result(quote!(::planar_arm::nalgebra::Vector2<#F64>));
             tokens.extend(quote! {
                 #[automatically_derived]
                 impl #impl_generics ::planar_arm::kinematics::ClosedFormIk<2> for #ty #where_clause {
-                    type Target = ::planar_arm::nalgebra::Point2<f64>;
-                    fn inverse_kinematics(&self, _: &::planar_arm::nalgebra::Point2<f64>) -> #ik #unreachable
+                    type Target = ::planar_arm::nalgebra::Point2<#F64>;
+                    fn inverse_kinematics(&self, _: &::planar_arm::nalgebra::Point2<#F64>) -> #ik #unreachable
                 }
                 #[automatically_derived]
                 impl #impl_generics ::planar_arm::kinematics::TipForce for #ty #where_clause {
@@ -285,14 +292,14 @@ fn fallback(input: &DeriveInput) -> TokenStream {
         3 => {
             let (v, ik) = (
                 svec(3),
-                result(quote!([::planar_arm::nalgebra::SVector<f64, 3>; 2])),
+                result(quote!([::planar_arm::nalgebra::SVector<#F64, 3>; 2])),
             );
-            let wrench = result(quote!((::planar_arm::nalgebra::Vector2<f64>, f64)));
+            let wrench = result(quote!((::planar_arm::nalgebra::Vector2<#F64>, #F64)));
             tokens.extend(quote! {
                 #[automatically_derived]
                 impl #impl_generics ::planar_arm::kinematics::ClosedFormIk<3> for #ty #where_clause {
-                    type Target = ::planar_arm::nalgebra::Isometry2<f64>;
-                    fn inverse_kinematics(&self, _: &::planar_arm::nalgebra::Isometry2<f64>) -> #ik #unreachable
+                    type Target = ::planar_arm::nalgebra::Isometry2<#F64>;
+                    fn inverse_kinematics(&self, _: &::planar_arm::nalgebra::Isometry2<#F64>) -> #ik #unreachable
                 }
                 #[automatically_derived]
                 impl #impl_generics ::planar_arm::kinematics::TipWrench for #ty #where_clause {
@@ -314,5 +321,107 @@ fn field_names(input: &DeriveInput) -> Vec<proc_macro2::Ident> {
             .filter_map(|f| f.ident.clone())
             .collect(),
         _ => Vec::new(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use syn::parse_quote;
+
+    /// The arms the unqualified output is checked on: each generated form (literal and
+    /// parameterised values, payload, friction, prismatic joints, the closed forms of two and
+    /// three links, the unrolled recursions of longer arms).
+    fn arms() -> Vec<DeriveInput> {
+        vec![
+            parse_quote! {
+                struct One { #[arm(length = 1, mass = 2)] a: Revolute }
+            },
+            parse_quote! {
+                #[arm(gravity = 9.81, payload = 0.4)]
+                struct Two {
+                    #[arm(length = 1/2, mass = 1, com = (0.2, 0.01), damping = 0.1)] a: Revolute,
+                    #[arm(length = 0.4, mass = 1.5, frictionloss = 0.2, armature = 0.1)] b: Revolute,
+                }
+            },
+            parse_quote! {
+                #[arm(payload = self.load, payload_inertia = self.pi, payload_com = (self.px, 0))]
+                struct TwoParams {
+                    #[arm(length = self.l1, mass = self.m1, inertia = self.i1, com = self.c1)] a: Revolute,
+                    #[arm(length = 0.4, mass = 1, com = (self.c2, 0.01), frictionloss = 0.2)] b: Revolute,
+                    l1: f64, m1: f64, i1: f64, c1: f64, c2: f64, load: f64, pi: f64, px: f64,
+                }
+            },
+            parse_quote! {
+                struct Three {
+                    #[arm(length = 1, mass = 1)] a: Revolute,
+                    #[arm(length = 1, mass = 1, range = (-1.5, 1.5))] b: Revolute,
+                    #[arm(length = 1, mass = self.m)] c: Revolute,
+                    m: f64,
+                }
+            },
+            parse_quote! {
+                #[arm(payload = 0.2)]
+                struct Gantry {
+                    #[arm(length = 0.1, mass = self.carriage, inertia = 0, com = 0, range = (-1, 1), damping = 2)]
+                    rail: Prismatic,
+                    #[arm(length = 0.4, mass = 1)] upper: Revolute,
+                    #[arm(length = 0.3, mass = 1)] fore: Revolute,
+                    carriage: f64,
+                }
+            },
+            parse_quote! {
+                struct Six {
+                    #[arm(length = 1, mass = 1)] a: Revolute,
+                    #[arm(length = 1, mass = self.m)] b: Revolute,
+                    #[arm(length = 1, mass = 1)] c: Revolute,
+                    #[arm(length = 1/2, mass = 1)] d: Prismatic,
+                    #[arm(length = 1, mass = 1)] e: Revolute,
+                    #[arm(length = 1, mass = 1, inertia = self.i)] f: Revolute,
+                    m: f64, i: f64,
+                }
+            },
+        ]
+    }
+
+    /// Without `#[arm(crate = ...)]` the output is not rewritten, so the engine must already
+    /// write every primitive by its `::core` path: rewriting must change nothing.
+    #[test]
+    fn output_needs_no_rewriting() {
+        for input in arms() {
+            let out = derive(&input);
+            let text = out.to_string();
+            assert!(
+                !text.contains("compile_error"),
+                "{}: {text:.300}",
+                input.ident
+            );
+            let rewritten = planar_arm_core::paths::qualify(out, None).to_string();
+            if rewritten != text {
+                let at = text
+                    .bytes()
+                    .zip(rewritten.bytes())
+                    .take_while(|(a, b)| a == b)
+                    .count();
+                panic!(
+                    "{}: a bare primitive at ...{}",
+                    input.ident,
+                    &text[at.saturating_sub(200)..(at + 60).min(text.len())]
+                );
+            }
+        }
+    }
+
+    /// With a crate path the rewrite runs: `::planar_arm` goes, primitives stay qualified.
+    #[test]
+    fn a_crate_path_replaces_planar_arm() {
+        let input: DeriveInput = parse_quote! {
+            #[arm(crate = "arm")]
+            struct One { #[arm(length = 1, mass = 2)] a: Revolute }
+        };
+        let text = derive(&input).to_string();
+        assert!(!text.contains("planar_arm ::"), "{text:.300}");
+        assert!(text.contains("impl arm :: PlanarArm < 1 >"), "{text:.300}");
+        assert!(text.contains(":: core :: primitive :: f64"), "{text:.300}");
     }
 }
