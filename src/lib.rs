@@ -200,16 +200,17 @@
 //! The generated dynamics are generic over [`Real`]: `f64`, `f32`, SIMD batches with one
 //! state per lane ([`simd`]), or your own number type (a dual number gives derivatives). An
 //! `SVector<f32, N>` in gives an `SVector<f32, N>` out; `f64` calls compile and run as before.
-//! Without its default features the crate is `#![no_std]` and needs no allocator; the
-//! symbolic engine ([`symbolic`]) is then not linked.
+//! Without its default features the crate is `#![no_std]` and needs no allocator. The
+//! symbolic engine runs inside the derive; a program links it only with the `symbolic`
+//! feature, which adds it as `planar_arm::symbolic`.
 //!
 //! # Seeing what was generated
 //!
 //! Each generated method's rustdoc shows the exact formulas it evaluates and its operation
 //! count. `cargo expand` shows the code; without it, `cargo run --example expand -- 3` prints
 //! the code for the paper's three-link arm, and `tests/expand/` holds the checked-in
-//! expansions. [`symbolic`] is the engine itself, usable on its own: derive an
-//! [`symbolic::ArmSpec`] and print its Lagrangian, M, c and g.
+//! expansions. With the `symbolic` feature, `planar_arm::symbolic` is the engine itself,
+//! usable on its own: derive an `ArmSpec` and print its Lagrangian, M, c and g.
 //!
 //! # Checked against
 //!
