@@ -502,12 +502,13 @@ pub fn coefficient_tokens<C: Emit>(c: &C) -> Result<TokenStream, EmitError> {
 pub fn formula_doc<C: Emit>(title: &str, rows: &[(String, &Expr<C>)]) -> String {
     let terms: usize = rows.iter().map(|(_, e)| e.len()).sum();
     if terms > DOC_TERMS {
-        // Tens of thousands of terms are not documentation, and formatting them cost long
-        // arms' users seconds of compile time.
+        // Formulas this long are not read in rustdoc, and formatting them costs every user
+        // compile time (see `DOC_TERMS`).
         return format!(
             "{title}\n\nThe exact formulas have {terms} terms, more than the {DOC_TERMS} shown \
              in the documentation; `PlanarArm::EXACT` holds M, c, g, T and V exactly \
-             (each entry prints with `Display`), and `planar_arm::symbolic` derives them."
+             (each entry prints with `Display`), and `planar_arm::symbolic` (feature \
+             `symbolic`) derives them."
         );
     }
     let mut s = format!("{title}\n\n```text\n");

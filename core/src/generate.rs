@@ -334,7 +334,8 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
         doc: if cm.is_empty() {
             format!(
                 "{cm_title}\n\nThe exact formulas are too long to print here; \
-                 `planar_arm::symbolic::Dynamics::coriolis_matrix` expands them."
+                 `planar_arm::symbolic::Dynamics::coriolis_matrix` (feature `symbolic`) \
+                 expands them."
             )
         } else {
             formula_doc(cm_title, &cm_rows)
