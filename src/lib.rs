@@ -6,7 +6,7 @@
 //! off the mass matrix M(q), the velocity-product (Coriolis and centrifugal) torques c(q, qd)
 //! and the gravity torques g(q), and emits code specialised to that arm: no loops, no
 //! allocation, no symbolic work at run time, one sine-cosine pair per joint angle it needs
-//! (all of them from one call of [`trig::sin_cos`], two angles per SIMD register). It also
+//! (all of them from one call of [`trig::sin_cos`], four angles per SIMD vector). It also
 //! generates the arm's tip pose, Jacobian, joint positions and statics, and for two and three
 //! links the paper's closed-form inverse kinematics and inverse statics.
 //!

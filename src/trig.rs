@@ -4,13 +4,13 @@
 //! and for a two- to four-link arm that trigonometry is most of the run time: a call to the C
 //! library's `sincos` costs as much as the rest of the inverse dynamics. The generated code
 //! knows all its angles up front, so it hands them to [`sin_cos`] in one array, which
-//! evaluates them two at a time: a branch-free table-and-polynomial kernel, written so that
-//! the compiler puts two angles in one SIMD register (SSE2 on `x86_64`, as checked in the
-//! disassembly; other targets get what their vectoriser makes of it, scalar code at worst).
-//! It is safe, portable Rust with no target-specific code, and since
+//! evaluates them four at a time: a branch-free table-and-polynomial kernel on the `wide`
+//! crate's `f64x4` (two SSE2 registers on a default `x86_64` build, one AVX register where AVX
+//! is enabled, plain arrays on targets without SIMD). It is safe, portable Rust, and since
 //! Rust neither contracts nor reorders floating-point operations, every target with IEEE
-//! double arithmetic gets the same bits. On the benchmark machine (`docs/performance.md`) it
-//! costs half to a third as much per angle as `f64::sin_cos`.
+//! double arithmetic gets the same bits, whichever lane an angle lands in. On the benchmark
+//! machine (`docs/performance.md`) it costs half to a third as much per angle as
+//! `f64::sin_cos`.
 //!
 //! # Algorithm
 //!
@@ -64,7 +64,7 @@ const TO_INT: f64 = 6_755_399_441_055_744.0;
 /// `2^20 pi/2`, below the `2^27 h` where the reduction stops being exact.
 const LIMIT: f64 = 1_647_099.0;
 
-/// `(sin q_j, cos q_j)` for every angle of `q`, evaluated two at a time (see the
+/// `(sin q_j, cos q_j)` for every angle of `q`, evaluated four at a time (see the
 /// [module](self) docs for the algorithm and its accuracy).
 ///
 /// ```
@@ -82,7 +82,7 @@ const LIMIT: f64 = 1_647_099.0;
 pub fn sin_cos<const N: usize>(q: [f64; N]) -> [(f64, f64); N] {
     #[cfg(not(debug_assertions))]
     {
-        pairs(q)
+        packed(q)
     }
     #[cfg(debug_assertions)]
     {
@@ -95,23 +95,42 @@ pub fn sin_cos<const N: usize>(q: [f64; N]) -> [(f64, f64); N] {
 /// [`sin_cos`] inlined into its caller, as optimised builds run it: out of line, the results
 /// go through memory, 1.5x slower at N = 2.
 ///
+/// Four angles per `wide::f64x4` (two SSE2 registers with the default `x86_64` flags, one AVX
+/// register with AVX), three left over in one with a dummy fourth lane, two in an `f64x2`, a
+/// last one alone. Spelled out in `wide`'s types, not left to the compiler's vectoriser: the
+/// pairs of the array form were packed into one register in some callers and not in others
+/// (compiled as scalar code when `sin_cos` was called directly), and against that form this is
+/// 1.0-1.25x faster for M, inverse and forward dynamics and M with the bias at N = 2..8, with
+/// default flags and with AVX2, the same bits (docs/performance.md).
+///
 /// Not in a `dev` build: there nothing is inlined anyway, and every user crate would compile
-/// this function's two kernels and their eleven closures again for each `N` its generated
-/// methods use (at six links half the LLVM IR of a crate that calls four of them, and 0.08 s
-/// of its 0.74 s clean rebuild, docs/performance.md). [`out_of_line`] does the same
-/// operations in the same order, so both give the same bits (tested).
+/// this function's kernels again for each `N` its generated methods use (at six links half the
+/// LLVM IR of a crate that calls four of them, and 0.08 s of its 0.74 s clean rebuild,
+/// docs/performance.md). [`out_of_line`] does the same operations on each angle, so both give
+/// the same bits (tested).
 #[cfg_attr(debug_assertions, allow(dead_code))]
 #[inline(always)]
-fn pairs<const N: usize>(q: [f64; N]) -> [(f64, f64); N] {
+fn packed<const N: usize>(q: [f64; N]) -> [(f64, f64); N] {
+    use wide::{f64x2, f64x4};
     let mut out = [(0.0, 0.0); N];
     let mut j = 0;
-    while j + 1 < N {
-        [out[j], out[j + 1]] = kernel([q[j], q[j + 1]]);
-        j += 2;
+    while j + 3 <= N {
+        let fourth = if j + 3 < N { q[j + 3] } else { 0.0 };
+        let (s, c) = packed_kernel(f64x4::from([q[j], q[j + 1], q[j + 2], fourth]));
+        let (s, c) = (s.to_array(), c.to_array());
+        let mut l = 0;
+        while l < 4 && j + l < N {
+            out[j + l] = (s[l], c[l]);
+            l += 1;
+        }
+        j += 4;
     }
-    if j < N {
-        // Alone: a scalar lane, not a pair padded with a dummy angle (whose table lookups
-        // would cost as much as a real one's).
+    if j + 2 == N {
+        let (s, c) = packed_kernel(f64x2::from([q[j], q[j + 1]]));
+        let (s, c) = (s.to_array(), c.to_array());
+        out[j] = (s[0], c[0]);
+        out[j + 1] = (s[1], c[1]);
+    } else if j + 1 == N {
         [out[j]] = kernel([q[j]]);
     }
     // One test for the whole array keeps the common path free of per-angle branches (a
@@ -122,20 +141,14 @@ fn pairs<const N: usize>(q: [f64; N]) -> [(f64, f64); N] {
     out
 }
 
-/// [`pairs`] over slices (`out` as long as `q`), compiled once, in this crate. The loop is
-/// written twice on purpose: one `#[inline(always)]` slice body for both left the generated
-/// methods' code unchanged but not that of `sin_cos` called directly, where two and three
-/// angles took 5-10 % longer (release asm and timing, 2026-12-02).
+/// [`packed`] over slices (`out` as long as `q`), compiled once, in this crate, one angle at
+/// a time: a `dev` build runs it unoptimised, so packing would buy nothing there, and each
+/// lane of every form of the kernel does the same operations.
 #[cfg_attr(not(debug_assertions), allow(dead_code))]
 #[inline(never)]
 fn out_of_line(q: &[f64], out: &mut [(f64, f64)]) {
-    let mut j = 0;
-    while j + 1 < q.len() {
-        [out[j], out[j + 1]] = kernel([q[j], q[j + 1]]);
-        j += 2;
-    }
-    if j < q.len() {
-        [out[j]] = kernel([q[j]]);
+    for (&x, o) in q.iter().zip(out.iter_mut()) {
+        [*o] = kernel([x]);
     }
     if !in_range(q) {
         outside_the_range(q, out);
@@ -166,30 +179,17 @@ pub(crate) fn sin_cos_lanes<const L: usize>(x: [f64; L]) -> ([f64; L], [f64; L])
 }
 
 /// `(sin x_i, cos x_i)` for the four lanes of `wide`'s `f64x4`, for the batch scalars of
-/// [`Real`](crate::Real): the kernel's operations in the same order (so bit for bit the
-/// results of [`sin_cos`]), on whole registers, with only the table loads lane by lane; lanes
-/// out of range go to `f64::sin_cos`. Spelled out because the array form of the kernel at four
-/// lanes measured no faster than two calls at two lanes (83 against 86 ns for 4 x 6 angles
-/// with AVX2; this form 52 ns).
+/// [`Real`](crate::Real): [`packed_kernel`] (so bit for bit the results of [`sin_cos`]), lanes
+/// out of range to `f64::sin_cos`. Not the array form of the kernel, which at four lanes
+/// measured no faster than two calls at two lanes (83 against 86 ns for 4 x 6 angles with
+/// AVX2; this form 52 ns).
 #[cfg(feature = "std")]
 #[inline(always)]
 #[must_use]
 pub(crate) fn sin_cos_x4(x: wide::f64x4) -> (wide::f64x4, wide::f64x4) {
     use wide::{f64x4, CmpLe};
-    let k = |v: f64| f64x4::splat(v);
-    let m = (x * k(INV_H) + k(TO_INT)) - k(TO_INT);
-    let t = ((x - m * k(H1)) - m * k(H2)) - m * k(H3);
-    let t2 = t * t;
-    let p = k(-1.0 / 6.0) + t2 * (k(1.0 / 120.0) - t2 * k(1.0 / 5040.0));
-    let sin_t = t + (t * t2) * p;
-    let cos_t_minus_1 = t2 * (k(-0.5) + t2 * (k(1.0 / 24.0) - t2 * k(1.0 / 720.0)));
-    #[allow(clippy::cast_possible_truncation)]
-    let idx = (m + k(TO_INT)).to_array().map(|v| v.to_bits() as usize);
-    let s = f64x4::from(idx.map(|i| SIN_TABLE[i & 255]));
-    let c = f64x4::from(idx.map(|i| SIN_TABLE[i.wrapping_add(64) & 255]));
-    let sin = s + (s * cos_t_minus_1 + c * sin_t);
-    let cos = c + (c * cos_t_minus_1 - s * sin_t);
-    if x.abs().cmp_le(k(LIMIT)).all() {
+    let (sin, cos) = packed_kernel(x);
+    if x.abs().cmp_le(f64x4::splat(LIMIT)).all() {
         return (sin, cos);
     }
     let lanes = x.to_array();
@@ -199,6 +199,52 @@ pub(crate) fn sin_cos_x4(x: wide::f64x4) -> (wide::f64x4, wide::f64x4) {
         f64x4::from(out.map(|(s, _)| s)),
         f64x4::from(out.map(|(_, c)| c)),
     )
+}
+
+/// A `wide` vector of `f64` lanes, for [`packed_kernel`].
+trait Packed:
+    Copy + core::ops::Add<Output = Self> + core::ops::Sub<Output = Self> + core::ops::Mul<Output = Self>
+{
+    fn splat(v: f64) -> Self;
+    /// `SIN_TABLE[(k + offset) mod 256]` in each lane, `k` the low bits of the lane's `y` (see
+    /// [`kernel`]); the one step that goes lane by lane.
+    fn table(y: Self, offset: usize) -> Self;
+}
+
+macro_rules! impl_packed {
+    ($($v:ident),*) => {$(
+        impl Packed for wide::$v {
+            #[inline(always)]
+            fn splat(v: f64) -> Self {
+                wide::$v::splat(v)
+            }
+            #[allow(clippy::cast_possible_truncation)]
+            #[inline(always)]
+            fn table(y: Self, offset: usize) -> Self {
+                wide::$v::from(
+                    y.to_array().map(|v| SIN_TABLE[(v.to_bits() as usize).wrapping_add(offset) & 255]),
+                )
+            }
+        }
+    )*};
+}
+impl_packed!(f64x2, f64x4);
+
+/// [`kernel`] on whole `wide` registers: the same operations on every lane, so the same bits.
+#[inline(always)]
+fn packed_kernel<V: Packed>(x: V) -> (V, V) {
+    let k = V::splat;
+    let y = x * k(INV_H) + k(TO_INT);
+    let m = y - k(TO_INT);
+    let t = ((x - m * k(H1)) - m * k(H2)) - m * k(H3);
+    let t2 = t * t;
+    let p = k(-1.0 / 6.0) + t2 * (k(1.0 / 120.0) - t2 * k(1.0 / 5040.0));
+    let sin_t = t + (t * t2) * p;
+    let cos_t_minus_1 = t2 * (k(-0.5) + t2 * (k(1.0 / 24.0) - t2 * k(1.0 / 720.0)));
+    let (s, c) = (V::table(y, 0), V::table(y, 64));
+    let sin = s + (s * cos_t_minus_1 + c * sin_t);
+    let cos = c + (c * cos_t_minus_1 - s * sin_t);
+    (sin, cos)
 }
 
 /// The standard library's `sin_cos` for the angles the kernel does not cover.
@@ -215,12 +261,13 @@ fn outside_the_range(q: &[f64], out: &mut [(f64, f64)]) {
     }
 }
 
-/// The kernel on one or two lanes. Written lane-wise over `[f64; L]` with identical operations
-/// on every lane, which is the shape the compiler's SLP vectoriser turns into packed
-/// instructions.
+/// The kernel over `[f64; L]`, lane by lane: for a lone angle, and for the lanes of the `f32`
+/// batches, where the compiler's SLP vectoriser packs it well (at eight lanes measured faster
+/// than two calls of [`sin_cos_x4`]).
 #[inline(always)]
 fn kernel<const L: usize>(x: [f64; L]) -> [(f64, f64); L] {
-    let m = lanes::<L>(|i| (x[i] * INV_H + TO_INT) - TO_INT);
+    let y = lanes::<L>(|i| x[i] * INV_H + TO_INT);
+    let m = lanes::<L>(|i| y[i] - TO_INT);
     let t = lanes::<L>(|i| ((x[i] - m[i] * H1) - m[i] * H2) - m[i] * H3);
     let t2 = lanes::<L>(|i| t[i] * t[i]);
     let sin_t = lanes::<L>(|i| {
@@ -229,11 +276,12 @@ fn kernel<const L: usize>(x: [f64; L]) -> [(f64, f64); L] {
     });
     let cos_t_minus_1 =
         lanes::<L>(|i| t2[i] * (-0.5 + t2[i] * (1.0 / 24.0 - t2[i] * (1.0 / 720.0))));
-    // `m mod 256` from the low bits of `m + 1.5 * 2^52` (two's complement, so negative `m`
-    // wrap correctly); `cos m h` is `sin (m + 64) h`. NaN and out-of-range lanes index
-    // garbage but in bounds, and are replaced by the caller.
+    // `m mod 256` from the low bits of `y = m + 1.5 * 2^52` (two's complement, so negative `m`
+    // wrap correctly; `y` is that sum exactly, an integer below 2^53, so it is read rather
+    // than `TO_INT` added back to `m`); `cos m h` is `sin (m + 64) h`. NaN and out-of-range
+    // lanes index garbage but in bounds, and are replaced by the caller.
     #[allow(clippy::cast_possible_truncation)]
-    let k = |i: usize| (m[i] + TO_INT).to_bits() as usize;
+    let k = |i: usize| y[i].to_bits() as usize;
     let s = lanes::<L>(|i| SIN_TABLE[k(i) & 255]);
     let c = lanes::<L>(|i| SIN_TABLE[k(i).wrapping_add(64) & 255]);
     let sin = lanes::<L>(|i| s[i] + (s[i] * cos_t_minus_1[i] + c[i] * sin_t[i]));
@@ -510,7 +558,7 @@ static SIN_TABLE: [f64; 256] = [
 
 #[cfg(test)]
 mod tests {
-    use super::{out_of_line, pairs, sin_cos, LIMIT, SIN_TABLE};
+    use super::{out_of_line, packed, sin_cos, LIMIT, SIN_TABLE};
 
     /// Distance in units in the last place (same-sign results; otherwise `u64::MAX`).
     fn ulps(a: f64, b: f64) -> u64 {
@@ -664,7 +712,7 @@ mod tests {
         fn both<const N: usize>(q: [f64; N]) {
             let mut slow = [(0.0, 0.0); N];
             out_of_line(&q, &mut slow);
-            let fast = pairs(q);
+            let fast = packed(q);
             for ((a, b), x) in fast.iter().zip(&slow).zip(q) {
                 assert_eq!(
                     (a.0.to_bits(), a.1.to_bits()),
@@ -686,7 +734,11 @@ mod tests {
             both([x()]);
             both([x(), x()]);
             both([x(), x(), x()]);
+            both([x(), x(), x(), x()]);
+            both([x(), x(), x(), x(), x()]);
+            both([x(), x(), x(), x(), x(), x()]);
             both([x(), x(), x(), x(), x(), x(), x()]);
+            both([x(), x(), x(), x(), x(), x(), x(), x()]);
         }
     }
 }
