@@ -100,7 +100,7 @@ pub fn sin_cos<const N: usize>(q: [f64; N]) -> [(f64, f64); N] {
 /// last one alone. Spelled out in `wide`'s types, not left to the compiler's vectoriser: the
 /// pairs of the array form were packed into one register in some callers and not in others
 /// (compiled as scalar code when `sin_cos` was called directly), and against that form this is
-/// 1.0-1.25x faster for M, inverse and forward dynamics and M with the bias at N = 2..8, with
+/// 1.0-1.3x faster for M, inverse and forward dynamics and M with the bias at N = 2..8, with
 /// default flags and with AVX2, the same bits (docs/performance.md).
 ///
 /// Not in a `dev` build: there nothing is inlined anyway, and every user crate would compile
