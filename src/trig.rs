@@ -9,8 +9,8 @@
 //! is enabled, plain arrays on targets without SIMD). It is safe, portable Rust, and since
 //! Rust neither contracts nor reorders floating-point operations, every target with IEEE
 //! double arithmetic gets the same bits, whichever lane an angle lands in. On the benchmark
-//! machine (`docs/performance.md`) it costs half to a third as much per angle as
-//! `f64::sin_cos`.
+//! machine (`docs/performance.md`, 2026-12-03) it costs 0.5-0.7x as much as `f64::sin_cos` for
+//! one angle and down to a fifth per angle for eight.
 //!
 //! # Algorithm
 //!
