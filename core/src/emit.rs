@@ -12,12 +12,11 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
 use num_traits::{Signed, ToPrimitive, Zero};
-use proc_macro2::{Ident, Literal, Span, TokenStream};
+use proc_macro2::{Delimiter, Group, Ident, Literal, Punct, Spacing, Span, TokenStream, TokenTree};
 use quote::quote;
 
 use crate::expr::Expr;
 use crate::methods::{two, Derived, Method};
-use crate::paths::F64;
 use crate::poly::Param;
 use crate::ring::{show, to_f64, to_i128_pair, Rational};
 use crate::slp::{Emit, Id, Input, Node, Program};
@@ -43,6 +42,11 @@ impl std::error::Error for EmitError {}
 /// # Errors
 /// If the value is outside the finite `f64` range.
 pub fn f64_tokens(r: &Rational) -> Result<TokenStream, EmitError> {
+    Ok(wrapped(constant_inner(r)?).into_iter().collect())
+}
+
+/// A constant's tokens without outer parentheses: `2.0`, `10.0 / 3.0`, `-2.0`, `-(10.0 / 3.0)`.
+fn constant_inner(r: &Rational) -> Result<Vec<TokenTree>, EmitError> {
     const EXACT: u64 = 1 << 53;
     let value = to_f64(r).ok_or_else(|| EmitError {
         message: format!("the constant {} does not fit in f64", show(r)),
@@ -50,30 +54,52 @@ pub fn f64_tokens(r: &Rational) -> Result<TokenStream, EmitError> {
     let magnitude = r.abs();
     let num = magnitude.numer().to_u64().filter(|&v| v <= EXACT);
     let den = magnitude.denom().to_u64().filter(|&v| v <= EXACT);
-    let body = match (num, den) {
+    let body: Vec<TokenTree> = match (num, den) {
         #[allow(clippy::cast_precision_loss)] // both are at most 2^53, exact in f64
-        (Some(a), Some(1)) => {
-            let a = Literal::f64_unsuffixed(a as f64);
-            quote!(#a)
-        }
+        (Some(a), Some(1)) => vec![Literal::f64_unsuffixed(a as f64).into()],
         #[allow(clippy::cast_precision_loss)]
-        (Some(a), Some(b)) => {
-            let (a, b) = (
-                Literal::f64_unsuffixed(a as f64),
-                Literal::f64_unsuffixed(b as f64),
-            );
-            quote!((#a / #b))
-        }
-        _ => {
-            let v = Literal::f64_unsuffixed(value.abs());
-            quote!(#v)
-        }
+        (Some(a), Some(b)) => vec![
+            Literal::f64_unsuffixed(a as f64).into(),
+            punct('/'),
+            Literal::f64_unsuffixed(b as f64).into(),
+        ],
+        _ => vec![Literal::f64_unsuffixed(value.abs()).into()],
     };
     Ok(if r.is_negative() {
-        quote!((-#body))
+        vec![punct('-'), atom(body)]
     } else {
         body
     })
+}
+
+/// The tokens as one operand: themselves if they are one token tree, else in parentheses.
+fn atom(mut tokens: Vec<TokenTree>) -> TokenTree {
+    if tokens.len() == 1 {
+        if let Some(t) = tokens.pop() {
+            return t;
+        }
+    }
+    Group::new(Delimiter::Parenthesis, tokens.into_iter().collect()).into()
+}
+
+/// [`atom`] as a token list.
+fn wrapped(tokens: Vec<TokenTree>) -> Vec<TokenTree> {
+    vec![atom(tokens)]
+}
+
+fn punct(c: char) -> TokenTree {
+    Punct::new(c, Spacing::Alone).into()
+}
+
+/// `::a::b::c` (every segment at the call site, as `quote!` writes it).
+fn path(segments: &[&str]) -> Vec<TokenTree> {
+    let mut out = Vec::with_capacity(3 * segments.len());
+    for s in segments {
+        out.push(Punct::new(':', Spacing::Joint).into());
+        out.push(Punct::new(':', Spacing::Alone).into());
+        out.push(Ident::new(s, Span::call_site()).into());
+    }
+    out
 }
 
 /// Precedence of an emitted expression, to place parentheses.
@@ -135,26 +161,35 @@ pub enum Scalar {
 }
 
 impl Scalar {
-    fn zero(self) -> TokenStream {
-        self.constant(quote!(0.0))
+    /// A constant in this scalar: `(10.0 / 3.0)` or `__T::from_f64(10.0 / 3.0)`.
+    fn constant(self, r: &Rational) -> Result<Vec<TokenTree>, EmitError> {
+        let inner = constant_inner(r)?;
+        Ok(match self {
+            Scalar::F64 => wrapped(inner),
+            Scalar::Generic => vec![
+                Ident::new("__T", Span::call_site()).into(),
+                Punct::new(':', Spacing::Joint).into(),
+                Punct::new(':', Spacing::Alone).into(),
+                Ident::new("from_f64", Span::call_site()).into(),
+                Group::new(Delimiter::Parenthesis, inner.into_iter().collect()).into(),
+            ],
+        })
     }
 
-    fn constant(self, value: TokenStream) -> TokenStream {
+    fn zero(self) -> Vec<TokenTree> {
         match self {
-            Scalar::F64 => value,
-            Scalar::Generic => {
-                // `(5.0 / 3.0)` is an argument already: no second pair of parentheses.
-                let mut it = value.clone().into_iter();
-                let inner = match (it.next(), it.next()) {
-                    (Some(proc_macro2::TokenTree::Group(g)), None)
-                        if g.delimiter() == proc_macro2::Delimiter::Parenthesis =>
-                    {
-                        g.stream()
-                    }
-                    _ => value,
-                };
-                quote!(__T::from_f64(#inner))
-            }
+            Scalar::F64 => vec![Literal::f64_unsuffixed(0.0).into()],
+            Scalar::Generic => vec![
+                Ident::new("__T", Span::call_site()).into(),
+                Punct::new(':', Spacing::Joint).into(),
+                Punct::new(':', Spacing::Alone).into(),
+                Ident::new("from_f64", Span::call_site()).into(),
+                Group::new(
+                    Delimiter::Parenthesis,
+                    TokenStream::from(TokenTree::from(Literal::f64_unsuffixed(0.0))),
+                )
+                .into(),
+            ],
         }
     }
 }
@@ -211,7 +246,13 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
         .map(|(name, id)| (*id, name.as_str()))
         .collect();
 
-    let mut statements = Vec::new();
+    // Each statement is a list of token trees, and the body becomes a token stream once, at
+    // the end: built operator by operator with `quote!`, every node cost a few calls across the
+    // compiler's procedural-macro bridge, half of the expansion of a 6-link arm.
+    let mut statements: Vec<Vec<TokenTree>> = Vec::new();
+    let let_ = || -> TokenTree { Ident::new("let", Span::call_site()).into() };
+    let self_ = || -> TokenTree { Ident::new("self", Span::call_site()).into() };
+    let real = || path(&["planar_arm", "__private", "real"]);
     // Run-time parameters are read from their fields once, at the top.
     for &i in &inputs_used {
         if let Input::Param(k) = i {
@@ -222,12 +263,23 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
                 Some(raw) => Ident::new_raw(raw, Span::call_site()),
                 None => Ident::new(name_of_field, Span::call_site()),
             };
-            statements.push(match scalar {
-                Scalar::F64 => quote!(let #name: #F64 = self.#field;),
-                Scalar::Generic => {
-                    quote!(let #name: __T = ::planar_arm::__private::real(self.#field);)
+            let read = [self_(), punct('.'), field.into()];
+            let mut st = vec![let_(), name.into(), punct(':')];
+            match scalar {
+                Scalar::F64 => {
+                    st.extend(path(&["core", "primitive", "f64"]));
+                    st.push(punct('='));
+                    st.extend(read);
                 }
-            });
+                Scalar::Generic => {
+                    st.push(Ident::new("__T", Span::call_site()).into());
+                    st.push(punct('='));
+                    st.extend(real());
+                    st.push(Group::new(Delimiter::Parenthesis, read.into_iter().collect()).into());
+                }
+            }
+            st.push(punct(';'));
+            statements.push(st);
         }
     }
     // Parameter-only values computed beforehand are read from the block.
@@ -235,20 +287,40 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
         if let Input::Frozen(k) = i {
             let (name, block) = (local(&input_name(i, p.params())), local("block"));
             let k = proc_macro2::Literal::usize_unsuffixed(k);
-            statements.push(match scalar {
-                Scalar::F64 => quote!(let #name: #F64 = #block.0[#k];),
-                Scalar::Generic => {
-                    quote!(let #name: __T = ::planar_arm::__private::real(#block.0[#k]);)
+            let read = [
+                block.into(),
+                punct('.'),
+                Literal::usize_unsuffixed(0).into(),
+                Group::new(Delimiter::Bracket, TokenTree::from(k).into()).into(),
+            ];
+            let mut st = vec![let_(), name.into(), punct(':')];
+            match scalar {
+                Scalar::F64 => {
+                    st.extend(path(&["core", "primitive", "f64"]));
+                    st.push(punct('='));
+                    st.extend(read);
                 }
-            });
+                Scalar::Generic => {
+                    st.push(Ident::new("__T", Span::call_site()).into());
+                    st.push(punct('='));
+                    st.extend(real());
+                    st.push(Group::new(Delimiter::Parenthesis, read.into_iter().collect()).into());
+                }
+            }
+            st.push(punct(';'));
+            statements.push(st);
         }
     }
     if !joints.is_empty() {
-        // One call for all the angles: the kernel evaluates them two at a time in SIMD lanes.
+        // One call for all the angles: the kernel evaluates them in SIMD lanes.
         let mut angles = Vec::new();
         let mut pairs = Vec::new();
-        for (&j, &(s, c)) in &joints {
-            angles.push(local(&input_name(Input::Q(j), &[])));
+        for (k, (&j, &(s, c))) in joints.iter().enumerate() {
+            if k > 0 {
+                angles.push(punct(','));
+                pairs.push(punct(','));
+            }
+            angles.push(local(&input_name(Input::Q(j), &[])).into());
             let name = |used: bool, prefix: &str| {
                 if used {
                     local(&format!("{prefix}{}", j + 1))
@@ -256,14 +328,30 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
                     local("_")
                 }
             };
-            let (s, c) = (name(s, "s"), name(c, "c"));
-            pairs.push(quote!((#s, #c)));
+            let pair = [name(s, "s").into(), punct(','), name(c, "c").into()];
+            pairs.push(Group::new(Delimiter::Parenthesis, pair.into_iter().collect()).into());
         }
-        statements.push(quote!(
-            let [#(#pairs),*] = ::planar_arm::__private::sin_cos([#(#angles),*]);
-        ));
+        let mut st = vec![
+            let_(),
+            Group::new(Delimiter::Bracket, pairs.into_iter().collect()).into(),
+            punct('='),
+        ];
+        st.extend(path(&["planar_arm", "__private", "sin_cos"]));
+        let angles = Group::new(Delimiter::Bracket, angles.into_iter().collect());
+        st.push(Group::new(Delimiter::Parenthesis, TokenTree::from(angles).into()).into());
+        st.push(punct(';'));
+        statements.push(st);
     }
-    let mut exprs: Vec<Option<(Prec, TokenStream)>> = vec![None; p.nodes().len()];
+    let assign = |name: &Ident, mut value: Vec<TokenTree>| {
+        let mut st = Vec::with_capacity(value.len() + 4);
+        st.push(let_());
+        st.push(name.clone().into());
+        st.push(punct('='));
+        st.append(&mut value);
+        st.push(punct(';'));
+        st
+    };
+    let mut exprs: Vec<Option<(Prec, Vec<TokenTree>)>> = vec![None; p.nodes().len()];
     let mut temp = 0usize;
     // For the chunking of long methods (see `chunked`): the statements after the inputs',
     // which statement each node's expression reads, and each statement's last reader.
@@ -272,6 +360,12 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
     let mut bound: Vec<Option<usize>> = vec![None; p.nodes().len()];
     let mut last_read: Vec<usize> = vec![0; statements.len()];
     let mut defined: Vec<(usize, Ident)> = Vec::new();
+    let is_leaf = |node: &Node| {
+        matches!(
+            node,
+            Node::Input(_) | Node::Const(_) | Node::Sin(_) | Node::Cos(_)
+        )
+    };
     for (idx, node) in p.nodes().iter().enumerate() {
         if uses[idx] == 0 {
             continue;
@@ -285,83 +379,94 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
             }
         }
         let id = Id(u32::try_from(idx).unwrap_or(u32::MAX));
-        let get = |c: Id, exprs: &Vec<Option<(Prec, TokenStream)>>| {
-            exprs[c.0 as usize]
-                .clone()
-                .unwrap_or_else(|| (Prec::Atom, scalar.zero()))
+        // A child that is neither a leaf nor bound to a `let` is read once, here: its tokens
+        // move into this expression.
+        let mut get = |c: Id| {
+            let k = c.0 as usize;
+            let e = if bound[k].is_some() || is_leaf(&p.nodes()[k]) {
+                exprs[k].clone()
+            } else {
+                exprs[k].take()
+            };
+            e.unwrap_or_else(|| (Prec::Atom, scalar.zero()))
         };
-        let paren = |(prec, ts): (Prec, TokenStream), min: Prec| {
+        let paren = |(prec, ts): (Prec, Vec<TokenTree>), min: Prec| {
             if prec >= min {
                 ts
             } else {
-                quote!((#ts))
+                vec![Group::new(Delimiter::Parenthesis, ts.into_iter().collect()).into()]
             }
         };
+        let binary = |a: Vec<TokenTree>, op: char, b: Vec<TokenTree>| {
+            let mut out = a;
+            out.push(punct(op));
+            out.extend(b);
+            out
+        };
+        let call = |mut f: Vec<TokenTree>, args: Vec<TokenTree>| {
+            f.push(Group::new(Delimiter::Parenthesis, args.into_iter().collect()).into());
+            f
+        };
         let (prec, ts) = match node {
-            Node::Input(i) => (
-                Prec::Atom,
-                local(&input_name(*i, p.params())).into_token_stream(),
-            ),
-            Node::Const(r) => (Prec::Atom, scalar.constant(f64_tokens(r)?)),
-            Node::Sin(j) => (
-                Prec::Atom,
-                local(&format!("s{}", j + 1)).into_token_stream(),
-            ),
-            Node::Cos(j) => (
-                Prec::Atom,
-                local(&format!("c{}", j + 1)).into_token_stream(),
-            ),
+            Node::Input(i) => (Prec::Atom, vec![local(&input_name(*i, p.params())).into()]),
+            Node::Const(r) => (Prec::Atom, scalar.constant(r)?),
+            Node::Sin(j) => (Prec::Atom, vec![local(&format!("s{}", j + 1)).into()]),
+            Node::Cos(j) => (Prec::Atom, vec![local(&format!("c{}", j + 1)).into()]),
             Node::Add(a, b) => {
-                let (a, b) = (
-                    paren(get(*a, &exprs), Prec::Sum),
-                    paren(get(*b, &exprs), Prec::Sum),
-                );
-                (Prec::Sum, quote!(#a + #b))
+                let a = paren(get(*a), Prec::Sum);
+                let b = paren(get(*b), Prec::Sum);
+                (Prec::Sum, binary(a, '+', b))
             }
             Node::Sub(a, b) => {
-                let a = paren(get(*a, &exprs), Prec::Sum);
-                let b = paren(get(*b, &exprs), Prec::Product);
-                (Prec::Sum, quote!(#a - #b))
+                let a = paren(get(*a), Prec::Sum);
+                let b = paren(get(*b), Prec::Product);
+                (Prec::Sum, binary(a, '-', b))
             }
             Node::Mul(a, b) => {
-                let (a, b) = (
-                    paren(get(*a, &exprs), Prec::Product),
-                    paren(get(*b, &exprs), Prec::Product),
-                );
-                (Prec::Product, quote!(#a * #b))
+                let a = paren(get(*a), Prec::Product);
+                let b = paren(get(*b), Prec::Product);
+                (Prec::Product, binary(a, '*', b))
             }
             Node::Div(a, b) => {
-                let a = paren(get(*a, &exprs), Prec::Product);
-                let b = paren(get(*b, &exprs), Prec::Atom);
-                (Prec::Product, quote!(#a / #b))
+                let a = paren(get(*a), Prec::Product);
+                let b = paren(get(*b), Prec::Atom);
+                (Prec::Product, binary(a, '/', b))
             }
             Node::Max(a, b) => match scalar {
                 Scalar::F64 => {
-                    let a = paren(get(*a, &exprs), Prec::Atom);
-                    let (_, b) = get(*b, &exprs);
-                    (Prec::Atom, quote!(#a.max(#b)))
+                    let mut a = paren(get(*a), Prec::Atom);
+                    let (_, b) = get(*b);
+                    a.push(punct('.'));
+                    a.push(Ident::new("max", Span::call_site()).into());
+                    (Prec::Atom, call(a, b))
                 }
                 Scalar::Generic => {
-                    let ((_, a), (_, b)) = (get(*a, &exprs), get(*b, &exprs));
-                    (Prec::Atom, quote!(::planar_arm::__private::max(#a, #b)))
+                    let (_, mut a) = get(*a);
+                    let (_, b) = get(*b);
+                    a.push(punct(','));
+                    a.extend(b);
+                    (
+                        Prec::Atom,
+                        call(path(&["planar_arm", "__private", "max"]), a),
+                    )
                 }
             },
             Node::Neg(a) => {
-                let a = paren(get(*a, &exprs), Prec::Atom);
-                (Prec::Sum, quote!(-#a))
+                let a = paren(get(*a), Prec::Atom);
+                (Prec::Sum, binary(Vec::new(), '-', a))
             }
             Node::Sign(a) => {
-                let (_, a) = get(*a, &exprs);
-                (Prec::Atom, quote!(::planar_arm::__private::sign(#a)))
+                let (_, a) = get(*a);
+                (
+                    Prec::Atom,
+                    call(path(&["planar_arm", "__private", "sign"]), a),
+                )
             }
         };
-        let is_leaf = matches!(
-            node,
-            Node::Input(_) | Node::Const(_) | Node::Sin(_) | Node::Cos(_)
-        );
-        let named = p.name(id).is_some() && !is_leaf;
+        let leaf = is_leaf(node);
+        let named = p.name(id).is_some() && !leaf;
         let is_output = output_of.contains_key(&id);
-        if !is_leaf && (uses[idx] > 1 || named || is_output) {
+        if !leaf && (uses[idx] > 1 || named || is_output) {
             let base = output_of
                 .get(&id)
                 .map(|s| (*s).to_string())
@@ -375,11 +480,11 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
             for &r in &read {
                 last_read[r] = at;
             }
-            statements.push(quote!(let #name = #ts;));
+            statements.push(assign(&name, ts));
             last_read.push(0);
-            defined.push((at, name.clone()));
+            exprs[idx] = Some((Prec::Atom, vec![name.clone().into()]));
+            defined.push((at, name));
             bound[idx] = Some(at);
-            exprs[idx] = Some((Prec::Atom, name.into_token_stream()));
         } else {
             reads[idx] = read;
             exprs[idx] = Some((prec, ts));
@@ -387,29 +492,29 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
     }
     let mut outputs = Vec::new();
     for (name, id) in &method.outputs {
-        let (_, ts) = exprs[id.0 as usize]
+        let k = id.0 as usize;
+        let (_, ts) = exprs[k]
             .clone()
             .unwrap_or_else(|| (Prec::Atom, scalar.zero()));
-        let k = id.0 as usize;
         // Leaves and repeated outputs (the symmetric half of M) get their own readable let.
-        let ident = match syn_ident(&ts) {
-            Some(existing) => {
+        let ident = match ts.as_slice() {
+            [TokenTree::Ident(existing)] => {
                 if let Some(s) = bound[k] {
                     last_read[s] = usize::MAX;
                 }
-                existing
+                existing.clone()
             }
-            None => {
+            _ => {
                 let ident = local(&fresh(name, &mut taken));
                 let at = statements.len();
                 for &r in &reads[k] {
                     last_read[r] = at;
                 }
-                statements.push(quote!(let #ident = #ts;));
+                statements.push(assign(&ident, ts));
                 last_read.push(usize::MAX);
                 defined.push((at, ident.clone()));
                 bound[k] = Some(at);
-                exprs[k] = Some((Prec::Atom, ident.clone().into_token_stream()));
+                exprs[k] = Some((Prec::Atom, vec![ident.clone().into()]));
                 ident
             }
         };
@@ -431,24 +536,24 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
 const CHUNK: usize = 1000;
 
 /// `statements[prefix..]` in blocks of at most [`CHUNK`] `let`s, each block handing on what
-/// later statements read: `let (a, b, ...) = { ...; (a, b, ...) };`. Methods of fewer
-/// statements are left as they are.
+/// later statements read: `let (a, b, ...) = { ...; (a, b, ...) };`. A method of fewer
+/// statements comes back as one token stream.
 fn chunked(
-    statements: Vec<TokenStream>,
+    statements: Vec<Vec<TokenTree>>,
     prefix: usize,
     defined: &[(usize, Ident)],
     last_read: &[usize],
 ) -> Vec<TokenStream> {
     if statements.len() - prefix <= CHUNK {
-        return statements;
+        return vec![statements.into_iter().flatten().collect()];
     }
     let name_of: BTreeMap<usize, &Ident> = defined.iter().map(|(s, i)| (*s, i)).collect();
     let mut out = Vec::new();
     let mut it = statements.into_iter().enumerate().peekable();
     while let Some((_, st)) = it.next_if(|(s, _)| *s < prefix) {
-        out.push(st);
+        out.push(st.into_iter().collect());
     }
-    let rest: Vec<(usize, TokenStream)> = it.collect();
+    let rest: Vec<(usize, Vec<TokenTree>)> = it.collect();
     for chunk in rest.chunks(CHUNK) {
         let end = chunk.last().map_or(0, |c| c.0 + 1);
         let handed: Vec<&Ident> = chunk
@@ -456,21 +561,13 @@ fn chunked(
             .filter(|(s, _)| last_read[*s] >= end)
             .filter_map(|(s, _)| name_of.get(s).copied())
             .collect();
-        let body = chunk.iter().map(|(_, st)| st);
-        out.push(quote!(let (#(#handed,)*) = { #(#body)* (#(#handed,)*) };));
+        let body: TokenStream = chunk
+            .iter()
+            .flat_map(|(_, st)| st.iter().cloned())
+            .collect();
+        out.push(quote!(let (#(#handed,)*) = { #body (#(#handed,)*) };));
     }
     out
-}
-
-use quote::ToTokens as _;
-
-/// The identifier, if the tokens are a single identifier.
-fn syn_ident(ts: &TokenStream) -> Option<Ident> {
-    let mut it = ts.clone().into_iter();
-    match (it.next(), it.next()) {
-        (Some(proc_macro2::TokenTree::Ident(i)), None) => Some(i),
-        _ => None,
-    }
 }
 
 /// An `f64` expression of a coefficient: a literal such as `(10.0 / 3.0)`, or for one with
