@@ -42,7 +42,8 @@ fn central<const N: usize>(
 type Derivatives<const N: usize> = (SMatrix<f64, N, N>, SMatrix<f64, N, N>);
 
 /// The forward dynamics' derivatives from the inverse dynamics' ones at `qdd = FD(q, qd, tau)`:
-/// `-M^-1 dtau/dq`, `-M^-1 dtau/dqd` and `M^-1`, by Cholesky (`None` if that fails).
+/// `-M^-1 dtau/dq`, `-M^-1 dtau/dqd` and `M^-1`, by the trait default's fixed-size Cholesky
+/// (`None` if that fails).
 #[allow(clippy::type_complexity)]
 fn through_inverse<A: PlanarArm<N>, const N: usize>(
     arm: &A,
@@ -53,8 +54,7 @@ fn through_inverse<A: PlanarArm<N>, const N: usize>(
 ) -> Option<(SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>)> {
     let qdd = arm.forward_dynamics(black_box(q), black_box(qd), black_box(tau));
     let (dq, dqd) = inverse(arm, q, qd, &qdd);
-    let minv = arm.mass_matrix(q).cholesky()?.inverse();
-    Some((-(minv * dq), -(minv * dqd), minv))
+    planar_arm::__private::inverse_products(&arm.mass_matrix(q), &dq, &dqd)
 }
 
 #[allow(clippy::cast_precision_loss)]

@@ -10,6 +10,9 @@ use nalgebra::{Isometry2, SMatrix, SVector, Translation2, UnitComplex};
 
 use crate::Real;
 
+/// The trait's default for the forward dynamics' derivatives, named here for the benches.
+pub use crate::mass_inverse::inverse_products;
+
 #[inline(always)]
 #[must_use]
 pub fn unpack<T: Copy, const N: usize>(v: &SVector<T, N>) -> [T; N] {

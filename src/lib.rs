@@ -231,6 +231,7 @@ mod jet;
 pub mod kinematics;
 mod linear;
 mod link;
+mod mass_inverse;
 mod model;
 mod real;
 pub mod reference;
@@ -392,12 +393,14 @@ pub trait PlanarArm<const N: usize> {
     /// `dqdd/dqd = -M^-1 dtau/dqd` (from [`inverse_dynamics_derivatives`](Self::inverse_dynamics_derivatives)
     /// at `qdd`) and `dqdd/dtau = M^-1`. Coulomb friction as there.
     ///
-    /// For arms up to about 9 links the derive emits this as one straight-line program that
+    /// For arms of up to five links the derive emits this as one straight-line program that
     /// shares the trigonometry, M and its factorisation (guarded by the pivot floors of
     /// `forward_dynamics`, so finite wherever `forward_dynamics` is); its operation count is in
     /// the method's docs. For larger arms this default computes it from the methods above and
-    /// a Cholesky factorisation of M (no allocation), NaN everywhere if that fails (only with
-    /// NaN or infinite input). NaN input gives NaN output either way, never a panic.
+    /// a fixed-size Cholesky factorisation of M (no allocation; 1.4x the time of the emitted
+    /// program at six links, measured in docs/performance.md, and none of its compile time),
+    /// NaN everywhere if that fails (only with NaN or infinite input). NaN input gives NaN
+    /// output either way, never a panic.
     fn forward_dynamics_derivatives(
         &self,
         q: &SVector<f64, N>,
@@ -406,16 +409,10 @@ pub trait PlanarArm<const N: usize> {
     ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
         let qdd = self.forward_dynamics(q, qd, tau);
         let (dq, dqd) = self.inverse_dynamics_derivatives(q, qd, &qdd);
-        match self.mass_matrix(q).cholesky() {
-            Some(chol) => {
-                let minv = chol.inverse();
-                (-(minv * dq), -(minv * dqd), minv)
-            }
-            None => {
-                let nan = SMatrix::from_element(f64::NAN);
-                (nan, nan, nan)
-            }
-        }
+        mass_inverse::inverse_products(&self.mass_matrix(q), &dq, &dqd).unwrap_or_else(|| {
+            let nan = SMatrix::from_element(f64::NAN);
+            (nan, nan, nan)
+        })
     }
 
     /// Kinetic energy, J: the links, the payload and the rotors (`armature qd_i^2 / 2`).

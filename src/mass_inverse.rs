@@ -1,0 +1,151 @@
+//! `M^-1`, `-M^-1 A` and `-M^-1 B` from a fixed-size Cholesky factorisation: the linear
+//! algebra that turns the inverse dynamics' derivatives into the forward dynamics' ones
+//! (`dqdd/dq = -M^-1 dtau/dq`, `dqdd/dqd = -M^-1 dtau/dqd`, `dqdd/dtau = M^-1`).
+//!
+//! Written over arrays of the arm's size so that the compiler unrolls and vectorises every loop:
+//! nalgebra's `cholesky().inverse()` followed by two products took 2.4-3.0x the time of the
+//! emitted straight-line derivatives at two to six links, this 1.4-2.1x.
+
+#[cfg(not(feature = "std"))]
+use num_traits::Float as _;
+
+use nalgebra::{ArrayStorage, SMatrix};
+
+/// `(-M^-1 a, -M^-1 b, M^-1)`, or `None` when `m` is not numerically positive definite (a
+/// pivot that is not positive, NaN included).
+#[allow(clippy::type_complexity, clippy::needless_range_loop)]
+#[inline]
+#[must_use]
+pub fn inverse_products<const N: usize>(
+    m: &SMatrix<f64, N, N>,
+    a: &SMatrix<f64, N, N>,
+    b: &SMatrix<f64, N, N>,
+) -> Option<(SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>)> {
+    // nalgebra stores columns: `m[j][i]` is M(i, j). M is symmetric; the lower half is read.
+    let m = &m.data.0;
+    // M = L L^T, `l[i][j]` = L(i, j) for i >= j; `r[j]` = 1 / L(j, j).
+    let mut l = [[0.0f64; N]; N];
+    let mut r = [0.0f64; N];
+    for j in 0..N {
+        let mut d = m[j][j];
+        for k in 0..j {
+            d -= l[j][k] * l[j][k];
+        }
+        // NaN is not greater either.
+        if d.partial_cmp(&0.0) != Some(core::cmp::Ordering::Greater) {
+            return None;
+        }
+        let inv = 1.0 / d.sqrt();
+        r[j] = inv;
+        l[j][j] = d * inv;
+        for i in j + 1..N {
+            let mut s = m[j][i];
+            for k in 0..j {
+                s -= l[i][k] * l[j][k];
+            }
+            l[i][j] = s * inv;
+        }
+    }
+    // W = L^-1, lower triangular, by forward substitution column by column.
+    let mut w = [[0.0f64; N]; N];
+    for j in 0..N {
+        w[j][j] = r[j];
+        for i in j + 1..N {
+            let mut s = 0.0;
+            for k in j..i {
+                s -= l[i][k] * w[k][j];
+            }
+            w[i][j] = s * r[i];
+        }
+    }
+    // M^-1 = W^T W, symmetric, stored by columns like nalgebra.
+    let mut inv = [[0.0f64; N]; N];
+    for j in 0..N {
+        for i in j..N {
+            let mut s = 0.0;
+            for k in i..N {
+                s += w[k][i] * w[k][j];
+            }
+            inv[j][i] = s;
+            inv[i][j] = s;
+        }
+    }
+    let minus_product = |x: &[[f64; N]; N]| {
+        let mut out = [[0.0f64; N]; N];
+        for c in 0..N {
+            for k in 0..N {
+                let xk = x[c][k];
+                for i in 0..N {
+                    out[c][i] -= inv[k][i] * xk;
+                }
+            }
+        }
+        SMatrix::from_data(ArrayStorage(out))
+    };
+    Some((
+        minus_product(&a.data.0),
+        minus_product(&b.data.0),
+        SMatrix::from_data(ArrayStorage(inv)),
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::inverse_products;
+    use nalgebra::SMatrix;
+
+    /// A symmetric positive definite matrix with a spread of eigenvalues, and two others.
+    fn inputs<const N: usize>() -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
+        #[allow(clippy::cast_precision_loss)]
+        let g = SMatrix::<f64, N, N>::from_fn(|i, j| ((3 * i + 7 * j + 1) as f64 * 0.37).sin());
+        let m = g * g.transpose() + SMatrix::identity() * 0.1;
+        #[allow(clippy::cast_precision_loss)]
+        let a = SMatrix::from_fn(|i, j| (i as f64 - 2.0 * j as f64) * 0.5);
+        #[allow(clippy::cast_precision_loss)]
+        let b = SMatrix::from_fn(|i, j| ((i * j) as f64 + 1.0).ln());
+        (m, a, b)
+    }
+
+    fn against_nalgebra<const N: usize>() {
+        let (m, a, b) = inputs::<N>();
+        let (x, y, inv) = inverse_products(&m, &a, &b).expect("positive definite");
+        let reference = m.cholesky().expect("positive definite").inverse();
+        let scale = reference.amax();
+        assert!((inv - reference).amax() <= 1e-12 * scale, "N = {N}");
+        assert!(
+            (x + reference * a).amax() <= 1e-12 * scale * a.amax() * 8.0,
+            "N = {N}"
+        );
+        assert!(
+            (y + reference * b).amax() <= 1e-12 * scale * b.amax() * 8.0,
+            "N = {N}"
+        );
+        // And an independent property: M M^-1 = I.
+        assert!(
+            (m * inv - SMatrix::<f64, N, N>::identity()).amax() < 1e-10,
+            "N = {N}"
+        );
+    }
+
+    #[test]
+    fn agrees_with_nalgebra_from_one_to_nine() {
+        against_nalgebra::<1>();
+        against_nalgebra::<2>();
+        against_nalgebra::<3>();
+        against_nalgebra::<4>();
+        against_nalgebra::<6>();
+        against_nalgebra::<9>();
+    }
+
+    #[test]
+    fn singular_indefinite_and_nan_give_none() {
+        let z = SMatrix::<f64, 3, 3>::zeros();
+        let singular = SMatrix::<f64, 3, 3>::from_element(1.0);
+        assert!(inverse_products(&singular, &z, &z).is_none());
+        let indefinite = SMatrix::<f64, 2, 2>::new(1.0, 2.0, 2.0, 1.0);
+        assert!(inverse_products(&indefinite, &SMatrix::zeros(), &SMatrix::zeros()).is_none());
+        let mut nan = SMatrix::<f64, 3, 3>::identity();
+        nan[(1, 1)] = f64::NAN;
+        assert!(inverse_products(&nan, &z, &z).is_none());
+    }
+}
