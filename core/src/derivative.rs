@@ -30,6 +30,14 @@ use crate::unrolled::{ldlt_solve, pivot_floor};
 /// method saves at run time. Measured in docs/performance.md.
 pub const MAX_OPS: usize = 4000;
 
+/// The largest forward dynamics' derivative program, in operations, that is emitted as code
+/// (every arm of up to five links). Larger ones take the trait's default, the emitted inverse
+/// dynamics' derivatives at `qdd` and a fixed-size Cholesky inverse of M, which costs 1.4x the
+/// emitted program at four and six links (2.1x at two). At six links the emitted program was a
+/// fifth of the type checking of a crate that derives the arm (53 KB of its 300 KB), for a
+/// method few callers need in every build. Measured in docs/performance.md.
+pub const MAX_FORWARD_OPS: usize = 2000;
+
 /// Arms of more links are not differentiated at all: their programs would exceed [`MAX_OPS`]
 /// (about 2,500 operations for the inverse dynamics' derivatives at 10 links, growing as
 /// `N^2`), and trying would cost the derive time for nothing.
@@ -127,7 +135,7 @@ impl<C: Emit> Derived<C> {
     /// evaluated at that `qdd`, and `M x = b` solved for each of their columns (negated) and
     /// each unit vector, with `M` factored once (`L D L^T` as in `forward_dynamics`; Cramer's
     /// rule with `M`'s determinant for two links). Outputs row-major, in that order. `None`
-    /// past [`MAX_OPS`].
+    /// past [`MAX_FORWARD_OPS`].
     #[must_use]
     pub fn forward_dynamics_derivatives_method(&self) -> Option<Method> {
         let n = self.arm.links.len();
@@ -210,7 +218,7 @@ impl<C: Emit> Derived<C> {
         });
         let method = cheapest(candidates.into());
         let ops = method.op_count();
-        (ops.mul + ops.add + ops.div <= 2 * MAX_OPS).then_some(method)
+        (ops.mul + ops.add + ops.div <= MAX_FORWARD_OPS).then_some(method)
     }
 }
 
