@@ -428,12 +428,49 @@ impl<C: Emit> Derived<C> {
         )
     }
 
-    /// `T(q, qd)`.
+    /// `T(q, qd)`: the cheaper of the expanded energy and `qd^T M qd / 2` on
+    /// [`mass_matrix_method`](Self::mass_matrix_method)'s program (the same number in exact
+    /// arithmetic: T is that quadratic form in the rates). From four links on the expanded
+    /// energy is built only when its term count could compete.
     #[must_use]
     pub fn kinetic_energy_method(&self) -> Method {
-        self.vector_method(
-            "kinetic",
-            std::slice::from_ref(&self.dynamics.kinetic_energy),
+        let quadratic = self.kinetic_energy_quadratic_method();
+        let terms = Self::terms(&[&self.dynamics.kinetic_energy]);
+        if self.worth_expanding(terms, &quadratic) {
+            cheapest(vec![
+                self.vector_method(
+                    "kinetic",
+                    std::slice::from_ref(&self.dynamics.kinetic_energy),
+                ),
+                quadratic,
+            ])
+        } else {
+            quadratic
+        }
+    }
+
+    /// `T = sum_i qd_i (M_ii qd_i / 2 + sum_{j > i} M_ij qd_j)`.
+    fn kinetic_energy_quadratic_method(&self) -> Method {
+        let n = self.n();
+        let mass = self.mass_matrix_method();
+        let mut p = mass.program;
+        let m = |i: usize, j: usize| mass.outputs[i * n + j].1;
+        let half = p.constant(Rational::new(1.into(), 2.into()));
+        let qd: Vec<Id> = (0..n).map(|j| p.input(Input::Qd(j))).collect();
+        let mut rows = Vec::with_capacity(n);
+        for i in 0..n {
+            let diagonal = p.mul(m(i, i), qd[i]);
+            let mut terms = vec![p.mul(half, diagonal)];
+            for j in i + 1..n {
+                terms.push(p.mul(m(i, j), qd[j]));
+            }
+            let row = p.balanced_sum(&terms).unwrap_or(half);
+            rows.push(p.mul(qd[i], row));
+        }
+        let t = p.balanced_sum(&rows).unwrap_or(half);
+        Method::new(p, vec![("kinetic".into(), t)]).described(
+            "Evaluated as `qd^T M qd / 2` on the mass matrix's program (`M` as `mass_matrix` \
+             computes it).",
         )
     }
 
