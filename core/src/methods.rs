@@ -461,8 +461,8 @@ impl<C: Emit> Derived<C> {
         for i in 0..n {
             let diagonal = p.mul(m(i, i), qd[i]);
             let mut terms = vec![p.mul(half, diagonal)];
-            for j in i + 1..n {
-                terms.push(p.mul(m(i, j), qd[j]));
+            for (j, &rate) in qd.iter().enumerate().skip(i + 1) {
+                terms.push(p.mul(m(i, j), rate));
             }
             let row = p.balanced_sum(&terms).unwrap_or(half);
             rows.push(p.mul(qd[i], row));
