@@ -58,12 +58,14 @@ impl<C: Emit> Derived<C> {
     /// Whether expanded formulas of `terms` terms can beat `rival`. Their programs share
     /// products between rows, so their cost is below the term count, but not far below: at
     /// least 0.36 of it for arms of up to ten links (M and the torques, op counts in
-    /// docs/performance.md). From four links on, formulas whose term count over the number of
-    /// links exceeds twice the rival's cost cannot win and are not built: building them
-    /// dominated the derive's time for long arms.
+    /// docs/performance.md). From four links on, formulas of more than 2.75 times the rival's
+    /// cost in terms cannot win and are not built: building them dominated the derive's time
+    /// for long arms, and still cost a twentieth of a 6-link arm's expansion when the bound was
+    /// twice the rival's cost per link (the emitted code of 29 arms of 1 to 10 links, literal,
+    /// with parameters, prismatic joints and payloads, is byte-identical under either bound).
     fn worth_expanding(&self, terms: usize, rival: &Method) -> bool {
         let n = self.n();
-        n < 4 || terms / n <= 2 * cost(rival)
+        n < 4 || terms * 4 <= 11 * cost(rival)
     }
 
     /// Terms counted by their coefficients' parts: with run-time parameters each part of a
