@@ -252,7 +252,25 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
     let mut statements: Vec<Vec<TokenTree>> = Vec::new();
     let let_ = || -> TokenTree { Ident::new("let", Span::call_site()).into() };
     let self_ = || -> TokenTree { Ident::new("self", Span::call_site()).into() };
-    let real = || path(&["planar_arm", "__private", "real"]);
+    // `let name: f64 = read;`, or in a generic method `let name: __T = real(read);`.
+    let read_f64 = |name: Ident, read: Vec<TokenTree>| {
+        let mut st = vec![let_(), name.into(), punct(':')];
+        match scalar {
+            Scalar::F64 => {
+                st.extend(path(&["core", "primitive", "f64"]));
+                st.push(punct('='));
+                st.extend(read);
+            }
+            Scalar::Generic => {
+                st.push(Ident::new("__T", Span::call_site()).into());
+                st.push(punct('='));
+                st.extend(path(&["planar_arm", "__private", "real"]));
+                st.push(Group::new(Delimiter::Parenthesis, read.into_iter().collect()).into());
+            }
+        }
+        st.push(punct(';'));
+        st
+    };
     // Run-time parameters are read from their fields once, at the top.
     for &i in &inputs_used {
         if let Input::Param(k) = i {
@@ -263,23 +281,8 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
                 Some(raw) => Ident::new_raw(raw, Span::call_site()),
                 None => Ident::new(name_of_field, Span::call_site()),
             };
-            let read = [self_(), punct('.'), field.into()];
-            let mut st = vec![let_(), name.into(), punct(':')];
-            match scalar {
-                Scalar::F64 => {
-                    st.extend(path(&["core", "primitive", "f64"]));
-                    st.push(punct('='));
-                    st.extend(read);
-                }
-                Scalar::Generic => {
-                    st.push(Ident::new("__T", Span::call_site()).into());
-                    st.push(punct('='));
-                    st.extend(real());
-                    st.push(Group::new(Delimiter::Parenthesis, read.into_iter().collect()).into());
-                }
-            }
-            st.push(punct(';'));
-            statements.push(st);
+            let read = vec![self_(), punct('.'), field.into()];
+            statements.push(read_f64(name, read));
         }
     }
     // Parameter-only values computed beforehand are read from the block.
@@ -287,28 +290,13 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
         if let Input::Frozen(k) = i {
             let (name, block) = (local(&input_name(i, p.params())), local("block"));
             let k = proc_macro2::Literal::usize_unsuffixed(k);
-            let read = [
+            let read = vec![
                 block.into(),
                 punct('.'),
                 Literal::usize_unsuffixed(0).into(),
                 Group::new(Delimiter::Bracket, TokenTree::from(k).into()).into(),
             ];
-            let mut st = vec![let_(), name.into(), punct(':')];
-            match scalar {
-                Scalar::F64 => {
-                    st.extend(path(&["core", "primitive", "f64"]));
-                    st.push(punct('='));
-                    st.extend(read);
-                }
-                Scalar::Generic => {
-                    st.push(Ident::new("__T", Span::call_site()).into());
-                    st.push(punct('='));
-                    st.extend(real());
-                    st.push(Group::new(Delimiter::Parenthesis, read.into_iter().collect()).into());
-                }
-            }
-            st.push(punct(';'));
-            statements.push(st);
+            statements.push(read_f64(name, read));
         }
     }
     if !joints.is_empty() {
