@@ -466,10 +466,15 @@ impl<C: Emit> Derived<C> {
             for (j, &rate) in qd.iter().enumerate().skip(i + 1) {
                 terms.push(p.mul(m(i, j), rate));
             }
-            let row = p.balanced_sum(&terms).unwrap_or(half);
+            // `terms` holds the diagonal term at least.
+            let row = p
+                .balanced_sum(&terms)
+                .unwrap_or_else(|| p.constant(Rational::zero()));
             rows.push(p.mul(qd[i], row));
         }
-        let t = p.balanced_sum(&rows).unwrap_or(half);
+        let t = p
+            .balanced_sum(&rows)
+            .unwrap_or_else(|| p.constant(Rational::zero()));
         Method::new(p, vec![("kinetic".into(), t)]).described(
             "Evaluated as `qd^T M qd / 2` on the mass matrix's program (`M` as `mass_matrix` \
              computes it).",
