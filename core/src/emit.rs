@@ -163,8 +163,16 @@ pub enum Scalar {
 impl Scalar {
     /// A constant in this scalar: `(10.0 / 3.0)` or `__T::from_f64(10.0 / 3.0)`.
     fn constant(self, r: &Rational) -> Result<Vec<TokenTree>, EmitError> {
-        let inner = constant_inner(r)?;
-        Ok(match self {
+        Ok(self.of_f64(constant_inner(r)?))
+    }
+
+    fn zero(self) -> Vec<TokenTree> {
+        self.of_f64(vec![Literal::f64_unsuffixed(0.0).into()])
+    }
+
+    /// An `f64` expression (without outer parentheses) as a value of this scalar.
+    fn of_f64(self, inner: Vec<TokenTree>) -> Vec<TokenTree> {
+        match self {
             Scalar::F64 => wrapped(inner),
             Scalar::Generic => vec![
                 Ident::new("__T", Span::call_site()).into(),
@@ -172,23 +180,6 @@ impl Scalar {
                 Punct::new(':', Spacing::Alone).into(),
                 Ident::new("from_f64", Span::call_site()).into(),
                 Group::new(Delimiter::Parenthesis, inner.into_iter().collect()).into(),
-            ],
-        })
-    }
-
-    fn zero(self) -> Vec<TokenTree> {
-        match self {
-            Scalar::F64 => vec![Literal::f64_unsuffixed(0.0).into()],
-            Scalar::Generic => vec![
-                Ident::new("__T", Span::call_site()).into(),
-                Punct::new(':', Spacing::Joint).into(),
-                Punct::new(':', Spacing::Alone).into(),
-                Ident::new("from_f64", Span::call_site()).into(),
-                Group::new(
-                    Delimiter::Parenthesis,
-                    TokenStream::from(TokenTree::from(Literal::f64_unsuffixed(0.0))),
-                )
-                .into(),
             ],
         }
     }
