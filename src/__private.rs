@@ -10,6 +10,8 @@ use nalgebra::{Isometry2, SMatrix, SVector, Translation2, UnitComplex};
 
 use crate::Real;
 
+/// The forward dynamics' solve after `mass_matrix_and_bias` (three or more joints).
+pub use crate::ldlt::{forward_solve, Floor};
 /// The trait's default for the forward dynamics' derivatives, named here for the benches.
 pub use crate::mass_inverse::inverse_products;
 

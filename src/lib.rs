@@ -229,6 +229,7 @@ mod frozen;
 mod identification;
 mod jet;
 pub mod kinematics;
+mod ldlt;
 mod linear;
 mod link;
 mod mass_inverse;

@@ -45,6 +45,12 @@ pub fn f64_tokens(r: &Rational) -> Result<TokenStream, EmitError> {
     Ok(wrapped(constant_inner(r)?).into_iter().collect())
 }
 
+/// An `f64` constant as an expression in its own right, as a function's argument is:
+/// `2.0`, `10.0 / 3.0`, `-(10.0 / 3.0)`.
+pub(crate) fn f64_argument_tokens(r: &Rational) -> Result<TokenStream, EmitError> {
+    Ok(constant_inner(r)?.into_iter().collect())
+}
+
 /// A constant's tokens without outer parentheses: `2.0`, `10.0 / 3.0`, `-2.0`, `-(10.0 / 3.0)`.
 fn constant_inner(r: &Rational) -> Result<Vec<TokenTree>, EmitError> {
     const EXACT: u64 = 1 << 53;

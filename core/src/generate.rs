@@ -193,6 +193,81 @@ pub(crate) fn vector(ids: &[proc_macro2::Ident]) -> TokenStream {
     quote!(::planar_arm::__private::vector([#(#ids),*]))
 }
 
+/// `forward_dynamics` of an arm of three or more joints, or with `frozen = Some(slots)` its
+/// variant reading the frozen block: `mass_matrix_and_bias` (whose cost is `mh`), then
+/// `planar_arm::__private::forward_solve`, the `L D L^T` solve written once in the run-time
+/// crate, with each pivot's floor (a constant where `M_ii` has no run-time parameters). The
+/// straight-line solve this replaces was the same operations in the same order, type-checked
+/// and borrow-checked twice in every user crate (docs/performance.md).
+fn solved_forward_dynamics<C: Emit>(
+    d: &Derived<C>,
+    mh: crate::slp::OpCount,
+    frozen: Option<usize>,
+) -> Result<TokenStream, EmitError> {
+    let n = d.arm.links.len();
+    let nn = Literal::usize_unsuffixed(n);
+    let floors = (0..n)
+        .map(
+            |i| match crate::unrolled::fixed_pivot_floor(&d.dynamics.mass_matrix[i][i]) {
+                Some(f) => {
+                    let f = crate::emit::f64_argument_tokens(&f)?;
+                    Ok(quote!(::planar_arm::__private::Floor::Fixed(#f)))
+                }
+                None => Ok(quote!(::planar_arm::__private::Floor::Relative)),
+            },
+        )
+        .collect::<Result<Vec<_>, EmitError>>()?;
+    let relative = (0..n)
+        .filter(|&i| crate::unrolled::fixed_pivot_floor(&d.dynamics.mass_matrix[i][i]).is_none())
+        .count();
+    let solve = crate::unrolled::ldlt_solve_cost(n, relative);
+    let cost = crate::slp::OpCount {
+        mul: mh.mul + solve.mul,
+        add: mh.add + solve.add,
+        div: mh.div + solve.div,
+        sin_cos: mh.sin_cos,
+    };
+    let v = quote!(::planar_arm::nalgebra::SVector<__T, #nn>);
+    let (q, qd, tau) = (local("q"), local("qd"), local("tau"));
+    let (m, h) = (local("m"), local("h"));
+    let (name, block, call, doc) = match frozen {
+        None => (
+            quote!(forward_dynamics),
+            TokenStream::new(),
+            quote!(self.mass_matrix_and_bias(#q, #qd)),
+            format!(
+                "qdd = M^-1 (tau - h): M and h = c + g + f from `mass_matrix_and_bias` (one pass), \
+                 then an L D L^T factorisation of M (no square roots, no allocation) by planar_arm's \
+                 fixed-size solve, which the compiler unrolls for this arm. Each pivot is floored at \
+                 2^-52 times a bound on M_ii (or M_ii itself where it holds run-time parameters), \
+                 so an ill-conditioned M gives finite accelerations, never infinite or NaN ones.\n\n\
+                 Cost: {cost}."
+            ),
+        ),
+        Some(slots) => {
+            let (b, slots) = (local("block"), Literal::usize_unsuffixed(slots));
+            (
+                quote!(__forward_dynamics_frozen),
+                quote!(#b: &::planar_arm::__private::Block<#slots>,),
+                quote!(self.__mass_matrix_and_bias_frozen(#b, #q, #qd)),
+                "`forward_dynamics` with `mass_matrix_and_bias` reading the parameter-only \
+                 values from a block computed by `__freeze`."
+                    .to_string(),
+            )
+        }
+    };
+    let hidden = frozen.map(|_| quote!(#[doc(hidden)]));
+    Ok(quote! {
+        #[doc = #doc]
+        #hidden
+        #[inline]
+        fn #name<__T: ::planar_arm::Real>(&self, #block #q: &#v, #qd: &#v, #tau: &#v) -> #v {
+            let (#m, #h) = #call;
+            ::planar_arm::__private::forward_solve(&#m, #tau, &#h, [#(#floors),*])
+        }
+    })
+}
+
 /// `::planar_arm::__private::terms(b"...", __NAMES)`: the sum in the compact encoding of
 /// [`crate::compact`], its parameters named by index into the `EXACT` block's name table.
 fn exact_terms<C: Emit>(e: &Expr<C>, names: &mut Vec<String>) -> Result<TokenStream, EmitError> {
@@ -438,21 +513,25 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
         touch: TokenStream::new(),
         finish: Box::new(vector),
     });
-    let fd_doc = match n {
-        1 => "qdd = (tau - c - g - f) / M11.".to_string(),
-        2 => "qdd = M^-1 (tau - c - g - f) in closed form (Cramer's rule, det = M11 M22 - M12^2 > 0).".to_string(),
-        _ => "qdd = M^-1 (tau - c - g - f) by an unrolled L D L^T factorisation of M (no square roots, no allocation).".to_string(),
-    };
-    specs.push(Fn {
-        name: "forward_dynamics",
-        generic: true,
-        params: vec![q, qd, tau],
-        ret: svec.clone(),
-        doc: fd_doc,
-        method: d.forward_dynamics_method(),
-        touch: TokenStream::new(),
-        finish: Box::new(vector),
-    });
+    // From three joints `forward_dynamics` calls `mass_matrix_and_bias` and the run-time
+    // crate's fixed-size solve (see `solved_forward_dynamics`); one and two joints keep their
+    // closed forms.
+    if n < 3 {
+        let fd_doc = match n {
+            1 => "qdd = (tau - c - g - f) / M11.",
+            _ => "qdd = M^-1 (tau - c - g - f) in closed form (Cramer's rule, det = M11 M22 - M12^2 > 0).",
+        };
+        specs.push(Fn {
+            name: "forward_dynamics",
+            generic: true,
+            params: vec![q, qd, tau],
+            ret: svec.clone(),
+            doc: fd_doc.to_string(),
+            method: d.forward_dynamics_method(),
+            touch: TokenStream::new(),
+            finish: Box::new(vector),
+        });
+    }
     specs.push(Fn {
         name: "kinetic_energy",
         generic: true,
@@ -616,6 +695,17 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
         fns.push(emit_fn(n, f, None)?);
     }
     let slots = frozen.as_ref().map_or(0, |fz| fz.block.outputs.len());
+    if n >= 3 {
+        let mh = specs
+            .iter()
+            .find(|f| f.name == "mass_matrix_and_bias")
+            .map(|f| f.method.op_count())
+            .unwrap_or_default();
+        fns.push(solved_forward_dynamics(d, mh, None)?);
+        if frozen.is_some() {
+            fns.push(solved_forward_dynamics(d, mh, Some(slots))?);
+        }
+    }
     let slots_lit = Literal::usize_unsuffixed(slots);
     fns.push(quote!(
         #[doc(hidden)]
@@ -628,9 +718,10 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
         let rendered = render(&fz.block, Scalar::F64)?;
         let statements = &rendered.statements;
         let outputs = &rendered.outputs;
+        let names: Vec<&str> = hot.iter().map(|f| f.name).collect();
         let doc = format!(
             "The parameter-only values of `{}`, from the arm's fields. Cost: {}.",
-            HOT.join("`, `"),
+            names.join("`, `"),
             fz.block.op_count()
         );
         fns.push(quote!(

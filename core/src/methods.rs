@@ -509,7 +509,10 @@ impl<C: Emit> Derived<C> {
     }
 
     /// `qdd = M^-1 (tau - c - g)`: Cramer's rule for one and two joints, an unrolled
-    /// `L D L^T` factorisation (no square roots, one division per joint) beyond. `M`, `c` and
+    /// `L D L^T` factorisation (no square roots, one division per joint) beyond. The derive
+    /// emits it for one and two joints; from three, `forward_dynamics` is
+    /// `mass_matrix_and_bias` followed by the run-time crate's solve (the same factorisation,
+    /// see `generate`), and this program is the base of the emitted forward derivatives. `M`, `c` and
     /// `g` are evaluated exactly as [`mass_matrix_method`](Self::mass_matrix_method),
     /// [`coriolis_method`](Self::coriolis_method) and [`gravity_method`](Self::gravity_method)
     /// evaluate them (whichever of the expanded formulas and the unrolled recursions each

@@ -9,7 +9,7 @@ use crate::expr::Expr;
 use crate::mechanics::{ArmSpec, JointKind};
 use crate::methods::two;
 use crate::ring::Rational;
-use crate::slp::{Emit, Id, Input, Program};
+use crate::slp::{Emit, Id, Input, OpCount, Program};
 use crate::trig::Angle;
 
 /// Which terms of `tau = M qdd + c + g` an unrolled Newton-Euler recursion evaluates.
@@ -391,22 +391,55 @@ pub(crate) fn composite_mass_matrix<C: Emit>(p: &mut Program, arm: &ArmSpec<C>) 
 /// one at or below the floor only means `M` is too ill-conditioned for `f64` there, and the
 /// floor keeps the accelerations finite instead of infinite or NaN.
 pub(crate) fn pivot_floor<C: Emit>(p: &mut Program, m_ii: &Expr<C>, m_ii_node: Id) -> Id {
-    let ulp = p.constant(Rational::new(
-        1.into(),
-        num_bigint::BigInt::from(1u64 << 52),
-    ));
-    let constants: Option<Vec<Rational>> = m_ii.terms().map(|(_, _, c)| c.rational()).collect();
-    match constants {
-        Some(cs) => {
-            let bound = cs.iter().fold(Rational::zero(), |acc, c| acc + c.abs());
-            let bound = p.constant(bound);
-            p.mul(ulp, bound)
-        }
+    match fixed_pivot_floor(m_ii) {
+        Some(floor) => p.constant(floor),
         // With run-time parameters the bound would cost a polynomial per term at every call;
         // `M_ii(q)` itself (positive, at least the exact pivot, already computed) sets the
         // same level of rounding noise for one multiplication.
-        None => p.mul(ulp, m_ii_node),
+        None => {
+            let ulp = p.constant(ulp());
+            p.mul(ulp, m_ii_node)
+        }
     }
+}
+
+/// 2^-52.
+fn ulp() -> Rational {
+    Rational::new(1.into(), num_bigint::BigInt::from(1u64 << 52))
+}
+
+/// The floor of [`pivot_floor`] when `M_ii` has no run-time parameters: 2^-52 times the sum of
+/// its coefficients' magnitudes. `None` with parameters (the floor is then 2^-52 `M_ii(q)`).
+pub(crate) fn fixed_pivot_floor<C: Emit>(m_ii: &Expr<C>) -> Option<Rational> {
+    let constants: Option<Vec<Rational>> = m_ii.terms().map(|(_, _, c)| c.rational()).collect();
+    let bound = constants?
+        .iter()
+        .fold(Rational::zero(), |acc, c| acc + c.abs());
+    Some(ulp() * bound)
+}
+
+/// The operations of [`ldlt_solve`] for `n` joints, with `relative` of its pivot floors
+/// computed at run time (one multiplication each) and the right-hand side formed as
+/// `tau - h` (one subtraction per joint): what `planar_arm::__private::forward_solve` costs.
+pub(crate) fn ldlt_solve_cost(n: usize, relative: usize) -> OpCount {
+    let mut c = OpCount {
+        div: n,
+        mul: relative,
+        add: n,
+        ..OpCount::default()
+    };
+    for i in 0..n {
+        for j in 0..i {
+            // s_ij: j products subtracted; L_ij = s_ij / d_j.
+            c.mul += j + 1;
+            c.add += j;
+        }
+        // d_i: i products subtracted, then the floor's max; y_i: i products subtracted;
+        // x_i: y_i / d_i, then n - 1 - i products subtracted.
+        c.mul += i + i + 1 + (n - 1 - i);
+        c.add += i + 1 + i + (n - 1 - i);
+    }
+    c
 }
 
 pub(crate) fn ldlt_solve(p: &mut Program, m: &[Vec<Id>], b: &[Id], floors: &[Id]) -> Vec<Id> {
@@ -461,4 +494,46 @@ pub(crate) fn ldlt_solve(p: &mut Program, m: &[Vec<Id>], b: &[Id], floors: &[Id]
         x[i] = xi;
     }
     x
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The count that `forward_dynamics`'s docs print for the run-time solve is the count of
+    /// the program `ldlt_solve` builds on distinct inputs (nothing to share), plus one
+    /// multiplication per run-time floor and one subtraction per joint for `tau - h`.
+    #[test]
+    fn solve_cost_counts_the_programs_operations() {
+        for n in 1..=9 {
+            for relative in [0, n] {
+                let mut p = Program::new();
+                let m: Vec<Vec<Id>> = (0..n)
+                    .map(|i| {
+                        (0..n)
+                            .map(|j| p.input(Input::Q(i.max(j) * n + i.min(j))))
+                            .collect()
+                    })
+                    .collect();
+                let b: Vec<Id> = (0..n)
+                    .map(|i| {
+                        let (tau, h) = (p.input(Input::Tau(i)), p.input(Input::Qd(i)));
+                        p.sub(tau, h)
+                    })
+                    .collect();
+                let floors: Vec<Id> = (0..n)
+                    .map(|i| {
+                        if relative > 0 {
+                            let ulp = p.constant(ulp());
+                            p.mul(ulp, m[i][i])
+                        } else {
+                            p.constant(ulp())
+                        }
+                    })
+                    .collect();
+                let x = ldlt_solve(&mut p, &m, &b, &floors);
+                assert_eq!(p.op_count(&x), ldlt_solve_cost(n, relative), "n = {n}");
+            }
+        }
+    }
 }

@@ -447,84 +447,6 @@ Cost: 29 multiplications, 28 additions, 0 divisions, 3 sin_cos pairs.*/
             + __T::from_f64(1.0 / 2.0) * __ay1 + __s2 * __fx2 + __c2 * __fy2;
         ::planar_arm::__private::vector([__tau1, __tau2, __tau3])
     }
-    /**qdd = M^-1 (tau - c - g - f) by an unrolled L D L^T factorisation of M (no square roots, no allocation).
-
-M, c and g evaluated as `mass_matrix`, `coriolis` and `gravity` evaluate them: M from the formulas, c by the recursive Newton-Euler algorithm unrolled for this arm, g from the formulas.
-
-Cost: 50 multiplications, 53 additions, 3 divisions, 3 sin_cos pairs.*/
-    #[inline]
-    fn forward_dynamics<__T: ::planar_arm::Real>(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
-        __qd: &::planar_arm::nalgebra::SVector<__T, 3>,
-        __tau: &::planar_arm::nalgebra::SVector<__T, 3>,
-    ) -> ::planar_arm::nalgebra::SVector<__T, 3> {
-        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
-        let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
-        let [__tau1, __tau2, __tau3] = ::planar_arm::__private::unpack(__tau);
-        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
-            __q1,
-            __q2,
-            __q3,
-        ]);
-        let __c23 = __c2 * __c3 - __s2 * __s3;
-        let __t1 = __T::from_f64(1.0 / 2.0) * __c23;
-        let __t2 = __T::from_f64(5.0 / 3.0) + __T::from_f64(3.0 / 2.0) * __c2 + __c3
-            + __t1;
-        let __t3 = __T::from_f64(1.0 / 2.0) * __c3;
-        let __t4 = __t3 + __t1 + __T::from_f64(1.0 / 3.0);
-        let __ex1 = -(__qd1 * __qd1);
-        let __ax2 = __c2 * __ex1;
-        let __t5 = __s2 * __ex1;
-        let __ay2 = -__t5;
-        let __w2 = __qd1 + __qd2;
-        let __t6 = __w2 * __w2;
-        let __ex2 = __ax2 - __t6;
-        let __ax3 = __c3 * __ex2 + __s3 * __ay2;
-        let __ay3 = __c3 * __ay2 - __s3 * __ex2;
-        let __w3 = __w2 + __qd3;
-        let __fx3 = __ax3 - __T::from_f64(1.0 / 2.0) * __w3 * __w3;
-        let __t7 = __T::from_f64(1.0 / 2.0) * __ay3;
-        let __t8 = __s3 * __fx3 + __c3 * __ay3;
-        let __fx2 = __ax2 - __T::from_f64(1.0 / 2.0) * __t6 + __c3 * __fx3
-            - __s3 * __ay3;
-        let __fy2 = __t8 - __t5;
-        let __t9 = __t7 + __T::from_f64(1.0 / 2.0) * __ay2 + __t8;
-        let __fy1 = __s2 * __fx2 + __c2 * __fy2;
-        let __c12 = __c2 * __c1 - __s2 * __s1;
-        let __s12 = __c2 * __s1 + __s2 * __c1;
-        let __t10 = __T::from_f64(2943.0 / 200.0) * __c12;
-        let __c123 = __c3 * __c12 - __s3 * __s12;
-        let __t11 = __T::from_f64(981.0 / 200.0) * __c123;
-        let __rhs1 = __tau1 - (__t9 + __fy1)
-            - (__t11 + __T::from_f64(981.0 / 40.0) * __c1 + __t10);
-        let __rhs2 = __tau2 - __t9 - (__t10 + __t11);
-        let __rhs3 = __tau3 - __t7 - __t11;
-        let __d1 = ::planar_arm::__private::max(
-            __T::from_f64(4.0) + __T::from_f64(3.0) * __c2 + __c3 + __c23,
-            __T::from_f64(9.0 / 4503599627370496.0),
-        );
-        let __inv_d1 = __T::from_f64(1.0) / __d1;
-        let __l21 = __t2 * __inv_d1;
-        let __d2 = ::planar_arm::__private::max(
-            __c3 + __T::from_f64(5.0 / 3.0) - __t2 * __l21,
-            __T::from_f64(1.0 / 1688849860263936.0),
-        );
-        let __inv_d2 = __T::from_f64(1.0) / __d2;
-        let __l31 = __t4 * __inv_d1;
-        let __t12 = __T::from_f64(1.0 / 3.0) + __t3 - __t2 * __l31;
-        let __l32 = __inv_d2 * __t12;
-        let __d3 = ::planar_arm::__private::max(
-            __T::from_f64(1.0 / 3.0) - __t4 * __l31 - __t12 * __l32,
-            __T::from_f64(0.00000000000000007401486830834377),
-        );
-        let __inv_d3 = __T::from_f64(1.0) / __d3;
-        let __t13 = __rhs2 - __rhs1 * __l21;
-        let __qdd3 = __inv_d3 * (__rhs3 - __rhs1 * __l31 - __l32 * __t13);
-        let __qdd2 = __inv_d2 * __t13 - __l32 * __qdd3;
-        let __qdd1 = __rhs1 * __inv_d1 - __l21 * __qdd2 - __l31 * __qdd3;
-        ::planar_arm::__private::vector([__qdd1, __qdd2, __qdd3])
-    }
     /**The kinetic energy.
 
 ```text
@@ -997,6 +919,28 @@ Cost: 171 multiplications, 178 additions, 3 divisions, 3 sin_cos pairs.*/
                 [__dqdd2_dtau1, __dqdd2_dtau2, __dqdd2_dtau3],
                 [__dqdd3_dtau1, __dqdd3_dtau2, __dqdd3_dtau3],
             ]),
+        )
+    }
+    /**qdd = M^-1 (tau - h): M and h = c + g + f from `mass_matrix_and_bias` (one pass), then an L D L^T factorisation of M (no square roots, no allocation) by planar_arm's fixed-size solve, which the compiler unrolls for this arm. Each pivot is floored at 2^-52 times a bound on M_ii (or M_ii itself where it holds run-time parameters), so an ill-conditioned M gives finite accelerations, never infinite or NaN ones.
+
+Cost: 47 multiplications, 44 additions, 3 divisions, 3 sin_cos pairs.*/
+    #[inline]
+    fn forward_dynamics<__T: ::planar_arm::Real>(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 3>,
+        __tau: &::planar_arm::nalgebra::SVector<__T, 3>,
+    ) -> ::planar_arm::nalgebra::SVector<__T, 3> {
+        let (__m, __h) = self.mass_matrix_and_bias(__q, __qd);
+        ::planar_arm::__private::forward_solve(
+            &__m,
+            __tau,
+            &__h,
+            [
+                ::planar_arm::__private::Floor::Fixed(9.0 / 4503599627370496.0),
+                ::planar_arm::__private::Floor::Fixed(1.0 / 1688849860263936.0),
+                ::planar_arm::__private::Floor::Fixed(0.00000000000000007401486830834377),
+            ],
         )
     }
     #[doc(hidden)]
