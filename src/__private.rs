@@ -86,6 +86,32 @@ pub fn real<T: Real>(x: f64) -> T {
     T::from_f64(x)
 }
 
+/// The kinetic energy `qd^T M qd / 2` from the upper triangle of `M`, row by row as the
+/// derive's quadratic form on the mass matrix's program computes it,
+/// `sum_i qd_i (M_ii qd_i / 2 + sum_{j > i} M_ij qd_j)`: what an arm's `kinetic_energy` calls
+/// where that form is cheaper than the expanded energy (the same operations, so the cost its
+/// docs print holds). The inner loop runs over all `N` columns and skips the lower ones, a
+/// constant trip count the compiler unrolls.
+#[inline(always)]
+#[must_use]
+pub fn kinetic_energy<T: Real, const N: usize>(m: &SMatrix<T, N, N>, qd: &SVector<T, N>) -> T {
+    // nalgebra stores columns: `m[j][i]` is M(i, j).
+    let (m, qd) = (&m.data.0, &qd.data.0[0]);
+    let half = T::from_f64(0.5);
+    let mut total = T::from_f64(0.0);
+    for i in 0..N {
+        let mut row = half * (m[i][i] * qd[i]);
+        for j in 0..N {
+            if j > i {
+                row = row + m[j][i] * qd[j];
+            }
+        }
+        let row = qd[i] * row;
+        total = if i == 0 { row } else { total + row };
+    }
+    total
+}
+
 /// The parameter-only values of an arm's hot methods, computed by its `__freeze` and held by
 /// [`crate::Frozen`]. A wrapper because `[f64; K]` implements `Default` only up to 32.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -193,6 +193,28 @@ pub(crate) fn vector(ids: &[proc_macro2::Ident]) -> TokenStream {
     quote!(::planar_arm::__private::vector([#(#ids),*]))
 }
 
+/// `kinetic_energy` as `qd^T M qd / 2` with `M` from `mass_matrix`:
+/// `planar_arm::__private::kinetic_energy` performs the operations that `quadratic` (the
+/// quadratic form on the mass matrix's program) appends to M's, so the cost printed is that
+/// program's.
+fn quadratic_kinetic_energy(n: usize, doc: &str, quadratic: &Method) -> TokenStream {
+    let nn = Literal::usize_unsuffixed(n);
+    let v = quote!(::planar_arm::nalgebra::SVector<__T, #nn>);
+    let (q, qd) = (local("q"), local("qd"));
+    let doc = format!(
+        "{doc}\n\nEvaluated as `qd^T M qd / 2` with M from `mass_matrix` (cheaper than the \
+         formula for this arm).\n\nCost: {}.",
+        quadratic.op_count()
+    );
+    quote! {
+        #[doc = #doc]
+        #[inline]
+        fn kinetic_energy<__T: ::planar_arm::Real>(&self, #q: &#v, #qd: &#v) -> __T {
+            ::planar_arm::__private::kinetic_energy(&self.mass_matrix(#q), #qd)
+        }
+    }
+}
+
 /// `forward_dynamics` of an arm of three or more joints, or with `frozen = Some(slots)` its
 /// variant reading the frozen block: `mass_matrix_and_bias` (whose cost is `mh`), then
 /// `planar_arm::__private::forward_solve`, the `L D L^T` solve written once in the run-time
@@ -532,19 +554,28 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
             finish: Box::new(vector),
         });
     }
-    specs.push(Fn {
-        name: "kinetic_energy",
-        generic: true,
-        params: vec![q, qd],
-        ret: quote!(__T),
-        doc: formula_doc("The kinetic energy.", &[("T".into(), &dy.kinetic_energy)]),
-        method: d.kinetic_energy_method(),
-        touch: TokenStream::new(),
-        finish: Box::new(|ids| {
-            let i = &ids[0];
-            quote!(#i)
-        }),
-    });
+    let ke_doc = formula_doc("The kinetic energy.", &[("T".into(), &dy.kinetic_energy)]);
+    let (ke, ke_quadratic) = d.kinetic_energy_choice();
+    // The quadratic form on M's program is `mass_matrix` and a product the run-time crate
+    // writes once (see `quadratic_kinetic_energy`).
+    let ke_fn = if ke_quadratic {
+        Some(quadratic_kinetic_energy(n, &ke_doc, &ke))
+    } else {
+        specs.push(Fn {
+            name: "kinetic_energy",
+            generic: true,
+            params: vec![q, qd],
+            ret: quote!(__T),
+            doc: ke_doc,
+            method: ke,
+            touch: TokenStream::new(),
+            finish: Box::new(|ids| {
+                let i = &ids[0];
+                quote!(#i)
+            }),
+        });
+        None
+    };
     specs.push(Fn {
         name: "potential_energy",
         generic: true,
@@ -694,6 +725,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     for f in &specs {
         fns.push(emit_fn(n, f, None)?);
     }
+    fns.extend(ke_fn);
     let slots = frozen.as_ref().map_or(0, |fz| fz.block.outputs.len());
     if n >= 3 {
         let mh = specs

@@ -436,19 +436,26 @@ impl<C: Emit> Derived<C> {
     /// energy is built only when its term count could compete.
     #[must_use]
     pub fn kinetic_energy_method(&self) -> Method {
+        self.kinetic_energy_choice().0
+    }
+
+    /// [`kinetic_energy_method`](Self::kinetic_energy_method), and whether it is the quadratic
+    /// form on the mass matrix's program (then the derive emits `kinetic_energy` as a call of
+    /// `mass_matrix` and the run-time crate's quadratic form: the same operations, none of them
+    /// type-checked again in the user's crate). On a tie the expanded energy is kept.
+    pub(crate) fn kinetic_energy_choice(&self) -> (Method, bool) {
         let quadratic = self.kinetic_energy_quadratic_method();
         let terms = Self::terms(&[&self.dynamics.kinetic_energy]);
         if self.worth_expanding(terms, &quadratic) {
-            cheapest(vec![
-                self.vector_method(
-                    "kinetic",
-                    std::slice::from_ref(&self.dynamics.kinetic_energy),
-                ),
-                quadratic,
-            ])
-        } else {
-            quadratic
+            let expanded = self.vector_method(
+                "kinetic",
+                std::slice::from_ref(&self.dynamics.kinetic_energy),
+            );
+            if cost(&expanded) <= cost(&quadratic) {
+                return (expanded, false);
+            }
         }
+        (quadratic, true)
     }
 
     /// `T = sum_i qd_i (M_ii qd_i / 2 + sum_{j > i} M_ij qd_j)`.
