@@ -30,14 +30,20 @@ pub enum Floor {
 /// 2^-52: the relative rounding noise of one `f64` operation.
 const ULP: f64 = 1.0 / 4_503_599_627_370_496.0;
 
-/// Every row index below 16 written out (`if I < N` folds away once `N` is known), then a loop
-/// for any rows beyond: with each row's index a constant, the compiler unrolls that row's loops
-/// fully. As one loop nest over the rows it stopped unrolling at seven joints, where the solve
-/// took twice the time of the straight-line code (docs/performance.md).
+/// With `$unroll`, every row index below 16 written out (`if I < N` folds away once `N` is
+/// known), then a loop for any rows beyond: with each row's index a constant, the compiler
+/// unrolls that row's loops fully. As one loop nest over the rows it stopped unrolling at seven
+/// joints, where the solve took twice the time of the straight-line code (docs/performance.md).
+/// Without, one loop: what an unoptimised build compiles (the sixteen copies are dead weight
+/// there, about 2 % of a six-link crate's clean rebuild).
 macro_rules! each_row {
-    ($n:expr, $i:ident => $body:block) => {{
-        each_row!(@ $n, $i, $body, 0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15);
-        for $i in 16..$n $body
+    ($unroll:expr, $n:expr, $i:ident => $body:block) => {{
+        if $unroll {
+            each_row!(@ $n, $i, $body, 0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15);
+            for $i in 16..$n $body
+        } else {
+            for $i in 0..$n $body
+        }
     }};
     (@ $n:expr, $i:ident, $body:block, $($k:literal)*) => {
         $( if $k < $n { let $i: usize = $k; $body } )*
@@ -49,10 +55,23 @@ macro_rules! each_row {
 /// `L_ij = s_ij / d_j` and `d_i = M_ii - sum_k L_ik s_ik`, floored; then `L y = tau - h`,
 /// `z = y / d`, `L^T x = z`. Reads the lower triangle of `m`. No square roots, one division per
 /// joint, no allocation; NaN in gives NaN out, never a panic.
-#[allow(clippy::needless_range_loop)] // the indices are the formula's
+///
+/// Optimised builds (no `debug_assertions`) get the rows written out, which the compiler
+/// unrolls; unoptimised ones the plain loops. Both are the same arithmetic in the same order.
 #[inline(always)]
 #[must_use]
 pub fn forward_solve<T: Real, const N: usize>(
+    m: &SMatrix<T, N, N>,
+    tau: &SVector<T, N>,
+    h: &SVector<T, N>,
+    floors: [Floor; N],
+) -> SVector<T, N> {
+    solve::<T, N, { !cfg!(debug_assertions) }>(m, tau, h, floors)
+}
+
+#[allow(clippy::needless_range_loop)] // the indices are the formula's
+#[inline(always)]
+fn solve<T: Real, const N: usize, const UNROLL: bool>(
     m: &SMatrix<T, N, N>,
     tau: &SVector<T, N>,
     h: &SVector<T, N>,
@@ -69,7 +88,7 @@ pub fn forward_solve<T: Real, const N: usize>(
     let mut s = [[zero; N]; N];
     let mut l = [[zero; N]; N];
     let mut inv_d = [zero; N];
-    each_row!(N, i => {
+    each_row!(UNROLL, N, i => {
         for j in 0..N {
             if j < i {
                 let mut sij = m[j][i];
@@ -96,7 +115,7 @@ pub fn forward_solve<T: Real, const N: usize>(
     });
     // L y = tau - h
     let mut y = [zero; N];
-    each_row!(N, i => {
+    each_row!(UNROLL, N, i => {
         let mut yi = tau[i] - h[i];
         for k in 0..N {
             if k < i {
@@ -107,7 +126,7 @@ pub fn forward_solve<T: Real, const N: usize>(
     });
     // D z = y, L^T x = z, from the last row up.
     let mut x = [zero; N];
-    each_row!(N, r => {
+    each_row!(UNROLL, N, r => {
         let i = N - 1 - r;
         let mut xi = y[i] * inv_d[i];
         for k in 0..N {
@@ -147,9 +166,11 @@ mod tests {
             let h = SVector::<f64, N>::from_fn(|i, _| 0.25 - i as f64 * 0.11);
             let want = m.cholesky().unwrap().solve(&(tau - h));
             for floors in [[Floor::Relative; N], [Floor::Fixed(1e-12); N]] {
-                let got = forward_solve(&m, &tau, &h, floors);
+                let got = solve::<f64, N, true>(&m, &tau, &h, floors);
                 let err = (got - want).norm() / want.norm();
                 assert!(err < 1e-13, "N = {N}: relative error {err:e}");
+                // The loops of an unoptimised build: the same operations, bit for bit.
+                assert_eq!(solve::<f64, N, false>(&m, &tau, &h, floors), got);
             }
         }
     }
@@ -162,6 +183,7 @@ mod tests {
         check::<5>();
         check::<8>();
         check::<12>();
+        check::<18>();
     }
 
     #[test]
@@ -171,15 +193,19 @@ mod tests {
         let tau = SVector::<f64, 2>::new(1.0, 2.0);
         let h = SVector::<f64, 2>::zeros();
         for floors in [[Floor::Relative; 2], [Floor::Fixed(1e-9); 2]] {
-            let x = forward_solve(&m, &tau, &h, floors);
-            assert!(x.iter().all(|v| v.is_finite()), "{x:?}");
+            for x in [
+                solve::<f64, 2, true>(&m, &tau, &h, floors),
+                solve::<f64, 2, false>(&m, &tau, &h, floors),
+            ] {
+                assert!(x.iter().all(|v| v.is_finite()), "{x:?}");
+            }
         }
-        let x = forward_solve(
-            &m,
-            &SVector::<f64, 2>::new(f64::NAN, 0.0),
-            &h,
-            [Floor::Relative; 2],
-        );
-        assert!(x.iter().all(|v| v.is_nan()), "{x:?}");
+        let nan = SVector::<f64, 2>::new(f64::NAN, 0.0);
+        for x in [
+            solve::<f64, 2, true>(&m, &nan, &h, [Floor::Relative; 2]),
+            solve::<f64, 2, false>(&m, &nan, &h, [Floor::Relative; 2]),
+        ] {
+            assert!(x.iter().all(|v| v.is_nan()), "{x:?}");
+        }
     }
 }
