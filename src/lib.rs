@@ -361,6 +361,14 @@ pub trait PlanarArm<const N: usize> {
         qdd: &SVector<T, N>,
     ) -> SVector<T, N>;
     /// The joint accelerations qdd that solve M qdd = tau - c - g - f.
+    ///
+    /// With one or two joints in closed form (Cramer's rule) on M, c and g as
+    /// [`mass_matrix`](Self::mass_matrix), [`coriolis`](Self::coriolis) and
+    /// [`gravity`](Self::gravity) return them; from three joints M and h = c + g + f as
+    /// [`mass_matrix_and_bias`](Self::mass_matrix_and_bias) returns them, solved by an
+    /// `L D L^T` factorisation whose pivots are floored at 2^-52 times a bound on `M_ii`, so an
+    /// ill-conditioned M gives finite accelerations. The method's docs on your arm give its
+    /// operation count.
     fn forward_dynamics<T: Real>(
         &self,
         q: &SVector<T, N>,
