@@ -228,20 +228,20 @@ fn solved_forward_dynamics<C: Emit>(
 ) -> Result<TokenStream, EmitError> {
     let n = d.arm.links.len();
     let nn = Literal::usize_unsuffixed(n);
-    let floors = (0..n)
-        .map(
-            |i| match crate::unrolled::fixed_pivot_floor(&d.dynamics.mass_matrix[i][i]) {
-                Some(f) => {
-                    let f = crate::emit::f64_argument_tokens(&f)?;
-                    Ok(quote!(::planar_arm::__private::Floor::Fixed(#f)))
-                }
-                None => Ok(quote!(::planar_arm::__private::Floor::Relative)),
-            },
-        )
+    let fixed: Vec<_> = (0..n)
+        .map(|i| crate::unrolled::fixed_pivot_floor(&d.dynamics.mass_matrix[i][i]))
+        .collect();
+    let floors = fixed
+        .iter()
+        .map(|f| match f {
+            Some(f) => {
+                let f = crate::emit::f64_argument_tokens(f)?;
+                Ok(quote!(::planar_arm::__private::Floor::Fixed(#f)))
+            }
+            None => Ok(quote!(::planar_arm::__private::Floor::Relative)),
+        })
         .collect::<Result<Vec<_>, EmitError>>()?;
-    let relative = (0..n)
-        .filter(|&i| crate::unrolled::fixed_pivot_floor(&d.dynamics.mass_matrix[i][i]).is_none())
-        .count();
+    let relative = fixed.iter().filter(|f| f.is_none()).count();
     let solve = crate::unrolled::ldlt_solve_cost(n, relative);
     let cost = crate::slp::OpCount {
         mul: mh.mul + solve.mul,
