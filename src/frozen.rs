@@ -13,8 +13,8 @@ use crate::PlanarArm;
 /// An arm with run-time parameters (`mass = self.m2`, ...) computes at every call the
 /// products and sums of parameters that do not depend on the state: `i3 + m3 c3^2`,
 /// `m2 + m3`, the payload merged into the last link. `Frozen` computes them once. Its methods
-/// give the same numbers as the arm's own (the same formulas, evaluated in the same order) and
-/// cost about what the same arm written with literals does (docs/performance.md).
+/// give the arm's own numbers to rounding (the same formulas, sums grouped differently in
+/// places) and cost about what the same arm written with literals does (docs/performance.md).
 ///
 /// `Frozen` holds a shared borrow of the arm, so the arm cannot change while the view lives and
 /// the values it holds cannot go stale: freeze again after changing a parameter.
