@@ -235,13 +235,7 @@ fn frozen_wrapper(
         }
     });
     let statements = &rendered.statements;
-    let (cost, own) = (m.op_count(), part.op_count());
-    let cost = crate::slp::OpCount {
-        mul: cost.mul + own.mul,
-        add: cost.add + own.add,
-        div: cost.div + own.div,
-        sin_cos: cost.sin_cos,
-    };
+    let cost = m.op_count() + part.op_count();
     let evaluation = if f.method.evaluation.is_empty() {
         String::new()
     } else {
@@ -339,13 +333,7 @@ fn solved_forward_dynamics<C: Emit>(
         })
         .collect::<Result<Vec<_>, EmitError>>()?;
     let relative = fixed.iter().filter(|f| f.is_none()).count();
-    let solve = crate::unrolled::ldlt_solve_cost(n, relative);
-    let cost = crate::slp::OpCount {
-        mul: mh.mul + solve.mul,
-        add: mh.add + solve.add,
-        div: mh.div + solve.div,
-        sin_cos: mh.sin_cos,
-    };
+    let cost = mh + crate::unrolled::ldlt_solve_cost(n, relative);
     let v = quote!(::planar_arm::nalgebra::SVector<__T, #nn>);
     let (q, qd, tau) = (local("q"), local("qd"), local("tau"));
     let (m, h) = (local("m"), local("h"));

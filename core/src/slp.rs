@@ -85,6 +85,21 @@ pub struct OpCount {
     pub sin_cos: usize,
 }
 
+/// The operations of two programs evaluated one after the other at the same joint angles (a
+/// method and the values or the solve it delegates to): the arithmetic adds up, the `sin_cos`
+/// pairs are shared.
+impl std::ops::Add for OpCount {
+    type Output = Self;
+    fn add(self, other: Self) -> Self {
+        Self {
+            mul: self.mul + other.mul,
+            add: self.add + other.add,
+            div: self.div + other.div,
+            sin_cos: self.sin_cos.max(other.sin_cos),
+        }
+    }
+}
+
 impl std::fmt::Display for OpCount {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(
