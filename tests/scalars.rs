@@ -1,7 +1,8 @@
-//! The generated dynamics (and Jacobian and joint positions) in other scalars: `f32` against `f64` within a bound derived from
-//! `f32` precision, and every lane of a SIMD batch equal to the scalar evaluation bit for bit,
-//! on arms with run-time parameters, armature, friction and payload, literal arms of 2 to 8
-//! links, and the frozen variants.
+//! The generated dynamics (and Jacobian and joint positions) in other scalars: `f32` against
+//! `f64` within a bound derived from `f32` precision, and every lane of a SIMD batch equal to
+//! the scalar evaluation (bit for bit, or within a few ulp where `f64x4` batches take the fused
+//! kernel of an AVX and FMA build), on arms with run-time parameters, armature, friction and
+//! payload, literal arms of 2 to 8 links, and the frozen variants.
 
 mod common;
 
@@ -10,7 +11,7 @@ mod arms;
 
 use arms::{Eight, Scara};
 use common::Rng;
-use planar_arm::nalgebra::{SMatrix, SVector};
+use planar_arm::nalgebra::{DMatrix, SMatrix, SVector};
 use planar_arm::prelude::*;
 use planar_arm::simd::{SimdValue, WideF32x4, WideF32x8, WideF64x4};
 use planar_arm::Real;
@@ -140,7 +141,19 @@ batch!(WideF64x4, f64, 4);
 batch!(WideF32x4, f32, 4);
 batch!(WideF32x8, f32, 8);
 
-/// Bit-for-bit equality of lane `l` of `batch` with `scalar`.
+/// Whether `WideF64x4` takes its sines and cosines from the fused kernel (built with AVX and
+/// FMA): then a lane differs from the scalar call by at most 4 ulp in each sine and cosine.
+const FUSED: bool = cfg!(all(target_feature = "avx", target_feature = "fma"));
+
+/// The bound on a lane of a fused batch against the scalar result, relative to `1 +` the
+/// largest magnitude among the scalar method's outputs: 4 ulp in the sines and cosines,
+/// carried through the method's sums and products. Measured up to 5.9 eps on 50 batches whose
+/// mass matrices differ (forward dynamics divided by the condition number of `M`, see
+/// [`same_within`]); the bound leaves a factor of about twenty.
+const FUSED_BOUND: f64 = 128.0 * f64::EPSILON;
+
+/// Lane `l` of `batch` against `scalar`: bit for bit, or within [`FUSED_BOUND`] for a fused
+/// `WideF64x4` batch.
 fn same<B: Batch, const R: usize, const C: usize>(
     batch: &SMatrix<B, R, C>,
     scalar: &SMatrix<B::Lane, R, C>,
@@ -149,13 +162,49 @@ fn same<B: Batch, const R: usize, const C: usize>(
 ) where
     B::Lane: Into<f64>,
 {
+    same_within(batch, scalar, l, what, 1.0);
+}
+
+/// [`same`], with the fused bound multiplied by `amplify`: forward dynamics solves
+/// `M qdd = tau - h`, which magnifies relative differences in `M` and `h` by up to the
+/// condition number of `M`.
+fn same_within<B: Batch, const R: usize, const C: usize>(
+    batch: &SMatrix<B, R, C>,
+    scalar: &SMatrix<B::Lane, R, C>,
+    l: usize,
+    what: &str,
+    amplify: f64,
+) where
+    B::Lane: Into<f64>,
+{
+    let fused = FUSED && B::LANES == 4 && core::mem::size_of::<B::Lane>() == 8;
+    let scale = 1.0
+        + scalar
+            .iter()
+            .map(|&s| Into::<f64>::into(s).abs())
+            .fold(0.0, f64::max);
     for (b, s) in batch.iter().zip(scalar.iter()) {
         let (x, y): (f64, f64) = (b.lane(l).into(), (*s).into());
+        let ok = if fused {
+            (x - y).abs() <= FUSED_BOUND * amplify * scale
+        } else {
+            x.to_bits() == y.to_bits()
+        };
+        if fused {
+            let eps = (x - y).abs() / scale / amplify / f64::EPSILON;
+            WORST.with(|w| w.set(w.get().max(eps)));
+        }
         assert!(
-            x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan()),
+            ok || (x.is_nan() && y.is_nan()),
             "{what}, lane {l}: {x} vs {y}"
         );
     }
+}
+thread_local!(static WORST: std::cell::Cell<f64> = const { std::cell::Cell::new(0.0) });
+
+/// Lane-wise states, packed into batches.
+fn pack<B: Batch, const N: usize>(v: &[SVector<B::Lane, N>]) -> SVector<B, N> {
+    SVector::from_fn(|j, _| B::gather(&v.iter().map(|x| x[j]).collect::<Vec<_>>()))
 }
 
 fn lanes_equal_scalars<A, B, const N: usize>(arm: &A, rng: &mut Rng)
@@ -172,49 +221,69 @@ where
     };
     for _ in 0..50 {
         let (q, qd, qdd) = (draw(rng, 3.0), draw(rng, 3.0), draw(rng, 5.0));
-        let pack = |v: &[SVector<B::Lane, N>]| -> SVector<B, N> {
-            SVector::from_fn(|j, _| B::gather(&v.iter().map(|x| x[j]).collect::<Vec<_>>()))
-        };
-        let (qb, qdb, qddb) = (pack(&q), pack(&qd), pack(&qdd));
-        let tau = arm.inverse_dynamics(&qb, &qdb, &qddb);
-        let m = arm.mass_matrix(&qb);
-        let h = arm.bias(&qb, &qdb);
-        let (mb, hb) = arm.mass_matrix_and_bias(&qb, &qdb);
-        let fd = arm.forward_dynamics(&qb, &qdb, &qddb);
-        let c = arm.coriolis_matrix(&qb, &qdb);
-        let frozen = arm.freeze();
-        let tau_frozen = frozen.inverse_dynamics(&qb, &qdb, &qddb);
-        let t = arm.kinetic_energy(&qb, &qdb);
-        let jac = arm.jacobian(&qb);
-        let joints = arm.joint_positions(&qb);
-        for l in 0..B::LANES {
-            let (q, qd, qdd) = (&q[l], &qd[l], &qdd[l]);
-            same(&tau, &arm.inverse_dynamics(q, qd, qdd), l, "ID");
-            same(&m, &arm.mass_matrix(q), l, "M");
-            same(&h, &arm.bias(q, qd), l, "h");
-            let (ms, hs) = arm.mass_matrix_and_bias(q, qd);
-            same(&mb, &ms, l, "M of M and h");
-            same(&hb, &hs, l, "h of M and h");
-            same(&fd, &arm.forward_dynamics(q, qd, qdd), l, "FD");
-            same(&c, &arm.coriolis_matrix(q, qd), l, "C");
-            same(
-                &tau_frozen,
-                &frozen.inverse_dynamics(q, qd, qdd),
-                l,
-                "frozen ID",
-            );
-            same(&jac, &arm.jacobian(q), l, "J");
-            for (pb, ps) in joints.iter().zip(arm.joint_positions(q)) {
-                same(&pb.coords, &ps.coords, l, "joint positions");
-            }
-            let ts: f64 = arm.kinetic_energy(q, qd).into();
-            assert_eq!(t.lane(l).into().to_bits(), ts.to_bits(), "T");
+        check_lanes::<A, B, N>(arm, &q, &qd, &qdd);
+    }
+}
+
+/// Every generated method on the batch of states `(q, qd, qdd)` (one per lane) against the
+/// scalar call on each lane.
+fn check_lanes<A, B, const N: usize>(
+    arm: &A,
+    q: &[SVector<B::Lane, N>],
+    qd: &[SVector<B::Lane, N>],
+    qdd: &[SVector<B::Lane, N>],
+) where
+    A: PlanarArm<N>,
+    B: Batch,
+    B::Lane: Into<f64>,
+{
+    let (qb, qdb, qddb) = (pack::<B, N>(q), pack::<B, N>(qd), pack::<B, N>(qdd));
+    let tau = arm.inverse_dynamics(&qb, &qdb, &qddb);
+    let m = arm.mass_matrix(&qb);
+    let h = arm.bias(&qb, &qdb);
+    let (mb, hb) = arm.mass_matrix_and_bias(&qb, &qdb);
+    let fd = arm.forward_dynamics(&qb, &qdb, &qddb);
+    let c = arm.coriolis_matrix(&qb, &qdb);
+    let frozen = arm.freeze();
+    let tau_frozen = frozen.inverse_dynamics(&qb, &qdb, &qddb);
+    let t = arm.kinetic_energy(&qb, &qdb);
+    let jac = arm.jacobian(&qb);
+    let joints = arm.joint_positions(&qb);
+    for l in 0..B::LANES {
+        let (q, qd, qdd) = (&q[l], &qd[l], &qdd[l]);
+        same(&tau, &arm.inverse_dynamics(q, qd, qdd), l, "ID");
+        same(&m, &arm.mass_matrix(q), l, "M");
+        same(&h, &arm.bias(q, qd), l, "h");
+        let (ms, hs) = arm.mass_matrix_and_bias(q, qd);
+        same(&mb, &ms, l, "M of M and h");
+        same(&hb, &hs, l, "h of M and h");
+        let ms = arm.mass_matrix(q);
+        let sv = DMatrix::from_iterator(N, N, ms.iter().map(|&x| x.into())).singular_values();
+        let cond = sv.max() / sv.min();
+        same_within(&fd, &arm.forward_dynamics(q, qd, qdd), l, "FD", cond);
+        same(&c, &arm.coriolis_matrix(q, qd), l, "C");
+        same(
+            &tau_frozen,
+            &frozen.inverse_dynamics(q, qd, qdd),
+            l,
+            "frozen ID",
+        );
+        same(&jac, &arm.jacobian(q), l, "J");
+        for (pb, ps) in joints.iter().zip(arm.joint_positions(q)) {
+            same(&pb.coords, &ps.coords, l, "joint positions");
         }
+        let ts = arm.kinetic_energy(q, qd);
+        same(
+            &SMatrix::<B, 1, 1>::new(t),
+            &SMatrix::<B::Lane, 1, 1>::new(ts),
+            l,
+            "T",
+        );
     }
 }
 
 #[test]
-fn every_lane_of_a_batch_is_the_scalar_result_bit_for_bit() {
+fn every_lane_of_a_batch_is_the_scalar_result() {
     let mut rng = Rng(0x51_3d);
     let scara = Scara::sample();
     lanes_equal_scalars::<_, WideF64x4, 2>(&scara, &mut rng);
@@ -225,6 +294,50 @@ fn every_lane_of_a_batch_is_the_scalar_result_bit_for_bit() {
     lanes_equal_scalars::<_, WideF32x8, 3>(&Telescope::default(), &mut rng);
     lanes_equal_scalars::<_, WideF64x4, 8>(&Eight::default(), &mut rng);
     lanes_equal_scalars::<_, WideF32x8, 8>(&Eight::default(), &mut rng);
+    println!(
+        "fused {FUSED}: worst lane {:.2} eps",
+        WORST.with(std::cell::Cell::get)
+    );
+}
+
+/// Built with AVX and FMA, the fused kernel rounds about one angle in 65 000 differently from
+/// the scalar kernel, so the random states above seldom meet one. Search full-precision states
+/// until some lane of the mass matrix differs from its scalar call, then check every method
+/// there within [`FUSED_BOUND`]; the test fails if the search never finds a difference.
+#[cfg(all(target_feature = "avx", target_feature = "fma"))]
+#[test]
+fn fused_lanes_that_differ_from_the_scalar_stay_within_the_bound() {
+    fn search<A: PlanarArm<N>, const N: usize>(arm: &A, rng: &mut Rng) -> usize {
+        let mut found = 0;
+        for _ in 0..200_000 {
+            let q: Vec<SVector<f64, N>> = (0..4).map(|_| rng.vector::<N>(3.0)).collect();
+            let m = arm.mass_matrix(&pack::<WideF64x4, N>(&q));
+            let differs = (0..4).any(|l| {
+                let s = arm.mass_matrix(&q[l]);
+                m.iter().zip(s.iter()).any(|(b, s)| b.extract(l) != *s)
+            });
+            if differs {
+                let qd: Vec<SVector<f64, N>> = (0..4).map(|_| rng.vector::<N>(3.0)).collect();
+                let qdd: Vec<SVector<f64, N>> = (0..4).map(|_| rng.vector::<N>(5.0)).collect();
+                check_lanes::<A, WideF64x4, N>(arm, &q, &qd, &qdd);
+                found += 1;
+                if found == 20 {
+                    break;
+                }
+            }
+        }
+        found
+    }
+    let mut rng = Rng(0xf0_5e);
+    let found = [
+        search(&Paper3::default(), &mut rng),
+        search(&Telescope::default(), &mut rng),
+        search(&Eight::default(), &mut rng),
+    ];
+    let worst = WORST.with(std::cell::Cell::get);
+    println!("differing batches found {found:?}: worst lane {worst:.2} eps");
+    assert!(found.iter().all(|&f| f > 0), "{found:?}");
+    assert!(worst > 0.0);
 }
 
 /// A forward-mode dual number `re + eps e` (`e^2 = 0`): the generated code evaluated in it
