@@ -8,7 +8,9 @@
 //! crate's `f64x4` (two SSE2 registers on a default `x86_64` build, one AVX register where AVX
 //! is enabled, plain arrays on targets without SIMD). It is safe, portable Rust, and since
 //! Rust neither contracts nor reorders floating-point operations, every target with IEEE
-//! double arithmetic gets the same bits, whichever lane an angle lands in. On the benchmark
+//! double arithmetic gets the same bits, whichever lane an angle lands in (the `WideF64x4` batch
+//! scalar excepted where the target has AVX and FMA: its kernel fuses each multiply-add,
+//! `trig/fused.rs`, and differs from this one by 1 ulp in about 1.5e-5 of values). On the benchmark
 //! machine (`docs/performance.md`, 2026-12-03) it costs 0.5-0.7x as much as `f64::sin_cos` for
 //! one angle and down to a fifth per angle for eight.
 //!
