@@ -206,17 +206,7 @@ mod tests {
     #[cfg(feature = "std")]
     use simba::simd::{WideF32x4, WideF32x8, WideF64x4};
 
-    struct Rng(u64);
-    impl Rng {
-        fn unit(&mut self) -> f64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            #[allow(clippy::cast_precision_loss)]
-            let u = (self.0 >> 11) as f64 / (1u64 << 53) as f64;
-            2.0 * u - 1.0
-        }
-    }
+    use crate::trig::tests::{ulps, Rng};
 
     /// Ulps between two `f32` of the same sign (`u32::MAX` across signs).
     fn ulps32(a: f32, b: f32) -> u32 {
@@ -296,12 +286,7 @@ mod tests {
         let fused = cfg!(all(target_feature = "avx", target_feature = "fma"));
         let same = |a: f64, b: f64| {
             if fused {
-                let ulps = if a.is_sign_negative() == b.is_sign_negative() {
-                    a.to_bits().abs_diff(b.to_bits())
-                } else {
-                    u64::MAX
-                };
-                ulps <= 4 || (a - b).abs() <= 2f64.powi(-79) || (a.is_nan() && b.is_nan())
+                ulps(a, b) <= 4 || (a - b).abs() <= 2f64.powi(-79) || (a.is_nan() && b.is_nan())
             } else {
                 a.to_bits() == b.to_bits()
             }

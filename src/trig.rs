@@ -581,11 +581,11 @@ static SIN_TABLE: [f64; 256] = [
 ];
 
 #[cfg(test)]
-pub(super) mod tests {
+pub(crate) mod tests {
     use super::{out_of_line, packed, sin_cos, LIMIT, SIN_TABLE};
 
     /// Distance in units in the last place (same-sign results; otherwise `u64::MAX`).
-    pub(super) fn ulps(a: f64, b: f64) -> u64 {
+    pub(crate) fn ulps(a: f64, b: f64) -> u64 {
         if a == b {
             return 0;
         }
@@ -600,9 +600,9 @@ pub(super) mod tests {
         ulps(got, want) <= 2 || (got - want).abs() <= 2f64.powi(-80)
     }
 
-    pub(super) struct Rng(pub(super) u64);
+    pub(crate) struct Rng(pub(crate) u64);
     impl Rng {
-        pub(super) fn unit(&mut self) -> f64 {
+        pub(crate) fn unit(&mut self) -> f64 {
             self.0 ^= self.0 << 13;
             self.0 ^= self.0 >> 7;
             self.0 ^= self.0 << 17;
