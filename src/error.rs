@@ -41,12 +41,11 @@ pub enum ArmError {
     /// wrist, the last joint, at `target - l_N (cos phi, sin phi)`: `radius` is the wrist's
     /// distance from the base and the annulus the one the links before the last reach.
     ///
-    /// For arms with prismatic joints or joint ranges (the closed forms in
-    /// [`kinematics`](crate::kinematics) that take ranges), the region reached need not be an
+    /// For arms with prismatic joints or joint ranges, the region reached need not be an
     /// annulus: `inner ..= outer` are then radii about the base that bound it, and a target may
-    /// lie between them and still be out of reach. A target that only joint values outside the
-    /// ranges would reach has `distance` the amount by which the nearest solution's joint lies
-    /// outside its range, in that joint's unit (metres for a slide, radians for a hinge).
+    /// lie between them and still be out of reach, `distance` metres outside the region. A
+    /// target that joint values outside the ranges would reach is
+    /// [`BeyondJointRange`](Self::BeyondJointRange) instead.
     Unreachable {
         /// The tip position the caller asked for, `[x, y]`.
         target: [f64; 2],
@@ -63,6 +62,27 @@ pub enum ArmError {
         /// How far outside the annulus the point is, or for a target that joint ranges exclude
         /// how far outside its range the nearest solution's joint is (always > 0).
         distance: f64,
+    },
+    /// The target lies where the links would reach it with free joints, but every solution
+    /// puts some joint outside its `range`.
+    ///
+    /// `joint` and `excess` describe the solution that comes nearest to the ranges: the joint
+    /// that lies farthest outside its range in that solution, and by how much, in the joint's
+    /// own unit (radians for a hinge, metres for a slide).
+    BeyondJointRange {
+        /// The tip position the caller asked for, `[x, y]`.
+        target: [f64; 2],
+        /// The absolute angle of the last link the caller asked for (radians), `None` for a
+        /// position target.
+        orientation: Option<f64>,
+        /// The joint, 0-based as in `q[joint]`.
+        joint: usize,
+        /// Its kind, which gives the unit of `excess`.
+        kind: crate::Joint,
+        /// How far outside its range that joint lies (always > 0): radians for
+        /// [`Joint::Revolute`](crate::Joint::Revolute), metres for
+        /// [`Joint::Prismatic`](crate::Joint::Prismatic).
+        excess: f64,
     },
     /// The configuration is singular (or too close to it) for the requested inverse.
     Singular {
@@ -97,6 +117,24 @@ pub enum ArmError {
         /// The tolerance it exceeds, N m.
         tolerance: f64,
     },
+}
+
+/// `1st`, `2nd`, `3rd`, `4th`, ..., `11th`, `12th`, `21st`: the position of a link or joint from
+/// the base, so that a message can give both the 0-based index and the count a person uses.
+struct Ordinal(usize);
+
+impl fmt::Display for Ordinal {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let n = self.0;
+        let suffix = match (n % 10, n % 100) {
+            (_, 11..=13) => "th",
+            (1, _) => "st",
+            (2, _) => "nd",
+            (3, _) => "rd",
+            _ => "th",
+        };
+        write!(f, "{n}{suffix}")
+    }
 }
 
 /// A number to six significant digits, trailing zeros dropped: `0.001`, `1.5`, `2.5e-12`.
@@ -197,32 +235,33 @@ impl fmt::Display for ArmError {
                 outer,
                 distance,
             } => {
+                // Past the annulus when `distance` is the distance to it; otherwise the target
+                // lies between the bounding radii (or on them, to rounding) and `distance` is
+                // how far outside the region within them it lies.
+                let annular = (radius - outer).max(inner - radius).max(0.0);
+                let scale = outer.abs().max(radius.abs()).max(f64::MIN_POSITIVE);
+                let past_annulus = (distance - annular).abs() <= 1e-9 * scale;
                 let side = if radius > outer { "beyond" } else { "inside the hole of" };
-                if (inner..=outer).contains(&radius) {
-                    // Between the bounding radii: the region is not the whole annulus.
-                    return match orientation {
-                        None => write!(
-                            f,
-                            "target ({}, {}) lies {} from the base, within the radii {} ..= {}, but outside \
-                             the region the joints reach (by {}: metres, or radians past a joint range)",
-                            r(x), r(y), r(radius), r(inner), r(outer), r(distance)
-                        ),
-                        Some(phi) => write!(
-                            f,
-                            "target ({}, {}) with the last link at {} rad is unreachable: its wrist point lies \
-                             {} from the base, within the radii {} ..= {}, but outside the region the links \
-                             before the last reach (by {}: metres, or radians past a joint range)",
-                            r(x), r(y), r(phi), r(radius), r(inner), r(outer), r(distance)
-                        ),
-                    };
-                }
-                match orientation {
-                    None => write!(
+                match (orientation, past_annulus) {
+                    (None, false) => write!(
+                        f,
+                        "target ({}, {}) lies {} from the base, within the radii {} ..= {}, but {} m \
+                         outside the region the joints reach",
+                        r(x), r(y), r(radius), r(inner), r(outer), r(distance)
+                    ),
+                    (Some(phi), false) => write!(
+                        f,
+                        "target ({}, {}) with the last link at {} rad is unreachable: its wrist point lies \
+                         {} from the base, within the radii {} ..= {}, but {} m outside the region the \
+                         links before the last reach",
+                        r(x), r(y), r(phi), r(radius), r(inner), r(outer), r(distance)
+                    ),
+                    (None, true) => write!(
                         f,
                         "target ({}, {}) is {} {side} the reachable annulus {} ..= {} (it lies {} from the base)",
                         r(x), r(y), r(distance), r(inner), r(outer), r(radius)
                     ),
-                    Some(phi) => write!(
+                    (Some(phi), true) => write!(
                         f,
                         "target ({}, {}) with the last link at {} rad is unreachable: its wrist point lies {} \
                          from the base, {} {side} the annulus {} ..= {} the links before the last reach",
@@ -230,14 +269,61 @@ impl fmt::Display for ArmError {
                     ),
                 }
             }
+            Self::BeyondJointRange {
+                target: [x, y],
+                orientation,
+                joint,
+                kind,
+                excess,
+            } => {
+                let (what, unit) = match kind {
+                    crate::Joint::Revolute => ("hinge", "rad"),
+                    crate::Joint::Prismatic => ("slide", "m"),
+                };
+                match orientation {
+                    None => write!(f, "target ({}, {})", r(x), r(y))?,
+                    Some(phi) => write!(
+                        f,
+                        "target ({}, {}) with the last link at {} rad",
+                        r(x),
+                        r(y),
+                        r(phi)
+                    )?,
+                }
+                write!(
+                    f,
+                    " is out of reach within the joint ranges: the nearest solution puts q[{joint}] \
+                     (the {} joint, a {what}) {} {unit} outside its range",
+                    Ordinal(joint + 1),
+                    r(excess)
+                )
+            }
+            Self::Singular { measure, threshold } if measure.is_nan() => write!(
+                f,
+                "singular configuration: the measure of singularity is not a number (threshold {})",
+                r(threshold)
+            ),
+            Self::Singular {
+                measure: 0.0,
+                threshold,
+            } => write!(
+                f,
+                "singular configuration: the measure of singularity is exactly 0 (threshold {})",
+                r(threshold)
+            ),
             Self::Singular { measure, threshold } => write!(
                 f,
-                "singular configuration: |{}| is below the threshold {}",
+                "singular configuration: |{}| is at most the threshold {}",
                 r(measure),
                 r(threshold)
             ),
             Self::OutOfRange { what, link, value } => match link {
-                Some(i) => write!(f, "link {}: {what} = {} is out of range", i + 1, r(value)),
+                Some(i) => write!(
+                    f,
+                    "links[{i}] (the {} link): {what} = {} is out of range",
+                    Ordinal(i + 1),
+                    r(value)
+                ),
                 None => write!(f, "{what} = {} is out of range", r(value)),
             },
             Self::NoConvergence {
@@ -328,8 +414,79 @@ mod tests {
         };
         assert_eq!(
             ranged.to_string(),
-            "target (0.5, -0.5) lies 0.75 from the base, within the radii 0 ..= 1.3, but \
-             outside the region the joints reach (by 0.5: metres, or radians past a joint range)"
+            "target (0.5, -0.5) lies 0.75 from the base, within the radii 0 ..= 1.3, but 0.5 m \
+             outside the region the joints reach"
+        );
+        // A wrist on the outer radius (to rounding) and 0.91 outside the region within it: not
+        // "0.91 beyond the annulus".
+        let edge = ArmError::Unreachable {
+            target: [1.0, 1.5],
+            orientation: Some(0.5),
+            radius: 1.8000000000000003,
+            inner: 0.0,
+            outer: 1.8,
+            distance: 0.91,
+        };
+        let text = edge.to_string();
+        assert!(
+            text.contains("within the radii 0 ..= 1.8, but 0.91 m outside"),
+            "{text}"
+        );
+        let joint = ArmError::BeyondJointRange {
+            target: [1.7, 0.0],
+            orientation: None,
+            joint: 1,
+            kind: crate::Joint::Revolute,
+            excess: 0.2518 + 3e-17,
+        };
+        assert_eq!(
+            joint.to_string(),
+            "target (1.7, 0) is out of reach within the joint ranges: the nearest solution puts \
+             q[1] (the 2nd joint, a hinge) 0.2518 rad outside its range"
+        );
+        let slide = ArmError::BeyondJointRange {
+            target: [0.0, 1.5],
+            orientation: Some(0.5),
+            joint: 0,
+            kind: crate::Joint::Prismatic,
+            excess: 0.2,
+        };
+        assert!(slide
+            .to_string()
+            .ends_with("q[0] (the 1st joint, a slide) 0.2 m outside its range"));
+        for (measure, threshold, text) in [
+            (
+                0.0,
+                0.0,
+                "singular configuration: the measure of singularity is exactly 0 (threshold 0)",
+            ),
+            (
+                1e-13,
+                1e-12,
+                "singular configuration: |1e-13| is at most the threshold 1e-12",
+            ),
+        ] {
+            assert_eq!(ArmError::Singular { measure, threshold }.to_string(), text);
+        }
+        let link = ArmError::OutOfRange {
+            what: "mass",
+            link: Some(1),
+            value: -2.0,
+        };
+        assert_eq!(
+            link.to_string(),
+            "links[1] (the 2nd link): mass = -2 is out of range"
+        );
+        let ordinals: Vec<String> = [1, 2, 3, 4, 11, 12, 13, 21, 22, 101, 111]
+            .iter()
+            .map(|&n| Ordinal(n).to_string())
+            .collect();
+        assert_eq!(
+            ordinals,
+            [
+                "1st", "2nd", "3rd", "4th", "11th", "12th", "13th", "21st", "22nd", "101st",
+                "111th"
+            ]
         );
         let overflow = ArmError::NonFinite { argument: "result" };
         assert!(overflow.to_string().contains("overflowed"));

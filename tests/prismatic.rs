@@ -507,7 +507,11 @@ fn closed_form_inverse_kinematics_of_mixed_arms() {
     for target in [Point2::new(1.5, 0.0), Point2::new(0.3, 0.2)] {
         assert!(matches!(
             polar.inverse_kinematics(&target),
-            Err(ArmError::Unreachable { .. })
+            Err(ArmError::BeyondJointRange {
+                joint: 1,
+                kind: Joint::Prismatic,
+                ..
+            })
         ));
     }
     assert!(matches!(

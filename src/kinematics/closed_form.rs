@@ -16,10 +16,12 @@ use super::{annulus_check, check_lengths, wrap_angle};
 use crate::ArmError;
 
 mod in_ranges;
+mod position;
 #[cfg(test)]
 mod tests;
 
 pub use in_ranges::{ik2_in_ranges, ik3_in_ranges};
+pub use position::ik3_position;
 
 /// Closed-form inverse kinematics of a two- or three-link arm, both solutions.
 ///

@@ -49,7 +49,9 @@ mod test_support;
 mod workspace;
 
 pub use chain::{jacobian_of, sample_tips, tip_pose_of, TipSamples};
-pub use closed_form::{ik2, ik2_equal, ik2_in_ranges, ik3, ik3_in_ranges, ClosedFormIk};
+pub use closed_form::{
+    ik2, ik2_equal, ik2_in_ranges, ik3, ik3_in_ranges, ik3_position, ClosedFormIk,
+};
 pub use dyn_arm::DynArm;
 pub use manipulability::{is_singular, manipulability};
 pub use numeric::{
@@ -84,14 +86,23 @@ fn wrap_angle(a: f64) -> f64 {
     if a > -PI && a <= PI {
         a
     } else {
-        // `a.rem_euclid(TAU)`, spelled out: the same operations, and in `core`.
-        let r = a % TAU;
-        let r = if r < 0.0 { r + TAU } else { r };
+        let r = turn_angle(a);
         if r > PI {
             r - TAU
         } else {
             r
         }
+    }
+}
+
+/// An angle in [0, 2 pi): `a.rem_euclid(TAU)`, which `core` lacks.
+#[inline]
+fn turn_angle(a: f64) -> f64 {
+    let r = a % TAU;
+    if r < 0.0 {
+        r + TAU
+    } else {
+        r
     }
 }
 

@@ -15,7 +15,7 @@ use nalgebra::{Isometry2, Point2, SVector, Vector2, Vector3};
 
 use super::closed_form::target_coordinates;
 use super::range::{check_ranges, finite, fit, fit_branches, slide_slack, Range};
-use super::workspace::{polar_radii, swept_radii};
+use super::workspace::swept_radii;
 #[cfg(doc)]
 use super::REACH_TOLERANCE;
 use super::{check_lengths, wrap_angle};
@@ -24,13 +24,14 @@ use crate::{ArmError, Joint};
 #[cfg(test)]
 mod tests;
 
-/// The error for a target that only joint values outside the ranges reach.
-pub(super) fn excluded(
+/// The error for a point (the tip, or for a pose the wrist) farther than `|l2|` from the
+/// slider's line: `distance` beyond the band it can reach.
+fn beyond_band(
     target: [f64; 2],
     orientation: Option<f64>,
     radius: f64,
     (inner, outer): (f64, f64),
-    excess: f64,
+    distance: f64,
 ) -> ArmError {
     ArmError::Unreachable {
         target,
@@ -38,7 +39,7 @@ pub(super) fn excluded(
         radius,
         inner,
         outer,
-        distance: excess,
+        distance,
     }
 }
 
@@ -71,11 +72,9 @@ fn shifted(l: f64, range: Range) -> (f64, f64) {
 /// [`ArmError::NonFinite`] (`"lengths"`, `"target"`, `"ranges"`) for NaN or infinite
 /// arguments (an infinite bound is allowed: no bound), `"result"` when finite arguments
 /// overflow a joint value; [`ArmError::OutOfRange`] (`"range"`)
-/// for a range with `lower > upper`; [`ArmError::Unreachable`] when neither branch lies within
-/// the ranges, with `radius = |target|`, `inner ..= outer` the radii `|l1 + l2 + q2|` that
-/// `range2` allows (`0 ..= inf` without it) and `distance` how far the nearer branch's joint
-/// value lies outside its range (radians or metres: the branch's larger excess, the smaller
-/// over the branches).
+/// for a range with `lower > upper`; [`ArmError::BeyondJointRange`] when neither branch lies
+/// within the ranges, naming the joint that lies farthest outside its range in the nearer
+/// branch, and by how much (radians or metres).
 ///
 /// # Example
 /// ```
@@ -118,10 +117,7 @@ pub fn ik_rp(
     let branches = finite(branches)?;
     fit_branches(&kinds, &ranges, slack, branches)
         .map(|b| b.map(SVector::from))
-        .map_err(|excess| {
-            let (lo, hi) = shifted(reach, range2);
-            excluded([x, y], None, r, polar_radii(lo, hi), excess)
-        })
+        .map_err(|miss| miss.error([x, y], None))
 }
 
 /// The angle a joint takes when any angle will do: the representative of 0 in `range`, or its
@@ -178,11 +174,11 @@ fn slider_branches(
 ///
 /// # Errors
 /// [`ArmError::NonFinite`] and [`ArmError::OutOfRange`] as [`ik_rp`];
-/// [`ArmError::Unreachable`] with `radius = |target|`, `inner ..= outer` the radii about the
-/// base between which the reachable region lies (see
+/// [`ArmError::Unreachable`] beyond the band, with `radius = |target|`, `inner ..= outer` the
+/// radii about the base between which the reachable region lies (see
 /// [`Workspace::of_links`](super::Workspace::of_links); `0 ..= inf` without `range1`) and
-/// `distance` either `|y| - |l2|` beyond the band or, inside it, how far the nearer branch's
-/// joint value lies outside its range (metres or radians).
+/// `distance = |y| - |l2|`; [`ArmError::BeyondJointRange`] inside the band when neither branch
+/// lies within the ranges, as [`ik_rp`].
 ///
 /// # Example
 /// ```
@@ -218,12 +214,12 @@ pub fn ik_pr(
         let (a, b) = shifted(l1, range1);
         swept_radii(a, b, l2.abs(), l2.abs())
     };
-    let error = |distance| excluded([x, y], None, x.hypot(y), radii(), distance);
+    let error = |distance| beyond_band([x, y], None, x.hypot(y), radii(), distance);
     let branches = finite(slider_branches(l1, l2, x, y, range2, slack).map_err(error)?)?;
     let kinds = [Joint::Prismatic, Joint::Revolute];
     fit_branches(&kinds, &ranges, slack, branches)
         .map(|b| b.map(SVector::from))
-        .map_err(error)
+        .map_err(|miss| miss.error([x, y], None))
 }
 
 /// Closed-form inverse kinematics of a slider carrying two links: a prismatic joint moving
@@ -240,11 +236,11 @@ pub fn ik_pr(
 ///
 /// # Errors
 /// [`ArmError::NonFinite`] and [`ArmError::OutOfRange`] as [`ik_rp`];
-/// [`ArmError::Unreachable`] with `target` and `orientation` the pose asked for, `radius` the
-/// wrist's distance from the base, `inner ..= outer` the radii about the base between which
-/// the wrist positions of the first two links lie, and `distance` either `|w_y| - |l2|` beyond
-/// the band the wrist can reach or, inside it, how far the nearer branch's joint value lies
-/// outside its range (metres or radians).
+/// [`ArmError::Unreachable`] when the wrist lies beyond the band it can reach, with `target`
+/// and `orientation` the pose asked for, `radius` the wrist's distance from the base,
+/// `inner ..= outer` the radii about the base between which the wrist positions of the first
+/// two links lie, and `distance = |w_y| - |l2|`; [`ArmError::BeyondJointRange`] inside the band
+/// when neither branch lies within the ranges, as [`ik_rp`].
 ///
 /// # Example
 /// ```
@@ -282,7 +278,7 @@ pub fn ik_prr(
         let (a, b) = shifted(l1, ranges[0]);
         swept_radii(a, b, l2.abs(), l2.abs())
     };
-    let error = |radius, distance| excluded([t.x, t.y], Some(phi), radius, radii(), distance);
+    let error = |radius, distance| beyond_band([t.x, t.y], Some(phi), radius, radii(), distance);
     if !(wrist.x.is_finite() && wrist.y.is_finite()) {
         return Err(error(f64::INFINITY, f64::INFINITY));
     }
@@ -295,5 +291,5 @@ pub fn ik_prr(
     let branches = finite([with_hand(a), with_hand(b)])?;
     fit_branches(&kinds, &ranges, slack, branches)
         .map(|b| b.map(Vector3::from))
-        .map_err(|excess| error(radius, excess))
+        .map_err(|miss| miss.error([t.x, t.y], Some(phi)))
 }

@@ -100,9 +100,6 @@ fn fit_unchecked(kind: Joint, value: f64, range: Range, slack: f64) -> Result<f6
     }
 }
 
-/// Fits every joint value of each branch into its range: the branches that fit, in their
-/// order (one surviving branch fills both entries), or the smallest excess over the branches,
-/// a branch's excess being its largest.
 /// `Err(NonFinite { argument: "result" })` when finite input overflowed a joint value.
 pub(super) fn finite<const N: usize>(branches: [[f64; N]; 2]) -> Result<[[f64; N]; 2], ArmError> {
     if branches.iter().flatten().all(|v| v.is_finite()) {
@@ -112,31 +109,58 @@ pub(super) fn finite<const N: usize>(branches: [[f64; N]; 2]) -> Result<[[f64; N
     }
 }
 
+/// Fits every joint value of each branch into its range: the branches that fit, in their
+/// order (one surviving branch fills both entries), or the nearer branch's [`RangeMiss`].
 pub(super) fn fit_branches<const N: usize>(
     kinds: &[Joint; N],
     ranges: &[Range; N],
     slack: f64,
     branches: [[f64; N]; 2],
-) -> Result<[[f64; N]; 2], f64> {
+) -> Result<[[f64; N]; 2], RangeMiss> {
     let fitted = branches.map(|branch| {
         let mut out = [0.0; N];
-        let mut excess = 0.0_f64;
+        let mut worst: Option<RangeMiss> = None;
         for i in 0..N {
             match fit(kinds[i], branch[i], ranges[i], slack) {
                 Ok(v) => out[i] = v,
-                Err(e) => excess = excess.max(e),
+                Err(excess) if worst.is_none_or(|w| excess > w.excess) => {
+                    worst = Some(RangeMiss {
+                        joint: i,
+                        kind: kinds[i],
+                        excess,
+                    });
+                }
+                Err(_) => {}
             }
         }
-        if excess > 0.0 {
-            Err(excess)
-        } else {
-            Ok(out)
-        }
+        worst.map_or(Ok(out), Err)
     });
     match fitted {
         [Ok(a), Ok(b)] => Ok([a, b]),
         [Ok(a), Err(_)] | [Err(_), Ok(a)] => Ok([a, a]),
-        [Err(a), Err(b)] => Err(a.min(b)),
+        [Err(a), Err(b)] => Err(if b.excess < a.excess { b } else { a }),
+    }
+}
+
+/// Why no branch fits the ranges: in the branch that comes nearest (the smaller largest
+/// excess), the joint that lies farthest outside its range and by how much (always > 0).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct RangeMiss {
+    pub joint: usize,
+    pub kind: Joint,
+    pub excess: f64,
+}
+
+impl RangeMiss {
+    /// The caller's error for the target it asked for.
+    pub fn error(self, target: [f64; 2], orientation: Option<f64>) -> ArmError {
+        ArmError::BeyondJointRange {
+            target,
+            orientation,
+            joint: self.joint,
+            kind: self.kind,
+            excess: self.excess,
+        }
     }
 }
 
@@ -211,6 +235,20 @@ mod tests {
             Ok([[0.2, 0.7], [0.2, 0.7]])
         );
         let none = [[0.1, 1.5], [0.2, -0.25]];
-        assert_eq!(fit_branches(&kinds, &ranges, 0.0, none), Err(0.25));
+        let miss = RangeMiss {
+            joint: 1,
+            kind: Joint::Prismatic,
+            excess: 0.25,
+        };
+        assert_eq!(fit_branches(&kinds, &ranges, 0.0, none), Err(miss));
+        // The nearer branch names its own worst joint.
+        let ranges = [Some((0.0, 0.5)), Some((0.0, 1.0))];
+        let none = [[0.9, 0.5], [0.1, 1.25]];
+        let miss = RangeMiss {
+            joint: 1,
+            kind: Joint::Prismatic,
+            excess: 0.25,
+        };
+        assert_eq!(fit_branches(&kinds, &ranges, 0.0, none), Err(miss));
     }
 }

@@ -15,12 +15,13 @@ use nalgebra::Point2;
 
 #[cfg(doc)]
 use super::ik2;
-use super::range::{slide_slack, Range};
-use super::{annulus_check, ik_pr, ik_rp, REACH_TOLERANCE};
+use super::range::{slide_slack, Range, RangeMiss};
+use super::{annulus_check, ik2_in_ranges, ik3_position, ik_pr, ik_rp, REACH_TOLERANCE};
 use crate::{Joint, Link};
 
 mod dexterous;
 mod geometry;
+pub(super) mod ranged;
 #[cfg(test)]
 mod tests;
 
@@ -29,6 +30,7 @@ use geometry::{
     annulus_area, annulus_check_slack, overflowed, polar_area, slider_area, swept_area,
     unreachable_distance,
 };
+use ranged::RangedChain;
 
 /// The work-space of a serial arm: the points its tip can reach.
 ///
@@ -42,6 +44,11 @@ use geometry::{
 ///
 /// - revolute links without ranges (a range of a full turn or more counts as none): the
 ///   annulus above, exactly as [`of_lengths`](Self::of_lengths) gives it;
+/// - two or three revolute links with ranges on any of them: the points
+///   [`ik2_in_ranges`] or [`ik3_position`] reach, so that [`contains`](Self::contains) and
+///   the arm's inverse kinematics always agree (tested on grids). Its radii are exact, and its
+///   area is the integral over the distance from the base of the polar angles reached there
+///   (exact arcs, integrated numerically to about 1e-10 relative);
 /// - the polar arm (revolute, then prismatic), and one revolute link with a range: the points
 ///   `s (cos q1, sin q1)` with `s = l1 + q2 + l2` in the slide's range and `q1` in the
 ///   revolute range, both signs of `s` counted (an annulus, or two opposite sectors of one);
@@ -52,7 +59,8 @@ use geometry::{
 ///   along the carriage's segment of the x axis.
 ///
 /// A prismatic joint without a range slides without end: the region is then unbounded
-/// (outer radius and area infinite). For every other arm the description is conservative:
+/// (outer radius and area infinite). For every other arm (four or more links with a range, or
+/// mixes of joints not listed) the description is conservative:
 /// only the annulus `inner ..= outer` about the base that holds every reachable point is
 /// known (from the triangle inequality over the links and slides), and
 /// [`contains`](Self::contains) and [`area`](Self::area) answer for that annulus.
@@ -109,6 +117,9 @@ enum Region {
         range1: Range,
         range2: Range,
     },
+    /// What [`ik2_in_ranges`] or [`ik3_position`] reaches: two or three revolute links, some
+    /// with ranges.
+    Ranged(RangedChain),
     /// Only the annulus of the [`Workspace`] is known.
     Bounds,
 }
@@ -123,7 +134,7 @@ pub(super) fn swept_radii(from: f64, to: f64, inner: f64, outer: f64) -> (f64, f
 }
 
 /// `(min |s|, max |s|)` for `s` in `from ..= to`.
-pub(super) fn polar_radii(from: f64, to: f64) -> (f64, f64) {
+fn polar_radii(from: f64, to: f64) -> (f64, f64) {
     (0.0_f64.max(from).max(-to), from.abs().max(to.abs()))
 }
 
@@ -191,6 +202,16 @@ impl Workspace {
                 range1: valid(a.range),
                 range2: Some((0.0, 0.0)),
             },
+            [a, b] if revolute(a) && revolute(b) => Region::Ranged(RangedChain {
+                lengths: [length(a), length(b), 0.0],
+                ranges: [valid(a.range), valid(b.range), None],
+                three: false,
+            }),
+            [a, b, c] if revolute(a) && revolute(b) && revolute(c) => Region::Ranged(RangedChain {
+                lengths: [length(a), length(b), length(c)],
+                ranges: [valid(a.range), valid(b.range), valid(c.range)],
+                three: true,
+            }),
             [a, b] if !revolute(a) && revolute(b) => Region::Slider {
                 l1: length(a),
                 l2: length(b),
@@ -229,6 +250,7 @@ impl Workspace {
                 let (lo, hi) = range1.unwrap_or((f64::NEG_INFINITY, f64::INFINITY));
                 swept_radii(l1 + lo, l1 + hi, l2.abs(), l2.abs())
             }
+            Region::Ranged(chain) => chain.radii(),
             Region::Bounds => bounds(links),
         };
         Self {
@@ -266,8 +288,9 @@ impl Workspace {
     ///
     /// For revolute links without ranges: its distance from the base lies in
     /// `inner ..= outer`, widened on both sides by [`REACH_TOLERANCE`]` * outer` (the slack
-    /// [`ik2`] allows). For the polar arm and the slider carrying a link: what [`ik_rp`] and
-    /// [`ik_pr`] reach, with their tolerances. For a slider carrying revolute links: some
+    /// [`ik2`] allows). For the polar arm, the slider carrying a link and two or three ranged
+    /// revolute links: what [`ik_rp`], [`ik_pr`], [`ik2_in_ranges`] and [`ik3_position`]
+    /// reach, with their tolerances. For a slider carrying revolute links: some
     /// carriage position lies within `inner ..= outer` of the point, up to [`REACH_TOLERANCE`]
     /// times the arm's scale. When the region is not exact ([`is_exact`](Self::is_exact)), the
     /// answer is for the annulus that holds it: `false` is certain, `true` only possible.
@@ -306,6 +329,7 @@ impl Workspace {
                 range1,
                 range2,
             } => ik_pr(l1, l2, range1, range2, point).is_ok(),
+            Region::Ranged(chain) => ranged_ik(&chain, point).is_ok(),
             Region::Bounds => annulus_check(
                 point.x.hypot(point.y),
                 self.inner,
@@ -316,14 +340,14 @@ impl Workspace {
         }
     }
 
-    /// `None` when [`contains`](Self::contains) holds, else how far outside the point lies:
-    /// the distance to the annulus or swept annulus (exact), or what [`ik_rp`] and [`ik_pr`]
-    /// report. The point must be finite.
-    pub(super) fn miss(&self, point: &Point2<f64>) -> Option<f64> {
+    /// `None` when [`contains`](Self::contains) holds, else why not: how far outside the
+    /// annulus or swept annulus the point lies (exact), or what the closed form behind an
+    /// exact region reports. The point must be finite.
+    pub(super) fn miss(&self, point: &Point2<f64>) -> Option<Miss> {
         if self.contains(point) {
             return None;
         }
-        let distance = match self.region {
+        let miss = match self.region {
             Region::Swept {
                 from,
                 to,
@@ -335,27 +359,31 @@ impl Workspace {
                 let gap = (from - x).max(x - to).max(0.0);
                 let near = gap.hypot(y);
                 let far = (x - from).abs().max((x - to).abs()).hypot(y);
-                (near - outer).max(inner - far)
+                Miss::Distance((near - outer).max(inner - far))
             }
             Region::Polar {
                 l1,
                 l2,
                 range1,
                 range2,
-            } => unreachable_distance(ik_rp(l1, l2, range1, range2, point).err()),
+            } => miss_of(ik_rp(l1, l2, range1, range2, point).err()),
             Region::Slider {
                 l1,
                 l2,
                 range1,
                 range2,
-            } => unreachable_distance(ik_pr(l1, l2, range1, range2, point).err()),
+            } => miss_of(ik_pr(l1, l2, range1, range2, point).err()),
+            Region::Ranged(chain) => miss_of(ranged_ik(&chain, point).err()),
             Region::Bounds => {
                 let r = point.x.hypot(point.y);
-                (r - self.outer).max(self.inner - r)
+                Miss::Distance((r - self.outer).max(self.inner - r))
             }
         };
         // Positive, as `ArmError::Unreachable` promises, even should rounding say otherwise.
-        Some(distance.max(f64::MIN_POSITIVE))
+        Some(match miss {
+            Miss::Distance(d) => Miss::Distance(d.max(f64::MIN_POSITIVE)),
+            joint @ Miss::Joint(_) => joint,
+        })
     }
 
     /// The area, m^2: `pi (outer^2 - inner^2)` for revolute links without ranges, the exact
@@ -381,8 +409,45 @@ impl Workspace {
             Region::Slider {
                 l2, range1, range2, ..
             } => overflowed(slider_area(l2, range1, range2)),
+            Region::Ranged(chain) => chain.area(self.inner, self.outer),
             Region::Bounds => annulus_area(self.inner, self.outer),
         }
+    }
+}
+
+/// Why a point lies outside a [`Workspace`]: its distance from the region, or the joint whose
+/// range excludes it (for the regions that joint ranges cut out of what free joints reach).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Miss {
+    Distance(f64),
+    Joint(RangeMiss),
+}
+
+/// What an inverse kinematics error says about a miss.
+fn miss_of(error: Option<crate::ArmError>) -> Miss {
+    match error {
+        Some(crate::ArmError::BeyondJointRange {
+            joint,
+            kind,
+            excess,
+            ..
+        }) => Miss::Joint(RangeMiss {
+            joint,
+            kind,
+            excess,
+        }),
+        other => Miss::Distance(unreachable_distance(other)),
+    }
+}
+
+/// The closed form behind [`Region::Ranged`]: its `Ok` is the reach.
+fn ranged_ik(chain: &RangedChain, point: &Point2<f64>) -> Result<(), crate::ArmError> {
+    let [l1, l2, l3] = chain.lengths;
+    let [r1, r2, r3] = chain.ranges;
+    if chain.three {
+        ik3_position(l1, l2, l3, [r1, r2, r3], point).map(|_| ())
+    } else {
+        ik2_in_ranges(l1, l2, [r1, r2], point).map(|_| ())
     }
 }
 

@@ -4,14 +4,11 @@
 //! Apart from the closed forms because the fitting is not theirs: it is the joint-range logic
 //! shared with the prismatic closed forms, applied to the branches they return.
 
-#[cfg(not(feature = "std"))]
-use num_traits::Float as _;
 
-use nalgebra::{Isometry2, Point2, SVector, Vector2};
+use nalgebra::{Isometry2, Point2, SVector};
 
 use super::{ik2, ik3, target_coordinates};
-use crate::kinematics::prismatic::excluded;
-use crate::kinematics::range::{check_ranges, fit_branches, Range};
+use crate::kinematics::range::{check_ranges, fit_branches, Range, RangeMiss};
 #[cfg(doc)]
 use crate::kinematics::REACH_TOLERANCE;
 use crate::{ArmError, Joint};
@@ -29,10 +26,9 @@ use crate::{ArmError, Joint};
 /// # Errors
 /// As [`ik2`], and: [`ArmError::NonFinite`] (`"ranges"`) for a NaN bound,
 /// [`ArmError::OutOfRange`] (`"range"`, the 0-based joint) for `lower > upper`,
-/// [`ArmError::Unreachable`] for a target in the annulus that neither branch reaches within the
-/// ranges, with `radius`, `inner` and `outer` as [`ik2`]'s and `distance` how far the nearer
-/// branch's angle lies outside its range (radians; the branch's larger excess, the smaller over
-/// the branches).
+/// [`ArmError::BeyondJointRange`] for a target in the annulus that neither branch reaches
+/// within the ranges, naming the joint that lies farthest outside its range in the nearer
+/// branch, and by how many radians.
 ///
 /// # Example
 /// ```
@@ -57,20 +53,15 @@ pub fn ik2_in_ranges(
     check_ranges(&ranges)?;
     let solutions = ik2(l1, l2, target)?;
     let (x, y) = target_coordinates(target)?;
-    let (a1, a2) = (l1.abs(), l2.abs());
-    let radii = ((a1 - a2).abs(), a1 + a2);
-    fit_revolute(solutions, &ranges)
-        .map_err(|excess| excluded([x, y], None, x.hypot(y), radii, excess))
+    fit_revolute(solutions, &ranges).map_err(|miss| miss.error([x, y], None))
 }
 
 /// [`ik3`] within joint ranges, as [`ik2_in_ranges`] is [`ik2`] within them: the solutions
 /// whose three angles lie in `ranges` (representatives, tolerance and branch order as there).
 ///
 /// # Errors
-/// As [`ik3`] and [`ik2_in_ranges`]: [`ArmError::Unreachable`] for a pose whose wrist lies in
-/// the two-link annulus but that neither branch reaches within the ranges, with `target`,
-/// `orientation`, `radius` (the wrist's), `inner` and `outer` as [`ik3`]'s and `distance` how
-/// far the nearer branch's angle lies outside its range (radians).
+/// As [`ik3`] and [`ik2_in_ranges`]: [`ArmError::BeyondJointRange`] for a pose whose wrist lies
+/// in the two-link annulus but that neither branch reaches within the ranges.
 ///
 /// # Example
 /// ```
@@ -95,18 +86,14 @@ pub fn ik3_in_ranges(
     let solutions = ik3(l1, l2, l3, target)?;
     let t = target.translation.vector;
     let phi = target.rotation.angle();
-    let wrist = t - Vector2::new(phi.cos(), phi.sin()) * l3;
-    let (a1, a2) = (l1.abs(), l2.abs());
-    let radii = ((a1 - a2).abs(), a1 + a2);
-    fit_revolute(solutions, &ranges)
-        .map_err(|excess| excluded([t.x, t.y], Some(phi), wrist.norm(), radii, excess))
+    fit_revolute(solutions, &ranges).map_err(|miss| miss.error([t.x, t.y], Some(phi)))
 }
 
 /// The branches of an all-revolute closed form that fit `ranges`, or the smallest excess.
 fn fit_revolute<const N: usize>(
     solutions: [SVector<f64, N>; 2],
     ranges: &[Range; N],
-) -> Result<[SVector<f64, N>; 2], f64> {
+) -> Result<[SVector<f64, N>; 2], RangeMiss> {
     let branches = solutions.map(|q| core::array::from_fn(|i| q[i]));
     fit_branches(&[Joint::Revolute; N], ranges, 0.0, branches).map(|b| b.map(SVector::from))
 }

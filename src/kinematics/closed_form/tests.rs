@@ -329,12 +329,16 @@ fn ik2_and_ik3_in_ranges() {
                             assert!(angle_gap(qs[0][1], kept[1]) < 1e-12);
                         }
                     }
-                    Err(ArmError::Unreachable {
-                        distance, radius, ..
+                    Err(ArmError::BeyondJointRange {
+                        target,
+                        orientation: None,
+                        joint,
+                        excess,
+                        ..
                     }) => {
                         refused += 1;
-                        assert!(!fits[0] && !fits[1] && distance > 0.0);
-                        assert!((radius - x.hypot(y)).abs() < 1e-15 * (1.0 + radius));
+                        assert!(!fits[0] && !fits[1] && excess > 0.0);
+                        assert!(target == [x, y] && ranges[joint].is_some());
                     }
                     Err(e) => panic!("{e:?}"),
                 }
@@ -378,13 +382,15 @@ fn ik2_and_ik3_in_ranges() {
                         assert!((0..3).all(|k| within(b[k], three[k])));
                     }
                 }
-                Err(ArmError::Unreachable {
-                    distance,
+                Err(ArmError::BeyondJointRange {
+                    excess,
                     orientation,
+                    joint,
                     ..
                 }) => {
                     refused += 1;
-                    assert!(!fits[0] && !fits[1] && distance > 0.0 && orientation.is_some());
+                    assert!(!fits[0] && !fits[1] && excess > 0.0 && orientation.is_some());
+                    assert!(three[joint].is_some());
                 }
                 Err(e) => panic!("{e:?}"),
             }

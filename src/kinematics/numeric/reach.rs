@@ -9,6 +9,7 @@
 use nalgebra::{Isometry2, Point2, Vector2};
 
 use super::{target_is_finite, IkTarget};
+use crate::kinematics::workspace::Miss;
 use crate::kinematics::{annulus_check_with_slack, check_lengths, Workspace, REACH_TOLERANCE};
 use crate::{ArmError, Joint, Link};
 
@@ -135,7 +136,12 @@ pub fn reachable_target_of<const N: usize>(
     target: &IkTarget,
 ) -> Result<IkTarget, ArmError> {
     let lengths = links.map(|l| l.length);
-    if links.iter().all(|l| l.joint == Joint::Revolute) {
+    // Revolute links whose joints turn freely reach an annulus; ranges cut it down.
+    let free = |l: &Link| {
+        l.range
+            .is_none_or(|(lo, hi)| hi - lo >= core::f64::consts::TAU)
+    };
+    if links.iter().all(|l| l.joint == Joint::Revolute && free(l)) {
         return reachable_target(&lengths, target);
     }
     check_lengths(&lengths)?;
@@ -161,7 +167,7 @@ pub fn reachable_target_of<const N: usize>(
     let p = Point2::from(point);
     match w.miss(&p) {
         None => Ok(*target),
-        Some(distance) => Err(ArmError::Unreachable {
+        Some(Miss::Distance(distance)) => Err(ArmError::Unreachable {
             target: asked,
             orientation,
             radius: point.norm(),
@@ -169,5 +175,6 @@ pub fn reachable_target_of<const N: usize>(
             outer: w.outer_radius(),
             distance,
         }),
+        Some(Miss::Joint(miss)) => Err(miss.error(asked, orientation)),
     }
 }

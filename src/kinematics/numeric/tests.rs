@@ -219,7 +219,7 @@ fn numeric_ik_on_prismatic_arms_respects_the_ranges() {
     // the closed form agrees.
     let far = IkTarget::Position(Point2::new(0.0, 1.5));
     assert!(
-        matches!(reachable_target_of(&polar, &far), Err(ArmError::Unreachable { distance, .. }) if (distance - 0.2).abs() < 1e-12)
+        matches!(reachable_target_of(&polar, &far), Err(ArmError::BeyondJointRange { joint: 1, kind: Joint::Prismatic, excess, .. }) if (excess - 0.2).abs() < 1e-12)
     );
     // The polar arm's angle range: reachable only pointing away, which the range forbids.
     let behind = IkTarget::Position(Point2::new(-0.9, -0.1));

@@ -4,6 +4,7 @@
 use super::*;
 use crate::kinematics::test_support::{fk_joints as fk, Rng};
 use crate::kinematics::REACH_TOLERANCE;
+use crate::Joint;
 use core::f64::consts::TAU;
 
 const RP: [Joint; 2] = [Joint::Revolute, Joint::Prismatic];
@@ -94,17 +95,16 @@ fn ik_rp_round_trip_and_ranges() {
                     }
                     assert!(expected[0] || expected[1]);
                 }
-                Err(ArmError::Unreachable {
+                Err(ArmError::BeyondJointRange {
                     target,
                     orientation,
-                    radius,
-                    distance,
+                    excess,
                     ..
                 }) => {
                     refused += 1;
                     assert!(!expected[0] && !expected[1], "({x}, {y}) refused");
                     assert_eq!((target, orientation), ([x, y], None));
-                    assert!((radius - r).abs() < 1e-15 && distance > 0.0);
+                    assert!(excess > 0.0);
                 }
                 Err(e) => panic!("{e:?}"),
             }
@@ -128,9 +128,8 @@ fn ik_rp_special_cases() {
     // Only if the slide reaches back that far.
     assert!(matches!(
         ik_rp(0.2, 0.5, None, Some((0.1, 0.6)), &Point2::origin()),
-        Err(ArmError::Unreachable { inner, outer, distance, .. })
-            if (inner - 0.8).abs() < 1e-15 && (outer - 1.3).abs() < 1e-15
-                && (distance - 0.8).abs() < 1e-15
+        Err(ArmError::BeyondJointRange { joint: 1, kind: Joint::Prismatic, excess, .. })
+            if (excess - 0.8).abs() < 1e-15
     ));
     // q1 free but ranged: a representative of 0, else the lower bound.
     let [a, _] = ik_rp(0.2, 0.5, Some((6.0, 7.0)), None, &Point2::origin()).unwrap();
@@ -140,7 +139,7 @@ fn ik_rp_special_cases() {
     // Too far, by 0.2 m of slide.
     assert!(matches!(
         ik_rp(0.2, 0.5, None, Some((0.1, 0.6)), &Point2::new(0.0, 1.5)),
-        Err(ArmError::Unreachable { distance, .. }) if (distance - 0.2).abs() < 1e-12
+        Err(ArmError::BeyondJointRange { joint: 1, excess, .. }) if (excess - 0.2).abs() < 1e-12
     ));
     // Outside the angle range by 0.5 rad on one side, pi - 0.5 - 1 on the other.
     let e = ik_rp(
@@ -151,7 +150,7 @@ fn ik_rp_special_cases() {
         &Point2::new(0.5_f64.cos(), -0.5_f64.sin()),
     );
     assert!(
-        matches!(e, Err(ArmError::Unreachable { distance, .. }) if (distance - 0.5).abs() < 1e-12)
+        matches!(e, Err(ArmError::BeyondJointRange { joint: 0, kind: Joint::Revolute, excess, .. }) if (excess - 0.5).abs() < 1e-12)
     );
     // Just beyond the slide's end, within the tolerance: clamped onto it.
     let edge = 1.3 * (1.0 + 0.5 * REACH_TOLERANCE);
@@ -231,10 +230,13 @@ fn ik_pr_round_trip_and_ranges() {
                         assert_eq!(qs[0], qs[1]);
                     }
                 }
-                Err(ArmError::Unreachable { distance, .. }) => {
+                Err(
+                    ArmError::Unreachable { distance: miss, .. }
+                    | ArmError::BeyondJointRange { excess: miss, .. },
+                ) => {
                     refused += 1;
                     assert!(!expected[0] && !expected[1], "({x}, {y}) refused");
-                    assert!(distance > 0.0);
+                    assert!(miss > 0.0);
                 }
                 Err(e) => panic!("{e:?}"),
             }
@@ -312,7 +314,19 @@ fn ik_prr_round_trip_and_ranges() {
                     assert_eq!(asked, [x, y]);
                     assert!(gap(orientation.unwrap(), phi) < 1e-15);
                     assert!((radius - w.0.hypot(w.1)).abs() < 1e-12 && distance > 0.0);
-                    if w.1.abs() <= l2.abs() {
+                    // Only beyond the band the wrist can reach.
+                    assert!(w.1.abs() > l2.abs());
+                }
+                Err(ArmError::BeyondJointRange {
+                    target: asked,
+                    orientation,
+                    excess,
+                    ..
+                }) => {
+                    refused += 1;
+                    assert_eq!(asked, [x, y]);
+                    assert!(gap(orientation.unwrap(), phi) < 1e-15 && excess > 0.0);
+                    {
                         // Reachable without ranges: check that the ranges exclude both.
                         let free = ik_prr(l1, l2, l3, [None; 3], &target).unwrap();
                         for q in free {

@@ -126,15 +126,23 @@ fn revolute_links_give_the_annulus_of_their_lengths() {
         assert_eq!(Workspace::of_links(&turned), Workspace::of_lengths(lengths));
         assert!(Workspace::of_links(&links).is_exact());
     }
-    // A narrower range: the same radii, no longer exact.
+    // A narrower range on the first joint: the same radii, a sector of the annulus.
     let ranged = [
         Link::rod(1.0, 1.0).with_range(0.0, 1.0),
         Link::rod(0.5, 1.0),
     ];
     let w = Workspace::of_links(&ranged);
-    assert!(!w.is_exact());
+    assert!(w.is_exact());
     assert_eq!((w.inner_radius(), w.outer_radius()), (0.5, 1.5));
-    assert_eq!(w.area(), Workspace::of_lengths(&[1.0, 0.5]).area());
+    assert!(w.area() < Workspace::of_lengths(&[1.0, 0.5]).area());
+    // Four links with a range: only the annulus is known.
+    let four = [ranged[0], ranged[1], ranged[1], ranged[1]];
+    let w = Workspace::of_links(&four);
+    assert!(!w.is_exact());
+    assert_eq!(
+        w.area(),
+        Workspace::of_lengths(&[1.0, 0.5, 0.5, 0.5]).area()
+    );
 }
 
 /// The cells of a `2 n x 2 n` grid over `-half ..= half` squared that tips of random
