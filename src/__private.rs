@@ -124,12 +124,37 @@ impl<const K: usize> Default for Block<K> {
     }
 }
 
+/// What a run-time parameter's field must be: the derive reads each through one accessor
+/// (`param(&self.field)`), so that a field of another type is one error at its type rather than
+/// one at every read.
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` is not the primitive `f64`",
+    label = "a run-time parameter (`self.NAME` in an #[arm(...)] value) must be an `f64` field",
+    note = "if a type of yours named `f64` is in scope, write the field's type as `core::primitive::f64`"
+)]
+pub trait ParamField {
+    fn value(&self) -> f64;
+}
+
+impl ParamField for f64 {
+    #[inline(always)]
+    fn value(&self) -> f64 {
+        *self
+    }
+}
+
+#[inline(always)]
+pub fn param<P: ParamField>(field: &P) -> f64 {
+    field.value()
+}
+
 /// What a link field's type must be: the derive cannot resolve names, so it emits
 /// `link_field::<FieldType>()` and the compiler checks that the type is [`crate::Revolute`]
 /// (through any alias or path), not a user type that merely shares the name.
 #[diagnostic::on_unimplemented(
     message = "`{Self}` is not `planar_arm::Revolute`",
-    label = "link fields must have type `planar_arm::Revolute`",
+    label = "link fields must have type `planar_arm::Revolute`, or `planar_arm::Prismatic` named as such",
+    note = "the derive reads a link's joint kind from its type's name: a field whose type is named anything but `Prismatic` is a hinge, so an alias of `Prismatic` must be written `Prismatic` itself",
     note = "the link's parameters go in its #[arm(...)]; a field of another type is a run-time parameter or data and takes no #[arm(...)]"
 )]
 pub trait LinkField {}

@@ -317,6 +317,18 @@ impl fmt::Display for ArmError {
                 r(measure),
                 r(threshold)
             ),
+            Self::OutOfRange {
+                what: "mass matrix",
+                link: Some(i),
+                value,
+            } => write!(
+                f,
+                "links[{i}] (the {} link): the mass matrix is singular at this joint (pivot {} of its \
+                 diagonal entry): the joint moves (almost) no mass and turns no inertia; give the \
+                 link inertia or a centre of mass off its axis, or add armature",
+                Ordinal(i + 1),
+                r(value)
+            ),
             Self::OutOfRange { what, link, value } => match link {
                 Some(i) => write!(
                     f,

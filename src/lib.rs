@@ -257,7 +257,7 @@ pub use jet::Jet;
 pub use kinematics::DynArm;
 pub use linear::Linearize;
 pub use link::{Joint, Link, Prismatic, Revolute};
-pub use model::{Model, Payload};
+pub use model::{Model, Payload, RELATIVE_PIVOT};
 pub use nalgebra;
 // Inlined, so that the crate page's links to it resolve wherever planar_arm's docs are built
 // alone (docs.rs, `cargo doc -p planar_arm`), not only beside planar_arm_core's.

@@ -1,6 +1,6 @@
-use nalgebra::Vector2;
+use nalgebra::{SVector, Vector2};
 
-use crate::{ArmError, Link};
+use crate::{ArmError, Joint, Link};
 
 /// A rigid body held at the tip of the last link: a tool, a gripper and what it carries.
 ///
@@ -135,13 +135,20 @@ impl<const N: usize> Model<N> {
         links
     }
 
-    /// Checks that the model is physical: every value finite, lengths and masses positive,
-    /// inertias, armatures, damping, frictionloss, the payload's mass and inertia and gravity
-    /// not negative, a joint range finite with `lower < upper`. What the derive checks at compile time for literal values, for values
-    /// that are read at run time (identified, loaded from a file).
+    /// Checks that the model is physical and its dynamics defined: every value finite, masses
+    /// positive, lengths, inertias, armatures, damping, frictionloss, the payload's mass and
+    /// inertia and gravity not negative, a joint range finite with `lower < upper`, and the mass
+    /// matrix positive definite (at a generic configuration its `L D L^T` pivots exceed
+    /// [`RELATIVE_PIVOT`] times their diagonal entries, which are normal `f64`s: no joint that
+    /// moves no mass and turns no inertia). What the derive checks at compile time for literal
+    /// values, by the same test, for values that are read at run time (identified, loaded from
+    /// a file). With `Ok`, forward dynamics is finite wherever `M` is definite, which for
+    /// ordinary arms is everywhere.
     ///
     /// # Errors
-    /// [`ArmError::OutOfRange`] naming the first value that is not.
+    /// [`ArmError::OutOfRange`] naming the first value that is not; for the mass matrix,
+    /// `what = "mass matrix"`, the joint whose pivot failed and the pivot relative to its
+    /// diagonal entry.
     ///
     /// # Example
     ///
@@ -157,7 +164,7 @@ impl<const N: usize> Model<N> {
         let fail = |what, link, value| Err(ArmError::OutOfRange { what, link, value });
         for (i, l) in self.links.iter().enumerate() {
             let values = [
-                ("length", l.length, true),
+                ("length", l.length, false),
                 ("mass", l.mass, true),
                 ("inertia", l.inertia, false),
                 ("com.x", l.com.x, false),
@@ -200,6 +207,71 @@ impl<const N: usize> Model<N> {
                 return fail(what, None, value);
             }
         }
+        self.check_definite()
+    }
+
+    /// `Err` when the mass matrix is singular at a generic configuration (the same test and the
+    /// same configuration as the derive's for literal values): its `L D L^T` pivot at some
+    /// joint is at most [`RELATIVE_PIVOT`] of its diagonal entry, or that entry is not a normal
+    /// `f64`.
+    fn check_definite(&self) -> Result<(), ArmError> {
+        let q = SVector::<f64, N>::from_fn(|k, _| generic_joint_value(self.links[k].joint, k));
+        let m = crate::reference::mass_matrix(self, &q);
+        let mut d = [0.0_f64; N];
+        let mut l = [[0.0_f64; N]; N];
+        for j in 0..N {
+            let diagonal = m[(j, j)];
+            let pivot = diagonal - (0..j).map(|k| l[j][k] * l[j][k] * d[k]).sum::<f64>();
+            let normal = diagonal.is_finite() && diagonal >= f64::MIN_POSITIVE;
+            if !normal || pivot.is_nan() || pivot <= RELATIVE_PIVOT * diagonal {
+                let relative = if normal {
+                    (pivot / diagonal).max(0.0)
+                } else {
+                    0.0
+                };
+                return Err(ArmError::OutOfRange {
+                    what: "mass matrix",
+                    link: Some(j),
+                    value: relative,
+                });
+            }
+            for i in j + 1..N {
+                l[i][j] =
+                    (m[(i, j)] - (0..j).map(|k| l[i][k] * l[j][k] * d[k]).sum::<f64>()) / pivot;
+            }
+            d[j] = pivot;
+        }
         Ok(())
+    }
+}
+
+/// Pivots of the mass matrix at or below this fraction of their diagonal entry make
+/// [`Model::check`] refuse the arm (as the derive refuses literal values): four rounding errors
+/// of that entry, below which an `f64` evaluation of the pivot cannot tell it from zero.
+/// Ill-conditioned but regular arms (relative pivots of 1e-14) pass.
+pub const RELATIVE_PIVOT: f64 = 4.0 * f64::EPSILON;
+
+/// Joint `k`'s value at the configuration [`Model::check`] tests the mass matrix at: a hinge's
+/// angle has the Pythagorean cosine and sine of the derive's own test (3/5 and 4/5, 5/13 and
+/// -12/13, ...), a slide's displacement is `(1 + k mod 5) / 7` m.
+#[must_use]
+pub(crate) fn generic_joint_value(joint: Joint, k: usize) -> f64 {
+    const TRIPLES: [(f64, f64); 8] = [
+        (3.0, 4.0),
+        (5.0, 12.0),
+        (8.0, 15.0),
+        (7.0, 24.0),
+        (20.0, 21.0),
+        (12.0, 35.0),
+        (9.0, 40.0),
+        (28.0, 45.0),
+    ];
+    match joint {
+        Joint::Revolute => {
+            let (a, b) = TRIPLES[k % TRIPLES.len()];
+            let sign = if k % 2 == 0 { 1.0 } else { -1.0 };
+            (sign * b).atan2(a)
+        }
+        Joint::Prismatic => (1.0 + (k % 5) as f64) / 7.0,
     }
 }

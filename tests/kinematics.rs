@@ -507,7 +507,8 @@ fn tip_wrench_round_trip<A: PlanarArm<3> + TipWrench>(arm: &A, rng: &mut Rng) {
         let force = Vector2::new(rng.range(-5.0, 5.0), rng.range(-5.0, 5.0));
         let torque = rng.range(-5.0, 5.0);
         let tau = arm.joint_torques(&q, &force, torque);
-        let (f, t) = arm.tip_wrench(&q, &tau).unwrap();
+        let w = arm.tip_wrench(&q, &tau).unwrap();
+        let (f, t) = (w.force, w.torque);
         let tol = 1e-12 * force.norm().max(torque.abs()).max(1.0) / s2.abs() * 10.0;
         assert!(
             (f - force).norm() <= tol && (t - torque).abs() <= tol,

@@ -62,17 +62,18 @@ fn polar_by_hand(q: &Vector2<f64>, qd: &Vector2<f64>, qdd: &Vector2<f64>) -> Vec
     )
 }
 
-/// The textbook cart-pole: a cart sliding along x, a pole hinged on it (its angle from +x).
+/// The textbook cart-pole: a point cart sliding along x, a pole hinged on it (its angle from
+/// +x). The cart has no length, no inertia and its mass at its joint: it only slides.
 #[derive(PlanarArm, Default, Debug)]
 #[arm(gravity = 9.81)]
 struct CartPole {
-    #[arm(length = 0.1, mass = 2, inertia = 0.01, com = (0.05, 0))]
+    #[arm(length = 0, mass = 2)]
     cart: Prismatic,
     #[arm(length = 0.6, mass = 0.3, inertia = 0.009, com = (0.3, 0))]
     pole: Revolute,
 }
 
-/// The cart-pole by hand: the pole's centre is at `(q1 + 0.1 + c cos q2, c sin q2)`, so
+/// The cart-pole by hand: the pole's centre is at `(q1 + c cos q2, c sin q2)`, so
 /// `M = [[mc + mp, -mp c sin q2], [-mp c sin q2, Ip + mp c^2]]`, `c = (-mp c cos q2 qd2^2, 0)`,
 /// `g = (0, g mp c cos q2)`: the cart's height never changes.
 fn cart_pole_by_hand(q: &Vector2<f64>, qd: &Vector2<f64>, qdd: &Vector2<f64>) -> Vector2<f64> {
@@ -295,7 +296,8 @@ fn the_statics_of_mixed_arms_invert_the_jacobian() {
         let wrench: Vector3<f64> = rng.vector(10.0);
         let tau = arm.jacobian(&q3).transpose() * wrench;
         match arm.tip_wrench(&q3, &tau) {
-            Ok((f, t)) => {
+            Ok(w) => {
+                let (f, t) = (w.force, w.torque);
                 assert!((Vector3::new(f.x, f.y, t) - wrench).amax() <= 1e-8 * wrench.amax());
             }
             // Only where the two revolute links line up (sin q3 = 0).

@@ -371,7 +371,8 @@ fn check_three<A: PlanarArm<3> + ClosedFormIk<3, Target = Isometry2<f64>> + TipW
     }
     let inputs_finite = q.iter().chain(tau.iter()).all(|x| x.is_finite());
     match arm.tip_wrench(&q, &tau) {
-        Ok((f, t)) => {
+        Ok(w) => {
+            let (f, t) = (w.force, w.torque);
             prop_assert!(inputs_finite);
             prop_assert!(f.iter().all(|x| !x.is_nan()) && !t.is_nan());
         }

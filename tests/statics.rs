@@ -140,7 +140,8 @@ where
         let force = Vector2::new(rng.range(-5.0, 5.0), rng.range(-5.0, 5.0));
         let torque = rng.range(-5.0, 5.0);
         let tau = torques(&joints, tip, force, torque);
-        let (f, t) = arm.tip_wrench(&q, &tau).unwrap();
+        let w = arm.tip_wrench(&q, &tau).unwrap();
+        let (f, t) = (w.force, w.torque);
         let error = (f - force).norm().max((t - torque).abs()) / force.norm().max(1.0);
         worst = worst.max(error * manipulability);
         assert!(error <= 1e-11 / manipulability, "N = {N}: error {error}");
@@ -209,7 +210,8 @@ fn three_links_agree_with_the_closed_form() {
             continue;
         }
         let tau = rng.vector::<3>(5.0);
-        let (f, t) = arm.tip_wrench(&q, &tau).unwrap();
+        let w = arm.tip_wrench(&q, &tau).unwrap();
+        let (f, t) = (w.force, w.torque);
         let w = arm.inverse_statics(&q, &tau).unwrap();
         let scale = 1e-12 / q[1].sin().abs();
         assert!(
@@ -295,7 +297,8 @@ fn collinear_joints_are_singular() {
     let q = SVector::<f64, 6>::new(0.4, 1e-3, 0.0, 0.0, 0.0, 0.0);
     let force = Vector2::new(1.0, -1.0);
     let tau = six.joint_torques(&q, &force, 0.5);
-    let (f, t) = six.tip_wrench(&q, &tau).unwrap();
+    let w = six.tip_wrench(&q, &tau).unwrap();
+    let (f, t) = (w.force, w.torque);
     assert!(
         (f - force).norm() < 1e-7 && (t - 0.5).abs() < 1e-7,
         "{f} {t}"
@@ -348,7 +351,8 @@ fn large_angles_lose_no_accuracy() {
         let absolute = [big.sin_cos(), 0.75_f64.sin_cos(), 1.25_f64.sin_cos()];
         let (joints, tip) = geometry(&lengths(&three), &absolute);
         let tau = torques(&joints, tip, force, torque);
-        let (f, t) = three.tip_wrench(&q3, &tau).unwrap();
+        let w = three.tip_wrench(&q3, &tau).unwrap();
+        let (f, t) = (w.force, w.torque);
         assert!(
             (f - force).norm() <= 1e-14 && (t - torque).abs() <= 1e-14,
             "{big}: {f} {t}"
@@ -371,7 +375,8 @@ fn large_angles_lose_no_accuracy() {
         ];
         let (joints, tip) = geometry(&lengths(&six), &absolute);
         let tau = torques(&joints, tip, force, torque);
-        let (f, t) = six.tip_wrench(&q6, &tau).unwrap();
+        let w = six.tip_wrench(&q6, &tau).unwrap();
+        let (f, t) = (w.force, w.torque);
         assert!(
             (f - force).norm() <= 1e-13 && (t - torque).abs() <= 1e-13,
             "{big}: {f} {t}"

@@ -95,7 +95,7 @@ pub fn closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
             impl #impl_generics ::planar_arm::kinematics::TipWrench for #ty #where_clause {
                 #[inline]
                 fn tip_wrench(&self, #q: &::planar_arm::nalgebra::SVector<#F64, 3>, #tau: &::planar_arm::nalgebra::SVector<#F64, 3>)
-                    -> ::core::result::Result<(::planar_arm::nalgebra::Vector2<#F64>, #F64), ::planar_arm::ArmError> {
+                    -> ::core::result::Result<::planar_arm::kinematics::StaticWrench<3>, ::planar_arm::ArmError> {
                     ::planar_arm::kinematics::tip_wrench3(#l1, #l2, #l3, #q, #tau)
                 }
             }
@@ -220,8 +220,12 @@ fn mixed_closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
                 /// `tau` a force along it.
                 #[inline]
                 fn tip_wrench(&self, #q: &::planar_arm::nalgebra::SVector<#F64, 3>, #tau: &::planar_arm::nalgebra::SVector<#F64, 3>)
-                    -> ::core::result::Result<(::planar_arm::nalgebra::Vector2<#F64>, #F64), ::planar_arm::ArmError> {
-                    #wrench.map(|w| (::planar_arm::nalgebra::Vector2::new(w[0], w[1]), w[2]))
+                    -> ::core::result::Result<::planar_arm::kinematics::StaticWrench<3>, ::planar_arm::ArmError> {
+                    #wrench.map(|w| ::planar_arm::kinematics::StaticWrench {
+                        force: ::planar_arm::nalgebra::Vector2::new(w[0], w[1]),
+                        torque: w[2],
+                        residual: ::planar_arm::nalgebra::SVector::<#F64, 3>::zeros(),
+                    })
                 }
             }
         },

@@ -273,12 +273,11 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
         if let Input::Param(k) = i {
             let name = local(&input_name(i, p.params()));
             let name_of_field = p.params()[k].name();
-            // A raw identifier (`self.r#type`) keeps its `r#`.
-            let field = match name_of_field.strip_prefix("r#") {
-                Some(raw) => Ident::new_raw(raw, Span::call_site()),
-                None => Ident::new(name_of_field, Span::call_site()),
-            };
-            let read = vec![self_(), punct('.'), field.into()];
+            // Through the derive's accessor (`crate::paths::param_accessor`): a field of the
+            // wrong type is then one error at the field, not one at each read.
+            let accessor = crate::paths::param_accessor(name_of_field);
+            let call = Group::new(Delimiter::Parenthesis, TokenStream::new());
+            let read = vec![self_(), punct('.'), accessor.into(), call.into()];
             statements.push(read_f64(name, read));
         }
     }

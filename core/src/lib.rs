@@ -57,6 +57,7 @@ pub use trig::{Angle, Trig};
 pub mod christoffel;
 pub mod closed_forms;
 pub mod compact;
+pub mod definite;
 pub mod derivative;
 pub mod emit;
 pub mod frozen;

@@ -33,6 +33,20 @@ impl quote::ToTokens for STR {
     }
 }
 
+/// The name of the method through which generated code reads the run-time parameter in field
+/// `field` (`self.__planar_arm_mass()` for `self.mass`, a raw `r#type` as `__planar_arm_type`).
+/// The derive defines one per parameter field in an inherent `impl` of the arm, its body
+/// `::planar_arm::__private::param(&self.field)`; code the engine emits for an arm with
+/// parameters needs them.
+#[must_use]
+pub fn param_accessor(field: &str) -> Ident {
+    let bare = field.strip_prefix("r#").unwrap_or(field);
+    Ident::new(
+        &format!("__planar_arm_{bare}"),
+        proc_macro2::Span::call_site(),
+    )
+}
+
 /// The primitive types generated code names.
 const PRIMITIVES: &[&str] = &[
     "f64", "f32", "usize", "u8", "u16", "u32", "u64", "i32", "i64", "i128", "bool", "str",

@@ -37,6 +37,17 @@ impl<'a> Arm<'a> {
     /// (an enum, a tuple struct) that there are no links to speak of.
     pub fn from_ast(cx: &Ctxt, input: &'a DeriveInput) -> Option<Self> {
         let struct_attrs = attr::parse(cx, &input.attrs, Place::Struct).unwrap_or_default();
+        // The generated methods are generic over `__T`, the scalar: a generic of the struct's
+        // own with that name would clash with it.
+        for param in input.generics.type_params() {
+            if param.ident == "__T" {
+                cx.error_spanned_by(
+                    &param.ident,
+                    "the generic parameter name `__T` is taken by the methods #[derive(PlanarArm)] \
+                     generates (their scalar type); rename this one",
+                );
+            }
+        }
         let fields = match &input.data {
             Data::Struct(s) => &s.fields,
             Data::Enum(e) => {

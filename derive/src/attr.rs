@@ -177,8 +177,12 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
         return;
     }
     // Consume the value first so that parsing can go on to the next key after an error.
-    let value = match meta.value().and_then(|v| v.parse::<syn::Expr>()) {
-        Ok(expr) => Some(expr),
+    let value = match meta.value().and_then(|v| {
+        let start = v.cursor();
+        let expr = v.parse::<syn::Expr>()?;
+        Ok((expr, tokens_between(start, v.cursor())))
+    }) {
+        Ok(parsed) => Some(parsed),
         Err(_) => {
             skip_to_comma(meta.input);
             None
@@ -225,7 +229,7 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
         return;
     }
     // #[arm(length = 0.5)]
-    let Some(expr) = value else {
+    let Some((expr, tokens)) = value else {
         cx.error_spanned_by(
             path,
             format!("expected `{key} = <number>`, for example `{key} = 0.5`"),
@@ -239,7 +243,7 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
         syn::Expr::Tuple(t) if known == RANGE && t.elems.len() == 2 => value::eval(&t.elems[0], &mut params)
             .and_then(|x| value::eval(&t.elems[1], &mut params).map(|y| (x, Some(y)))),
         _ if known == RANGE => Err(syn::Error::new_spanned(
-            &expr,
+            &tokens,
             "`range` takes a pair `(lower, upper)` of numbers, radians for a revolute joint and metres for a prismatic one, for example `range = (0, 0.6)`",
         )),
         syn::Expr::Tuple(t) if PAIR_KEYS.contains(&known) && t.elems.len() == 2 => {
@@ -262,12 +266,29 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
             value: Value {
                 value: v,
                 y,
-                tokens: expr.to_token_stream(),
+                tokens,
                 params,
             },
         }),
         Err(err) => cx.syn_error(err),
     }
+}
+
+/// The tokens from `start` up to `end`, as written: printing the parsed expression instead
+/// recurses once per operator, which a value of 20 000 terms turns into a stack overflow.
+fn tokens_between(
+    mut cursor: syn::buffer::Cursor<'_>,
+    end: syn::buffer::Cursor<'_>,
+) -> TokenStream {
+    let mut tokens = Vec::new();
+    while cursor != end {
+        let Some((tree, next)) = cursor.token_tree() else {
+            break;
+        };
+        tokens.push(tree);
+        cursor = next;
+    }
+    tokens.into_iter().collect()
 }
 
 /// `#[arm(crate = "path")]`: the path of `planar_arm` where the user renamed the dependency.

@@ -101,11 +101,49 @@ pub fn check(cx: &Ctxt, arm: &Arm<'_>) -> Option<ArmSpec<Poly>> {
             None => ok = false,
         }
     }
-    (ok && links.len() == arm.links.len()).then_some(ArmSpec {
+    let spec = (ok && links.len() == arm.links.len()).then_some(ArmSpec {
         links,
         gravity,
         payload,
-    })
+    })?;
+    definite(cx, arm, &spec).then_some(spec)
+}
+
+/// A literal arm whose mass matrix is singular (some joint moves no mass and turns no inertia,
+/// or too little for `f64`) has no forward dynamics: refused at the link of the first such
+/// joint. What merely looks degenerate (a link with its mass on its axis, a point cart) passes
+/// when the rest of the chain, armature or a payload keeps `M` definite. Arms with run-time
+/// parameters are checked by `Model::check` when their values are known.
+fn definite(cx: &Ctxt, arm: &Arm<'_>, spec: &ArmSpec<Poly>) -> bool {
+    let Some(literal) = literal(spec) else {
+        return true;
+    };
+    let Some((joint, relative)) = planar_arm_core::definite::weak_joint(&literal) else {
+        return true;
+    };
+    let link = &arm.links[joint];
+    let a = &link.attrs;
+    let tokens = a
+        .get(INERTIA)
+        .or_else(|| a.get(COM))
+        .or_else(|| a.get(LENGTH))
+        .map_or_else(|| a.tokens.clone(), |v| v.tokens.clone());
+    let how = if relative == 0.0 {
+        "is singular".to_string()
+    } else {
+        format!("is nearly singular (relative pivot {relative:.1e})")
+    };
+    cx.error_spanned_by(
+        tokens,
+        format!(
+            "link `{}`: with these values the mass matrix {how}: its joint moves (almost) no mass \
+             and turns no inertia, so its acceleration is undefined; give the link an inertia or a \
+             centre of mass off its joint axis, add `armature`, or let a later link or the payload \
+             carry mass",
+            link.name()
+        ),
+    );
+    false
 }
 
 /// `payload`, `payload_inertia`, `payload_com` on the struct.
@@ -199,7 +237,6 @@ fn check_link(cx: &Ctxt, link: &Link<'_>) -> Option<LinkSpec<Poly>> {
         ok &= good;
         good.then(|| v.value.clone())
     };
-    let length = positive(LENGTH);
     let mass = positive(MASS);
 
     // #[arm(inertia = 0.02)], #[arm(armature = 0.01)], #[arm(damping = 0.1)],
@@ -211,6 +248,11 @@ fn check_link(cx: &Ctxt, link: &Link<'_>) -> Option<LinkSpec<Poly>> {
         ok &= good;
         good.then(|| v.value.clone())
     };
+    // #[arm(length = 0)]: a point cart, or joints that share an axis point.
+    let length = non_negative(
+        LENGTH,
+        format!("link `{name}`: length cannot be negative; it is the distance from this joint to the next"),
+    );
     let inertia = non_negative(
         INERTIA,
         format!("link `{name}`: inertia about the centre of mass cannot be negative; use 0 for a point mass"),
@@ -245,28 +287,6 @@ fn check_link(cx: &Ctxt, link: &Link<'_>) -> Option<LinkSpec<Poly>> {
     let rod = LinkSpec::rod(length?, mass?);
     let inertia = inertia.unwrap_or(rod.inertia);
     let com = com.unwrap_or(rod.com);
-    let literal_zero = |p: &Poly| planar_arm_core::Coefficient::is_zero(p);
-    if link.joint == JointKind::Revolute
-        && literal_zero(&inertia)
-        && literal_zero(&com.0)
-        && literal_zero(&com.1)
-    {
-        // Joint k then moves none of link k's mass: with nothing after it (or nothing after it
-        // that resists) M is singular and forward dynamics undefined. Both keys are explicit
-        // here, since a positive rod's defaults are positive.
-        let tokens = a
-            .get(INERTIA)
-            .or_else(|| a.get(COM))
-            .map_or_else(|| a.tokens.clone(), |v| v.tokens.clone());
-        cx.error_spanned_by(
-            tokens,
-            format!(
-                "link `{name}`: zero inertia with `com = 0` puts the link's mass on its joint axis, \
-                 which can make the mass matrix singular; give it a positive inertia or a non-zero `com`"
-            ),
-        );
-        return None;
-    }
     Some(LinkSpec {
         length: rod.length,
         mass: rod.mass,
@@ -302,11 +322,13 @@ fn check_range(cx: &Ctxt, name: &str, joint: JointKind, v: &Value) -> Option<(Ra
     if !representable(cx, "range", v) {
         return None;
     }
-    if lower >= upper {
+    // As the f64 values the generated code and `Model::check` compare: `(1/3, 1/3 + 1e-30)` is
+    // an empty range there.
+    if to_f64(&lower) >= to_f64(&upper) {
         cx.error_spanned_by(
             &v.tokens,
             format!(
-                "link `{name}`: a range needs lower < upper ({unit}), found ({}, {})",
+                "link `{name}`: a range needs lower < upper as f64 values ({unit}), found ({}, {})",
                 show_f64(&lower),
                 show_f64(&upper)
             ),
@@ -318,4 +340,38 @@ fn check_range(cx: &Ctxt, name: &str, joint: JointKind, v: &Value) -> Option<(Ra
 
 fn show_f64(r: &Rational) -> String {
     to_f64(r).map_or_else(|| r.to_string(), |x| format!("{x}"))
+}
+
+/// The arm over the rationals, if no value names a run-time parameter.
+pub fn literal(spec: &ArmSpec<Poly>) -> Option<ArmSpec<Rational>> {
+    let r = Poly::as_rational;
+    let pair = |c: &(Poly, Poly)| Some((r(&c.0)?, r(&c.1)?));
+    Some(ArmSpec {
+        links: spec
+            .links
+            .iter()
+            .map(|l| {
+                Some(LinkSpec {
+                    length: r(&l.length)?,
+                    mass: r(&l.mass)?,
+                    inertia: r(&l.inertia)?,
+                    com: pair(&l.com)?,
+                    armature: r(&l.armature)?,
+                    damping: r(&l.damping)?,
+                    frictionloss: r(&l.frictionloss)?,
+                    joint: l.joint,
+                    range: l.range.clone(),
+                })
+            })
+            .collect::<Option<Vec<_>>>()?,
+        gravity: r(&spec.gravity)?,
+        payload: match &spec.payload {
+            None => None,
+            Some(p) => Some(PayloadSpec {
+                mass: r(&p.mass)?,
+                inertia: r(&p.inertia)?,
+                com: pair(&p.com)?,
+            }),
+        },
+    })
 }

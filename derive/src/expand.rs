@@ -11,10 +11,10 @@ use planar_arm_core::methods::Derived;
 use planar_arm_core::paths::F64;
 use planar_arm_core::ring::{to_i128_pair, Rational};
 use planar_arm_core::slp::Emit;
-use planar_arm_core::{ArmSpec, Expr, JointKind, LinkSpec, PayloadSpec, Poly};
+use planar_arm_core::{ArmSpec, Expr, JointKind, Poly};
 
 use crate::ast::Arm;
-use crate::check::check;
+use crate::check::{check, literal};
 use crate::ctxt::Ctxt;
 
 pub fn derive(input: &DeriveInput) -> TokenStream {
@@ -34,8 +34,9 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
     }
 }
 
-/// The path of `planar_arm` given by `#[arm(crate = "...")]` (errors in it are reported by
-/// the full parse).
+/// The path of `planar_arm` when it is not `::planar_arm`: given by `#[arm(crate = "...")]`
+/// (errors in it are reported by the full parse), or else the name the user crate's
+/// Cargo.toml gives the dependency (`arm = { package = "planar_arm" }`).
 fn krate(input: &DeriveInput) -> Option<TokenStream> {
     let cx = Ctxt::new();
     let path = crate::attr::parse(&cx, &input.attrs, crate::attr::Place::Struct)
@@ -43,7 +44,19 @@ fn krate(input: &DeriveInput) -> Option<TokenStream> {
         .map(|p| p.to_token_stream());
     // Reported again, with the rest, by `try_derive`.
     let _ = cx.check();
-    path
+    path.or_else(renamed)
+}
+
+/// `::name` when the crate being compiled depends on `planar_arm` under another name. The
+/// package itself (its tests and examples) and a manifest that cannot be read keep the default.
+fn renamed() -> Option<TokenStream> {
+    match proc_macro_crate::crate_name("planar_arm") {
+        Ok(proc_macro_crate::FoundCrate::Name(name)) if name != "planar_arm" => {
+            let ident = syn::Ident::new(&name, proc_macro2::Span::call_site());
+            Some(quote!(::#ident))
+        }
+        _ => None,
+    }
 }
 
 fn header(input: &DeriveInput) -> Header {
@@ -89,7 +102,55 @@ fn emit<C: Emit>(
             .map_err(|e| emit_error(arm, &derived, &e).to_compile_error())?,
     );
     tokens.extend(link_types(arm));
+    tokens.extend(param_accessors(arm, header));
     Ok(tokens)
+}
+
+/// One accessor per run-time parameter field (`paths::param_accessor`), through which every
+/// generated method reads it: a field whose type is not the primitive `f64` (a type of the
+/// user's named `f64`) is then one error at its type, not one per read.
+fn param_accessors(arm: &Arm<'_>, header: &Header) -> TokenStream {
+    let mut names: Vec<String> = arm
+        .values()
+        .iter()
+        .flat_map(|(_, v)| v.params.iter().map(|p| p.name.clone()))
+        .collect();
+    names.sort();
+    names.dedup();
+    if names.is_empty() {
+        return TokenStream::new();
+    }
+    let accessors = names.iter().filter_map(|name| {
+        let field = arm
+            .others
+            .iter()
+            .find(|f| f.ident.as_ref().is_some_and(|i| i == name))?;
+        let ident = field.ident.as_ref()?;
+        let accessor = planar_arm_core::paths::param_accessor(name);
+        let read = quote::quote_spanned!(syn::spanned::Spanned::span(&field.ty)=>
+            ::planar_arm::__private::param(&self.#ident)
+        );
+        Some(quote! {
+            #[doc(hidden)]
+            #[inline(always)]
+            fn #accessor(&self) -> #F64 {
+                #read
+            }
+        })
+    });
+    let Header {
+        impl_generics,
+        ty,
+        where_clause,
+        ..
+    } = header;
+    quote! {
+        #[automatically_derived]
+        #[allow(non_snake_case)]
+        impl #impl_generics #ty #where_clause {
+            #(#accessors)*
+        }
+    }
 }
 
 /// The check that every link field is `planar_arm::Revolute`, each error at the field's type.
@@ -105,40 +166,6 @@ fn link_types(arm: &Arm<'_>) -> TokenStream {
     quote!(const _: () = { #(#checks)* };)
 }
 
-/// The arm over the rationals, if no value names a run-time parameter.
-fn literal(spec: &ArmSpec<Poly>) -> Option<ArmSpec<Rational>> {
-    let r = Poly::as_rational;
-    let pair = |c: &(Poly, Poly)| Some((r(&c.0)?, r(&c.1)?));
-    Some(ArmSpec {
-        links: spec
-            .links
-            .iter()
-            .map(|l| {
-                Some(LinkSpec {
-                    length: r(&l.length)?,
-                    mass: r(&l.mass)?,
-                    inertia: r(&l.inertia)?,
-                    com: pair(&l.com)?,
-                    armature: r(&l.armature)?,
-                    damping: r(&l.damping)?,
-                    frictionloss: r(&l.frictionloss)?,
-                    joint: l.joint,
-                    range: l.range.clone(),
-                })
-            })
-            .collect::<Option<Vec<_>>>()?,
-        gravity: r(&spec.gravity)?,
-        payload: match &spec.payload {
-            None => None,
-            Some(p) => Some(PayloadSpec {
-                mass: r(&p.mass)?,
-                inertia: r(&p.inertia)?,
-                com: pair(&p.com)?,
-            }),
-        },
-    })
-}
-
 /// The engine could not emit the arm: some exact coefficient is too large for the generated
 /// `const` data. Every parameter contributes, so the error points at the one with the most
 /// digits, the likeliest culprit, and says which coefficient overflowed.
@@ -147,7 +174,7 @@ fn emit_error<C: Emit>(arm: &Arm<'_>, derived: &Derived<C>, err: &EmitError) -> 
     // The first value of greatest height: the likeliest culprit.
     let mut worst: Option<&(String, &crate::attr::Value)> = None;
     for candidate in &values {
-        if worst.is_none_or(|w| height(&candidate.1.value) > height(&w.1.value)) {
+        if worst.is_none_or(|w| height(candidate.1) > height(w.1)) {
             worst = Some(candidate);
         }
     }
@@ -168,9 +195,11 @@ fn emit_error<C: Emit>(arm: &Arm<'_>, derived: &Derived<C>, err: &EmitError) -> 
     syn::Error::new_spanned(tokens, message)
 }
 
-/// Bits in the larger of numerator and denominator.
-fn height(v: &Poly) -> u64 {
-    v.terms()
+/// Bits in the larger of numerator and denominator, over both components of a pair.
+fn height(v: &crate::attr::Value) -> u64 {
+    std::iter::once(&v.value)
+        .chain(v.y.as_ref())
+        .flat_map(Poly::terms)
         .map(|(_, r)| r.numer().abs().bits().max(r.denom().bits()))
         .max()
         .unwrap_or(0)
@@ -256,6 +285,11 @@ fn fallback(input: &DeriveInput) -> TokenStream {
     let Some(n) = Arm::field_count(input) else {
         return TokenStream::new();
     };
+    // The stub's methods are generic over `__T` too: with the struct's own `__T` (an error
+    // already reported) it would only add a second one.
+    if input.generics.type_params().any(|p| p.ident == "__T") {
+        return TokenStream::new();
+    }
     let header = header(input);
     let mut tokens = planar_arm_core::generate::stub(n, &header);
     let Header {

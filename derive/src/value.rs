@@ -15,6 +15,25 @@ pub struct ParamUse {
 /// The exact value of `expr`, or an error spanning the offending tokens. Every `self.NAME`
 /// met is recorded in `params` (whether the field exists is checked by the caller).
 pub fn eval(expr: &Expr, params: &mut Vec<ParamUse>) -> syn::Result<Poly> {
+    eval_at(expr, params, 0)
+}
+
+/// The deepest nesting of parentheses, signs and operators of different precedence that a value
+/// may have. Chains of one operator (`1 + 1 + ... + 1`) are walked without recursion, so this
+/// bounds only what a person would nest by hand; past it, the derive's stack, which the
+/// compiler's own thread provides, would run out.
+const MAX_DEPTH: usize = 200;
+
+fn eval_at(expr: &Expr, params: &mut Vec<ParamUse>, depth: usize) -> syn::Result<Poly> {
+    if depth > MAX_DEPTH {
+        return Err(syn::Error::new_spanned(
+            expr,
+            format!(
+                "value nested more than {MAX_DEPTH} levels deep; simplify it (compute the number \
+                 first), or read it at run time from an f64 field: `self.field`"
+            ),
+        ));
+    }
     match expr {
         Expr::Lit(lit) => match &lit.lit {
             Lit::Int(i) => literal(i.base10_digits(), i.suffix(), &lit.lit),
@@ -28,36 +47,32 @@ pub fn eval(expr: &Expr, params: &mut Vec<ParamUse>) -> syn::Result<Poly> {
                 "expected a number such as 1, 0.35 or 3/2",
             )),
         },
-        Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => Ok(-eval(&u.expr, params)?),
-        Expr::Paren(p) => eval(&p.expr, params),
-        Expr::Group(g) => eval(&g.expr, params),
+        Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => Ok(-eval_at(&u.expr, params, depth + 1)?),
+        Expr::Paren(p) => eval_at(&p.expr, params, depth + 1),
+        Expr::Group(g) => eval_at(&g.expr, params, depth + 1),
         Expr::Binary(b) => {
-            let (l, r) = (eval(&b.left, params)?, eval(&b.right, params)?);
-            match b.op {
-                BinOp::Add(_) => Ok(l + r),
-                BinOp::Sub(_) => Ok(l - r),
-                BinOp::Mul(_) => Ok(l * r),
-                BinOp::Div(_) => match r.as_rational() {
-                    Some(d) if num_traits::Zero::is_zero(&d) => Err(syn::Error::new_spanned(
-                        &b.right,
-                        "division by zero; the divisor of a link parameter must not be zero",
-                    )),
-                    Some(d) => Ok(planar_arm_core::Coefficient::scale(
-                        &l,
-                        &(Rational::from_integer(1.into()) / d),
-                    )),
-                    None => Err(syn::Error::new_spanned(
-                        &b.right,
-                        "division by a run-time parameter is not supported: values must stay \
-                         polynomial in the parameters so that the derivation is exact; divide \
-                         by a number, or make the quotient itself the parameter (an f64 field)",
-                    )),
-                },
-                _ => Err(syn::Error::new_spanned(
-                    b.op,
-                    "unsupported operator; link parameters allow + - * / and parentheses",
-                )),
+            // `a + b - c + ...` nests to the left, one level per operator: walk that spine in a
+            // loop, then fold left to right.
+            let level = precedence(&b.op);
+            let mut rights = Vec::new();
+            let mut left = expr;
+            while let Expr::Binary(b) = left {
+                if level.is_none() || precedence(&b.op) != level {
+                    break;
+                }
+                rights.push(b);
+                left = &b.left;
             }
+            if rights.is_empty() {
+                // An operator outside + - * /.
+                return Err(unsupported(b));
+            }
+            let mut value = eval_at(left, params, depth + 1)?;
+            for b in rights.into_iter().rev() {
+                let right = eval_at(&b.right, params, depth + 1)?;
+                value = apply(b, value, right)?;
+            }
+            Ok(value)
         }
         // self.m1
         Expr::Field(f) if is_self(&f.base) => match &f.member {
@@ -95,6 +110,48 @@ pub fn eval(expr: &Expr, params: &mut Vec<ParamUse>) -> syn::Result<Poly> {
             other,
             "expected a number such as 1, 0.35 or 3/2, or `self.field`",
         )),
+    }
+}
+
+/// `Some(0)` for `+ -`, `Some(1)` for `* /`, `None` for the operators values do not allow.
+fn precedence(op: &BinOp) -> Option<u8> {
+    match op {
+        BinOp::Add(_) | BinOp::Sub(_) => Some(0),
+        BinOp::Mul(_) | BinOp::Div(_) => Some(1),
+        _ => None,
+    }
+}
+
+fn unsupported(b: &syn::ExprBinary) -> syn::Error {
+    syn::Error::new_spanned(
+        b.op,
+        "unsupported operator; link parameters allow + - * / and parentheses",
+    )
+}
+
+/// `l op r` for the operator of `b` (one of + - * /).
+fn apply(b: &syn::ExprBinary, l: Poly, r: Poly) -> syn::Result<Poly> {
+    match b.op {
+        BinOp::Add(_) => Ok(l + r),
+        BinOp::Sub(_) => Ok(l - r),
+        BinOp::Mul(_) => Ok(l * r),
+        BinOp::Div(_) => match r.as_rational() {
+            Some(d) if num_traits::Zero::is_zero(&d) => Err(syn::Error::new_spanned(
+                &b.right,
+                "division by zero; the divisor of a link parameter must not be zero",
+            )),
+            Some(d) => Ok(planar_arm_core::Coefficient::scale(
+                &l,
+                &(Rational::from_integer(1.into()) / d),
+            )),
+            None => Err(syn::Error::new_spanned(
+                &b.right,
+                "division by a run-time parameter is not supported: values must stay \
+                 polynomial in the parameters so that the derivation is exact; divide \
+                 by a number, or make the quotient itself the parameter (an f64 field)",
+            )),
+        },
+        _ => Err(unsupported(b)),
     }
 }
 
@@ -174,6 +231,38 @@ mod tests {
         assert!(ev("1e401").is_err());
         assert!(ev("1e-401").is_err());
         assert!(ev(&"7".repeat(401)).is_err());
+        assert!(ev("1 % 2").is_err());
+        assert_eq!(
+            ev("2 * 3 / 4 - 1 + 1 / 2").unwrap(),
+            Poly::constant(ratio(1, 1))
+        );
+    }
+
+    #[test]
+    fn long_chains_do_not_recurse() {
+        // 20 000 terms: a recursive evaluator overflowed the compiler's stack here. Parsed and
+        // evaluated on a thread with a small stack, as a check that the depth stays bounded.
+        let text = vec!["1"; 20_000].join(" + ");
+        let result = std::thread::Builder::new()
+            .stack_size(1 << 20)
+            .spawn(move || {
+                let expr: Expr = syn::parse_str(&text).unwrap();
+                let value = ev_expr(&expr);
+                // syn drops the nested chain recursively: keep it alive past the check.
+                std::mem::forget(expr);
+                value
+            })
+            .unwrap()
+            .join()
+            .unwrap();
+        assert_eq!(result.unwrap(), Poly::constant(ratio(20_000, 1)));
+        let deep = format!("{}1{}", "(".repeat(300), ")".repeat(300));
+        let err = ev(&deep).unwrap_err().to_string();
+        assert!(err.contains("nested more than 200 levels"), "{err}");
+    }
+
+    fn ev_expr(e: &Expr) -> syn::Result<Poly> {
+        eval(e, &mut Vec::new())
     }
 
     #[test]

@@ -298,8 +298,8 @@ mod tests {
             }
             let r = tip_wrench3(l[0], l[1], l[2], &Vector3::from(p), &Vector3::from(t));
             prop_assert!(clean(&r));
-            if let Ok((f, torque)) = r {
-                prop_assert!(!f.iter().any(|v| v.is_nan()) && !torque.is_nan());
+            if let Ok(w) = r {
+                prop_assert!(!w.force.iter().any(|v| v.is_nan()) && !w.torque.is_nan());
             }
             for r in [
                 inverse_statics(&l, &Vector3::from(p), &Vector3::from(t)).map(|w| (w.force, w.torque, w.residual.amax())),

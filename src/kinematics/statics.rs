@@ -49,7 +49,9 @@ pub trait TipForce {
 /// Inverse statics of a three-link arm: the force and torque the tip exerts, from the joint
 /// torques.
 pub trait TipWrench {
-    /// The force `F` and torque `T` with `J^T (F, T) = tau` (see [`tip_wrench3`]).
+    /// The force `F` and torque `T` with `J^T (F, T) = tau` (see [`tip_wrench3`]), as the
+    /// [`StaticWrench`] that [`inverse_statics`](super::inverse_statics) returns (its residual
+    /// zero: three joints, three unknowns).
     ///
     /// # Errors
     /// [`ArmError::NonFinite`] for NaN or infinite arguments, [`ArmError::Singular`] when
@@ -58,7 +60,7 @@ pub trait TipWrench {
         &self,
         q: &SVector<f64, 3>,
         tau: &SVector<f64, 3>,
-    ) -> Result<(Vector2<f64>, f64), ArmError>;
+    ) -> Result<StaticWrench<3>, ArmError>;
 }
 
 /// The singularity error of the inverse statics.
@@ -179,9 +181,8 @@ fn finite_result(values: impl IntoIterator<Item = f64>) -> Result<(), ArmError> 
 /// use planar_arm::nalgebra::Vector3;
 ///
 /// // Equal joint torques produce a pure tip torque.
-/// let (force, torque) =
-///     tip_wrench3(1.0, 1.0, 0.3, &Vector3::new(0.2, 1.0, -0.4), &Vector3::repeat(2.0)).unwrap();
-/// assert!(force.norm() < 1e-12 && (torque - 2.0).abs() < 1e-12);
+/// let w = tip_wrench3(1.0, 1.0, 0.3, &Vector3::new(0.2, 1.0, -0.4), &Vector3::repeat(2.0)).unwrap();
+/// assert!(w.force.norm() < 1e-12 && (w.torque - 2.0).abs() < 1e-12);
 /// ```
 #[inline]
 pub fn tip_wrench3(
@@ -190,7 +191,12 @@ pub fn tip_wrench3(
     l3: f64,
     q: &SVector<f64, 3>,
     tau: &SVector<f64, 3>,
-) -> Result<(Vector2<f64>, f64), ArmError> {
+) -> Result<StaticWrench<3>, ArmError> {
+    let wrench = |force, torque| StaticWrench {
+        force,
+        torque,
+        residual: SVector::<f64, 3>::zeros(),
+    };
     check_lengths(&[l1, l2, l3])?;
     check_vector(q, "q")?;
     check_vector(tau, "tau")?;
@@ -204,7 +210,7 @@ pub fn tip_wrench3(
     }
     let scale = tau.amax();
     if scale == 0.0 {
-        return Ok((Vector2::zeros(), 0.0));
+        return Ok(wrench(Vector2::zeros(), 0.0));
     }
     let (t1, t2, t3) = (tau[0] / scale, tau[1] / scale, tau[2] / scale);
     let (a, b) = ((t1 - t2) / l1, (t2 - t3) / l2);
@@ -214,5 +220,5 @@ pub fn tip_wrench3(
         return Err(statics_singular(l1, l2, s2));
     }
     finite_result(force.iter().copied().chain([torque]))?;
-    Ok((force, torque))
+    Ok(wrench(force, torque))
 }

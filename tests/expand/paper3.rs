@@ -970,10 +970,7 @@ impl ::planar_arm::kinematics::TipWrench for Paper3 {
         __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
         __tau: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
     ) -> ::core::result::Result<
-        (
-            ::planar_arm::nalgebra::Vector2<::core::primitive::f64>,
-            ::core::primitive::f64,
-        ),
+        ::planar_arm::kinematics::StaticWrench<3>,
         ::planar_arm::ArmError,
     > {
         ::planar_arm::kinematics::tip_wrench3(1.0, 1.0, 1.0, __q, __tau)

@@ -4,7 +4,6 @@
 //! Apart from the closed forms because the fitting is not theirs: it is the joint-range logic
 //! shared with the prismatic closed forms, applied to the branches they return.
 
-
 use nalgebra::{Isometry2, Point2, SVector};
 
 use super::{ik2, ik3, target_coordinates};

@@ -112,9 +112,9 @@ pub fn reachable_target<const N: usize>(
 /// # Errors
 /// [`ArmError::NonFinite`] for NaN or infinite lengths (`"lengths"`) or targets (`"target"`);
 /// [`ArmError::Unreachable`] naming the target as given, with the distance from the base of the
-/// point checked, the work-space's radii and how far outside it the point lies (metres; or,
-/// for the polar arm and the slider carrying a link, as [`ik_rp`](crate::kinematics::ik_rp) and
-/// [`ik_pr`](crate::kinematics::ik_pr) report it).
+/// point checked, the work-space's radii and how far outside it the point lies (metres);
+/// [`ArmError::BeyondJointRange`] where the region is exact and the closed form behind it says
+/// a joint's range excludes the point (see [`Workspace::of_links`]).
 ///
 /// # Example
 /// ```
@@ -128,8 +128,16 @@ pub fn reachable_target<const N: usize>(
 /// ];
 /// let near = IkTarget::Position(Point2::new(0.0, 1.0));
 /// assert_eq!(reachable_target_of(&polar, &near), Ok(near));
-/// let short = IkTarget::Position(Point2::new(0.5, 0.0));
-/// assert!(matches!(reachable_target_of(&polar, &short), Err(ArmError::Unreachable { .. })));
+/// // The slide would have to retract to 0 m, below its range.
+/// let short = IkTarget::Position(Point2::new(0.7, 0.0));
+/// assert!(matches!(
+///     reachable_target_of(&polar, &short),
+///     Err(ArmError::BeyondJointRange { joint: 1, kind: Joint::Prismatic, .. })
+/// ));
+/// // Four links with a range: only the annulus is known, and this point lies beyond it.
+/// let four = [Link::rod(1.0, 1.0).with_range(0.0, 1.0), Link::rod(0.5, 1.0), Link::rod(0.5, 1.0), Link::rod(0.5, 1.0)];
+/// let far = IkTarget::Position(Point2::new(3.0, 0.0));
+/// assert!(matches!(reachable_target_of(&four, &far), Err(ArmError::Unreachable { .. })));
 /// ```
 pub fn reachable_target_of<const N: usize>(
     links: &[Link; N],

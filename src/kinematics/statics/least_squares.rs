@@ -463,8 +463,8 @@ pub trait RedundantTipWrench<const N: usize> {
     /// let arm = Four { a: Revolute, b: Revolute, c: Revolute, d: Revolute };
     /// let q = SVector::<f64, 4>::new(0.3, 0.9, -0.4, 1.1);
     /// let tau = arm.joint_torques(&q, &Vector2::new(1.0, -2.0), 0.25);
-    /// let (force, torque) = arm.tip_wrench(&q, &tau).unwrap();
-    /// assert!((force - Vector2::new(1.0, -2.0)).norm() < 1e-12 && (torque - 0.25).abs() < 1e-12);
+    /// let w = arm.tip_wrench(&q, &tau).unwrap();
+    /// assert!((w.force - Vector2::new(1.0, -2.0)).norm() < 1e-12 && (w.torque - 0.25).abs() < 1e-12);
     /// // Folding torques are balanced by no tip wrench.
     /// let fold = SVector::<f64, 4>::new(1.0, -1.0, 1.0, -1.0);
     /// assert!(matches!(arm.tip_wrench(&q, &fold), Err(ArmError::Unbalanced { .. })));
@@ -476,7 +476,7 @@ pub trait RedundantTipWrench<const N: usize> {
         &self,
         q: &SVector<f64, N>,
         tau: &SVector<f64, N>,
-    ) -> Result<(Vector2<f64>, f64), ArmError>;
+    ) -> Result<StaticWrench<N>, ArmError>;
 }
 
 /// [`RedundantTipWrench::tip_wrench`] for links.
@@ -484,7 +484,7 @@ fn balanced_wrench<const N: usize>(
     links: &[Link; N],
     q: &SVector<f64, N>,
     tau: &SVector<f64, N>,
-) -> Result<(Vector2<f64>, f64), ArmError> {
+) -> Result<StaticWrench<N>, ArmError> {
     let w = inverse_statics_of(links, q, tau)?;
     let (residual, tolerance) = (w.residual.norm(), UNBALANCED_TOLERANCE * tau.norm());
     if residual > tolerance {
@@ -493,7 +493,7 @@ fn balanced_wrench<const N: usize>(
             tolerance,
         });
     }
-    Ok((w.force, w.torque))
+    Ok(w)
 }
 
 macro_rules! redundant_tip_wrench {
@@ -503,7 +503,7 @@ macro_rules! redundant_tip_wrench {
                 &self,
                 q: &SVector<f64, $n>,
                 tau: &SVector<f64, $n>,
-            ) -> Result<(Vector2<f64>, f64), ArmError> {
+            ) -> Result<StaticWrench<$n>, ArmError> {
                 balanced_wrench(&self.links(), q, tau)
             }
         }

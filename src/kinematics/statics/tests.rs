@@ -73,8 +73,8 @@ fn tip_wrench3_inverts_the_transposed_jacobian() {
             let f = random_force(&mut rng);
             let t = rng.range(-3.0, 3.0);
             let tau = joint_torques(&[l1, l2, l3], q.as_slice(), f, t);
-            let (f_back, t_back) =
-                tip_wrench3(l1, l2, l3, &q, &Vector3::new(tau[0], tau[1], tau[2])).unwrap();
+            let back = tip_wrench3(l1, l2, l3, &q, &Vector3::new(tau[0], tau[1], tau[2])).unwrap();
+            let (f_back, t_back) = (back.force, back.torque);
             assert!((f_back - f).norm() < 1e-9 * f.norm().max(1.0));
             assert!((t_back - t).abs() < 1e-9 * t.abs().max(1.0));
             let tau = Vector3::new(
@@ -82,7 +82,8 @@ fn tip_wrench3_inverts_the_transposed_jacobian() {
                 rng.range(-5.0, 5.0),
                 rng.range(-5.0, 5.0),
             );
-            let (f, t) = tip_wrench3(l1, l2, l3, &q, &tau).unwrap();
+            let w = tip_wrench3(l1, l2, l3, &q, &tau).unwrap();
+            let (f, t) = (w.force, w.torque);
             let again = jacobian(&[l1, l2, l3], &q).transpose() * Vector3::new(f.x, f.y, t);
             assert!((again - tau).norm() < 1e-9 * tau.norm().max(1.0));
         }

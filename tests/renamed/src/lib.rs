@@ -1,5 +1,6 @@
 //! A crate that knows `planar_arm` as `arm` (renamed in its Cargo.toml), so generated code
-//! that named `::planar_arm` would not compile: `#[arm(crate = "arm")]` tells the derive.
+//! that named `::planar_arm` would not compile: `#[arm(crate = "arm")]` tells the derive, and
+//! without it the derive reads the name from this crate's Cargo.toml.
 
 use arm::{PlanarArm, Revolute};
 
@@ -7,6 +8,16 @@ use arm::{PlanarArm, Revolute};
 #[derive(PlanarArm, Default)]
 #[arm(crate = "arm", gravity = 9.81)]
 pub struct Renamed {
+    #[arm(length = 1, mass = 1)]
+    upper: Revolute,
+    #[arm(length = 1, mass = 1)]
+    fore: Revolute,
+}
+
+/// The same without `crate = "..."`: found in Cargo.toml.
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81)]
+pub struct Found {
     #[arm(length = 1, mass = 1)]
     upper: Revolute,
     #[arm(length = 1, mass = 1)]
@@ -26,5 +37,6 @@ mod tests {
         // Held still, the torques are the gravity torques.
         assert!((tau - arm.gravity(&q)).norm() < 1e-12);
         assert!(tau[0] > 0.0);
+        assert_eq!(Found::default().gravity(&q), arm.gravity(&q));
     }
 }

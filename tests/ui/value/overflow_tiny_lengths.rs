@@ -4,9 +4,9 @@ use planar_arm::prelude::*;
 // the i128 of the generated `const` data.
 #[derive(PlanarArm)]
 struct Arm {
-    #[arm(length = 1/1000000000000000000000000000000, mass = 1)]
-    upper: Revolute,
     #[arm(length = 1, mass = 1)]
+    upper: Revolute,
+    #[arm(length = 1/1000000000000000000000000000000, mass = 1)]
     fore: Revolute,
 }
 
