@@ -1,5 +1,8 @@
 use core::fmt;
 
+#[cfg(not(feature = "std"))]
+use num_traits::Float as _;
+
 /// What went wrong in a method that can fail: inverse kinematics, inverse statics, checked dynamics.
 ///
 /// The enum is `#[non_exhaustive]`: match on the variants you handle and keep a `_` arm.
@@ -116,6 +119,22 @@ pub enum ArmError {
         residual: f64,
         /// The tolerance it exceeds, N m.
         tolerance: f64,
+    },
+    /// [`lqr`](crate::lqr) or [`dlqr`](crate::dlqr) has no stabilising gain: a mode of `A` on
+    /// or beyond the stability boundary (`Re s >= 0`, or `|z| >= 1` in discrete time) is not
+    /// moved by the input (`(A, B)` is not stabilisable) or not weighed by the cost (`(Q, A)`
+    /// is not detectable).
+    NotStabilizable {
+        /// The mode's eigenvalue of `A`, `[re, im]` (its conjugate is one too).
+        eigenvalue: [f64; 2],
+        /// Whether the pair is discrete-time ([`dlqr`](crate::dlqr)).
+        discrete: bool,
+        /// `"B"`: no input moves the mode; `"Q"`: the cost does not see it.
+        missed_by: &'static str,
+        /// The relative Popov-Belevitch-Hautus measure: the smallest singular value of
+        /// `[A - s I, B]` (or `[A - s I; C]`, `C^T C = Q`) over its norm, `B` and `C` scaled to
+        /// the norm of `A - s I`; zero for an exact miss, below `1e-8` here.
+        measure: f64,
     },
 }
 
@@ -356,6 +375,34 @@ impl fmt::Display for ArmError {
                 r(residual),
                 r(tolerance)
             ),
+            Self::NotStabilizable {
+                eigenvalue: [re, im],
+                discrete,
+                missed_by,
+                measure,
+            } => {
+                write!(f, "no stabilising LQR gain: the mode at eigenvalue {}", r(re))?;
+                if im != 0.0 {
+                    write!(f, " +- {}i", r(im.abs()))?;
+                }
+                if discrete {
+                    write!(f, " (|z| = {} >= 1)", r(re.hypot(im)))?;
+                } else {
+                    write!(f, " (Re s = {} >= 0)", r(re))?;
+                }
+                if missed_by == "Q" {
+                    write!(
+                        f,
+                        " is not weighed by Q, so (Q, A) is not detectable; give it weight in Q"
+                    )?;
+                } else {
+                    write!(
+                        f,
+                        " is not moved by any input, so (A, B) is not stabilisable"
+                    )?;
+                }
+                write!(f, " (PBH measure {})", r(measure))
+            }
         }
     }
 }
@@ -502,5 +549,29 @@ mod tests {
         );
         let overflow = ArmError::NonFinite { argument: "result" };
         assert!(overflow.to_string().contains("overflowed"));
+    }
+
+    #[test]
+    fn unstabilisable_modes_are_named_with_their_distance_past_the_boundary() {
+        let unseen = ArmError::NotStabilizable {
+            eigenvalue: [0.25, -1.5],
+            discrete: false,
+            missed_by: "Q",
+            measure: 3.0000000000000004e-17,
+        };
+        assert_eq!(
+            unseen.to_string(),
+            "no stabilising LQR gain: the mode at eigenvalue 0.25 +- 1.5i (Re s = 0.25 >= 0) is \
+             not weighed by Q, so (Q, A) is not detectable; give it weight in Q (PBH measure 3e-17)"
+        );
+        let unmoved = ArmError::NotStabilizable {
+            eigenvalue: [-0.6, 0.8],
+            discrete: true,
+            missed_by: "B",
+            measure: 0.0,
+        };
+        assert!(unmoved
+            .to_string()
+            .contains("eigenvalue -0.6 +- 0.8i (|z| = 1 >= 1) is not moved by any input"));
     }
 }

@@ -232,6 +232,7 @@ pub mod kinematics;
 mod ldlt;
 mod linear;
 mod link;
+mod lqr;
 mod mass_inverse;
 mod model;
 mod real;
@@ -257,6 +258,7 @@ pub use jet::Jet;
 pub use kinematics::DynArm;
 pub use linear::Linearize;
 pub use link::{Joint, Link, Prismatic, Revolute};
+pub use lqr::{dlqr, lqr, EigenSize, Lqr};
 pub use model::{Model, Payload, RELATIVE_PIVOT};
 pub use nalgebra;
 // Inlined, so that the crate page's links to it resolve wherever planar_arm's docs are built
