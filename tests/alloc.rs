@@ -280,6 +280,20 @@ fn generated_dynamics_kinematics_and_statics_do_not_allocate() {
     };
     derivatives();
     assert_no_allocation("derivatives and linearisation", derivatives);
+    // A regulator redesigned as the arm moves (gain scheduling).
+    let (a, b) = arm.linearize(&q, &q, &q);
+    let (ad, bd) = arm.discretize(&q, &q, &q, 0.01);
+    let (weight_q, weight_r) = (
+        SMatrix::<f64, 6, 6>::identity(),
+        SMatrix::<f64, 3, 3>::identity(),
+    );
+    let regulators = || {
+        black_box(planar_arm::lqr(black_box(&a), &b, &weight_q, &weight_r)).expect("stabilisable");
+        black_box(planar_arm::dlqr(black_box(&ad), &bd, &weight_q, &weight_r))
+            .expect("stabilisable");
+    };
+    regulators();
+    assert_no_allocation("lqr and dlqr", regulators);
 }
 
 #[test]

@@ -5,8 +5,8 @@
 #![no_std]
 #![deny(warnings)]
 
-use planar_arm::nalgebra::{SVector, Vector2};
-use planar_arm::{ArmError, PlanarArm, Revolute};
+use planar_arm::nalgebra::{SMatrix, SVector, Vector2};
+use planar_arm::{ArmError, Linearize, PlanarArm, Revolute};
 
 /// A two-link arm with a run-time payload mass, friction and gravity.
 #[derive(PlanarArm)]
@@ -43,4 +43,14 @@ pub fn checked(
     let qdd = arm.try_forward_dynamics(q, qd, tau)?;
     let tip = arm.tip_pose(q);
     Ok((qdd, tip.translation.x + arm.kinetic_energy(q, qd)))
+}
+
+/// The continuous-time LQR gain (unit weights) that holds the arm still at `q`: the regulator
+/// needs neither `std` nor an allocator.
+///
+/// # Errors
+/// As `planar_arm::lqr`: `ArmError::NonFinite` for NaN in `q`, for instance.
+pub fn holding_gain(arm: &Arm, q: &Vector2<f64>) -> Result<SMatrix<f64, 2, 4>, ArmError> {
+    let (a, b) = arm.linearize(q, &Vector2::zeros(), &arm.gravity(q));
+    Ok(planar_arm::lqr(&a, &b, &SMatrix::identity(), &SMatrix::identity())?.gain)
 }
