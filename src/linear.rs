@@ -12,6 +12,10 @@ use crate::PlanarArm;
 /// [`PlanarArm::forward_dynamics_derivatives`]: exact to rounding, Coulomb friction's jump at
 /// zero rate not differentiated.
 ///
+/// Its pairs are what the regulators take: [`lqr`](crate::lqr) the continuous `(A, B)` of
+/// `linearize`, [`dlqr`](crate::dlqr) the zero-order-hold `(Ad, Bd)` of `discretize` (for one
+/// input of several, `B * drive` with `drive` the `N x M` selection).
+///
 /// ```
 /// use planar_arm::prelude::*;
 ///
