@@ -6,9 +6,11 @@
 //!    open-loop eigenvalues of `A` at upright against the textbook double pendulum's, from `M`
 //!    and the gravity stiffness worked out by hand;
 //! 2. a discrete-time LQR for a 10 ms control period: the zero-order-hold pair from
-//!    `discretize` at upright, the discrete algebraic Riccati equation solved by value
-//!    iteration, checked by its residual and by the closed-loop eigenvalues (inside the unit
-//!    circle);
+//!    `discretize` at upright and its gain from [`dlqr`](planar_arm::dlqr), checked here by
+//!    the residual of the discrete algebraic Riccati equation written out and by the
+//!    closed-loop eigenvalues (inside the unit circle), and set beside the continuous-time
+//!    gain [`lqr`](planar_arm::lqr) gives from `linearize` with the same weights, which the
+//!    discrete one approaches as the period shrinks;
 //! 3. the controller `tau = u* - K (x - x*)`, held for 10 ms at a time, on the nonlinear
 //!    dynamics (`forward_dynamics`, RK4 at 1 ms) from 0.15 rad and -0.2 rad off upright, 5 s;
 //! 4. the acrobot: the same arm with only the elbow driven. One input, but controllable at
@@ -31,8 +33,9 @@ use std::error::Error;
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 use std::path::{Path, PathBuf};
 
-use planar_arm::nalgebra::{Matrix2, Matrix4, SMatrix, Vector4};
+use planar_arm::nalgebra::{Complex, Matrix2, Matrix4, SMatrix, Vector4};
 use planar_arm::prelude::*;
+use planar_arm::{dlqr, lqr};
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -56,9 +59,6 @@ const PERIOD: f64 = 0.01;
 const SUBSTEPS: u32 = 10;
 /// Control periods simulated: 5 s.
 const STEPS: u32 = 500;
-/// Riccati iteration: stop when P changes by less than this, relative to its largest entry.
-const TOLERANCE: f64 = 1e-13;
-const MAX_ITERATIONS: u32 = 100_000;
 
 type V2 = Vector2<f64>;
 type X = Vector4<f64>;
@@ -123,43 +123,6 @@ fn textbook_check(arm: &Rods) -> f64 {
     worst
 }
 
-/// The discrete LQR for `x+ = Ad x + Bd u`, cost `sum x^T Q x + u^T R u`, by value iteration
-/// on the Riccati equation: `P <- Q + Ad^T P Ad - Ad^T P Bd (R + Bd^T P Bd)^-1 Bd^T P Ad`
-/// from `P = Q`, the cost-to-go of ever longer horizons, which converges to the stabilising
-/// solution when (Ad, Bd) is stabilisable and Q > 0. Slower than a Schur or doubling method
-/// but a few lines and obviously right; the rate is the square of the slowest closed-loop pole.
-/// Returns the gain K, the iterations taken and the relative residual of the equation.
-fn dlqr<const M: usize>(
-    ad: &Matrix4<f64>,
-    bd: &SMatrix<f64, 4, M>,
-    q: &Matrix4<f64>,
-    r: &SMatrix<f64, M, M>,
-) -> Result<(SMatrix<f64, M, 4>, u32, f64), Box<dyn Error>> {
-    let gain = |p: &Matrix4<f64>| -> Result<SMatrix<f64, M, 4>, Box<dyn Error>> {
-        let s = r + bd.transpose() * p * bd;
-        let s = s
-            .cholesky()
-            .ok_or("R + Bd^T P Bd is not positive definite")?;
-        Ok(s.solve(&(bd.transpose() * p * ad)))
-    };
-    let mut p = *q;
-    for iterations in 1..=MAX_ITERATIONS {
-        let k = gain(&p)?;
-        // Ad^T P Ad - Ad^T P Bd K = Ad^T P (Ad - Bd K); symmetrised, as rounding would
-        // otherwise let P drift from symmetric over thousands of steps.
-        let next = q + ad.transpose() * p * (ad - bd * k);
-        let next = (next + next.transpose()) * 0.5;
-        let change = (next - p).amax() / next.amax();
-        p = next;
-        if change < TOLERANCE {
-            let k = gain(&p)?;
-            let riccati = q + ad.transpose() * p * (ad - bd * k) - p;
-            return Ok((k, iterations, riccati.amax() / p.amax()));
-        }
-    }
-    Err(format!("Riccati iteration: no convergence in {MAX_ITERATIONS} steps").into())
-}
-
 /// Designs the controller for the inputs `drive` (torque = drive * u) and prints its checks.
 fn design<const M: usize>(
     arm: &Rods,
@@ -171,26 +134,65 @@ fn design<const M: usize>(
     let tau = arm.gravity(&q);
     let (ad, bd) = arm.discretize(&q, &V2::zeros(), &tau, PERIOD);
     let bd = bd * drive;
-    let (k, iterations, residual) = dlqr(&ad, &bd, q_cost, r_cost)?;
+    let lqr_d = dlqr(&ad, &bd, q_cost, r_cost)?;
+    let (k, p) = (lqr_d.gain, lqr_d.cost_to_go);
+    // The discrete algebraic Riccati equation at dlqr's P, written out here rather than
+    // taken from dlqr's own report.
+    let inner = (r_cost + bd.transpose() * p * bd)
+        .try_inverse()
+        .ok_or("R + Bd^T P Bd is singular")?;
+    let riccati = q_cost + ad.transpose() * p * ad
+        - ad.transpose() * p * bd * inner * bd.transpose() * p * ad
+        - p;
+    let residual = riccati.amax() / p.amax();
     println!(
-        "Riccati value iteration: converged in {} iterations (relative change < {TOLERANCE:.0e}); residual |Q + Ad^T P Ad - Ad^T P Bd (R + Bd^T P Bd)^-1 Bd^T P Ad - P| / |P| = {:.1e}",
-        iterations, residual
+        "dlqr: {} doublings; residual |Q + Ad^T P Ad - Ad^T P Bd (R + Bd^T P Bd)^-1 Bd^T P Ad - P| / |P| = {residual:.1e} (dlqr reports {:.1e})",
+        lqr_d.iterations, lqr_d.residual
     );
-    assert!(residual < 1e-10, "Riccati residual too large");
+    assert!(residual < 1e-12, "Riccati residual too large");
     println!("K (columns q1, q2, qd1, qd2; N m per rad, N m s per rad):");
     for row in k.row_iter() {
         println!("    {:9.3?}", row.iter().collect::<Vec<_>>());
     }
-    let closed = (ad - bd * k).complex_eigenvalues();
-    println!("closed-loop eigenvalues z of Ad - Bd K (s = ln z / dt):");
-    let mut slowest = 0.0_f64;
-    for z in closed.iter() {
-        let s = z.ln() / PERIOD;
-        println!("    z = {z:.6}   |z| = {:.6}   s = {s:.3} 1/s", z.norm());
+    // The continuous-time design from the same linearisation and weights: scaling Q and R
+    // together leaves K alone, so the discrete design, whose cost is a sum over 10 ms steps,
+    // tends to the continuous one as the period shrinks; its poles s = ln z / dt should be
+    // near the continuous poles already.
+    let (a, b) = arm.linearize(&q, &V2::zeros(), &tau);
+    let lqr_c = lqr(&a, &(b * drive), q_cost, r_cost)?;
+    let by_s =
+        |x: &Complex<f64>, y: &Complex<f64>| x.re.total_cmp(&y.re).then(x.im.total_cmp(&y.im));
+    let mut discrete: Vec<(Complex<f64>, Complex<f64>)> = (ad - bd * k)
+        .complex_eigenvalues()
+        .iter()
+        .map(|z| (z.ln() / PERIOD, *z))
+        .collect();
+    discrete.sort_by(|x, y| by_s(&x.0, &y.0));
+    let mut continuous: Vec<Complex<f64>> = lqr_c.closed_loop_eigenvalues.iter().copied().collect();
+    continuous.sort_by(by_s);
+    println!(
+        "closed-loop eigenvalues z of Ad - Bd K, s = ln z / dt, beside the poles s_c of A - B K_c from lqr (continuous time, same weights):"
+    );
+    let (mut slowest, mut apart) = (0.0_f64, 0.0_f64);
+    for ((s, z), s_c) in discrete.iter().zip(&continuous) {
+        println!(
+            "    z = {z:.6}   |z| = {:.6}   s = {s:.3} 1/s   s_c = {s_c:.3} 1/s",
+            z.norm()
+        );
         slowest = slowest.max(z.norm());
+        apart = apart.max((s - s_c).norm() / s_c.norm());
     }
     assert!(slowest < 1.0, "unstable: a closed-loop |z| = {slowest}");
     println!("all inside the unit circle: largest modulus {slowest:.6}");
+    println!(
+        "s and s_c differ by at most {:.1}% (the continuous gain K_c differs from K by {:.1}%)",
+        100.0 * apart,
+        100.0 * (lqr_c.gain - k).amax() / k.amax()
+    );
+    assert!(
+        apart < 0.05,
+        "the discrete design is far from the continuous one"
+    );
     Ok(k)
 }
 
