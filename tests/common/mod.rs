@@ -1,6 +1,8 @@
 //! Shared checks of a derived arm against the numeric reference and the laws of mechanics.
 #![allow(dead_code)] // each test crate uses a different subset
 
+pub mod riccati;
+
 use planar_arm::nalgebra::{SMatrix, SVector};
 use planar_arm::prelude::*;
 use planar_arm::reference;
