@@ -21,17 +21,21 @@
 //!    it can start along three directions: about 0.02 rad at the shoulder alone, 0.08 rad at
 //!    the elbow alone, and more than 0.5 rad where the centre of mass starts over the base.
 //!
-//! It asserts that both runs end within 1e-3 of upright, and draws `docs/balance-two-link.svg`
-//! and `docs/balance-acrobot.svg`: angle errors and torques against time, and a strobe picture
-//! of the arm.
+//! It asserts that both runs end within 1e-3 of upright, and draws `balance-two-link.svg` and
+//! `balance-acrobot.svg`: angle errors and torques against time, and a strobe picture of the
+//! arm. The pictures go to `target/pictures/`, to `DIR` with `--out DIR`, or with `--docs` to
+//! `docs/`, where README.md shows them.
 //!
 //! ```text
-//! cargo run --example balance
+//! cargo run --release --example balance [-- --out DIR | -- --docs]
 //! ```
+
+#[path = "support/out.rs"]
+mod out;
 
 use std::error::Error;
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use planar_arm::nalgebra::{Complex, Matrix2, Matrix4, SMatrix, Vector4};
 use planar_arm::prelude::*;
@@ -39,6 +43,8 @@ use planar_arm::{dlqr, lqr};
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
+
+use out::Out;
 
 /// The paper's two equal links: uniform rods, 1 m and 1 kg.
 #[derive(PlanarArm, Default)]
@@ -539,11 +545,8 @@ fn draw(
     Ok(())
 }
 
-fn docs() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("docs")
-}
-
 fn main() -> Result<(), Box<dyn Error>> {
+    let out = Out::from_args("balance");
     let arm = Rods::default();
     let worst = textbook_check(&arm);
     assert!(worst < 1e-9, "A differs from the textbook by {worst:.1e}");
@@ -561,7 +564,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     );
     let run = simulate(&arm, &k, &both, upright() + start);
     let (peak, settled, last) = report(&run);
-    let file = docs().join("balance-two-link.svg");
+    let file = out.path("balance-two-link.svg");
     draw(
         &file,
         &arm,
@@ -576,7 +579,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         ["joint 1 (shoulder)", "joint 2 (elbow)"],
         &[0.0, 0.1, 0.2, 0.3, 0.4, 0.6, 0.8, 1.0, 1.5, 5.0],
     )?;
-    println!("{}", file.display());
+    out.wrote(&file);
 
     println!("\n== 4. the acrobot: only the elbow driven ==");
     let elbow = SMatrix::<f64, 2, 1>::new(0.0, 1.0);
@@ -625,7 +628,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     );
     let acro = simulate(&arm, &k, &elbow, upright() + start);
     let (peak, _, last) = report(&acro);
-    let file = docs().join("balance-acrobot.svg");
+    let file = out.path("balance-acrobot.svg");
     draw(
         &file,
         &arm,
@@ -640,6 +643,6 @@ fn main() -> Result<(), Box<dyn Error>> {
         ["joint 1 (passive, 0)", "joint 2 (elbow, driven)"],
         &[0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.2, 5.0],
     )?;
-    println!("{}", file.display());
+    out.wrote(&file);
     Ok(())
 }

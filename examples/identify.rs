@@ -13,17 +13,21 @@
 //! 5. an unknown payload: the same regressor identifies the loaded arm's base parameters, and
 //!    the change from the empty arm's gives the payload's mass.
 //!
-//! It prints the tables and draws `docs/identify-torques.svg` (measured against predicted
-//! torques on the fresh trajectory) and `docs/identify-parameters.svg` (identification errors
-//! against their standard deviations).
+//! It prints the tables and draws `identify-torques.svg` (measured against predicted torques on
+//! the fresh trajectory) and `identify-parameters.svg` (identification errors against their
+//! standard deviations). The pictures go to `target/pictures/`, to `DIR` with `--out DIR`, or
+//! with `--docs` to `docs/`, where README.md shows them.
 //!
 //! ```text
-//! cargo run --example identify
+//! cargo run --release --example identify [-- --out DIR | -- --docs]
 //! ```
+
+#[path = "support/out.rs"]
+mod out;
 
 use std::error::Error;
 use std::f64::consts::TAU;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use planar_arm::nalgebra::{DMatrix, DVector, SVector};
 use planar_arm::prelude::*;
@@ -31,6 +35,8 @@ use planar_arm::reference;
 use plotters::coord::ranged1d::SegmentValue;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+use out::Out;
 
 /// A 3-link arm with realistic masses, geared joints (armature, viscous and Coulomb friction)
 /// and a payload slot; the values the factory does not know precisely are run-time parameters.
@@ -539,10 +545,6 @@ fn draw_parameters(
     Ok(())
 }
 
-fn docs() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("docs")
-}
-
 /// Prints the table of base parameters and returns the largest error in standard deviations.
 fn print_estimate(truth: &SVector<f64, B>, est: &Estimate) -> f64 {
     let names = <Arm as Identification<3, P, B>>::BASE_PARAMETERS;
@@ -716,6 +718,7 @@ fn identify_payload(
 }
 
 fn main() -> Result<(), Box<dyn Error>> {
+    let out = Out::from_args("identify");
     let robot = Arm::empty();
     // The base regressor depends on the lengths and gravity only: the model it comes from
     // need not know any mass, inertia or friction.
@@ -726,11 +729,12 @@ fn main() -> Result<(), Box<dyn Error>> {
     let (check, predicted, errors) = validate(&model, &robot, &est, &mut rng);
     identify_payload(&model, &robot, &excitation, &est, &mut rng)?;
 
-    let torques = docs().join("identify-torques.svg");
+    println!();
+    let torques = out.path("identify-torques.svg");
     draw_torques(&torques, &check, &predicted, &errors)?;
-    println!("\n{}", torques.display());
-    let parameters = docs().join("identify-parameters.svg");
+    out.wrote(&torques);
+    let parameters = out.path("identify-parameters.svg");
     draw_parameters(&parameters, &robot.base_parameters(), &est)?;
-    println!("{}", parameters.display());
+    out.wrote(&parameters);
     Ok(())
 }

@@ -11,14 +11,20 @@
 //!    (`docs/sim-animated.svg`, SMIL `<animateTransform>` on nested links);
 //! 4. the step size a six-link arm with a light last link needs, free and under PD: printed.
 //!
+//! The pictures go to `target/pictures/`, to `DIR` with `--out DIR`, or with `--docs` to
+//! `docs/`, where README.md shows them.
+//!
 //! ```text
-//! cargo run --example simulate
+//! cargo run --release --example simulate [-- --out DIR | -- --docs]
 //! ```
+
+#[path = "support/out.rs"]
+mod out;
 
 use std::error::Error;
 use std::f64::consts::PI;
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::time::Instant;
 
 use planar_arm::nalgebra::{SVector, Vector3};
@@ -29,6 +35,8 @@ use planar_arm::sim::{
 };
 use plotters::coord::Shift;
 use plotters::prelude::*;
+
+use out::Out;
 
 /// The paper's two equal links: uniform rods, 1 m and 1 kg.
 #[derive(PlanarArm, Default)]
@@ -86,10 +94,6 @@ type V2 = Vector2<f64>;
 /// The load the three-link arm carries, kg.
 const LOAD: f64 = 0.5;
 type V3 = Vector3<f64>;
-
-fn docs() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("docs")
-}
 
 fn energy<A: PlanarArm<N>, const N: usize>(
     arm: &A,
@@ -176,7 +180,7 @@ struct EnergyCurve {
     color: RGBColor,
 }
 
-fn energy_section() -> Result<(), Box<dyn Error>> {
+fn energy_section(out: &Out) -> Result<(), Box<dyn Error>> {
     println!("== 1. the free rods for 100 s from q = (-1, 0.4) at rest: |E(t) - E(0)| ==");
     let (dt, seconds) = (0.01, 100.0);
     let mut curves = Vec::new();
@@ -258,7 +262,9 @@ fn energy_section() -> Result<(), Box<dyn Error>> {
         energy(&arm, &q, &V2::zeros()) - energy(&arm, &V2::new(-PI / 2.0, 0.0), &V2::zeros())
     };
     println!("(the swing's energy above hanging still: {e_scale:.3} J)");
-    draw_energy(&docs().join("sim-energy.svg"), &curves, e_scale)?;
+    let file = out.path("sim-energy.svg");
+    draw_energy(&file, &curves, e_scale)?;
+    out.wrote(&file);
     Ok(())
 }
 
@@ -323,7 +329,6 @@ fn draw_energy(path: &Path, curves: &[EnergyCurve], e_scale: f64) -> Result<(), 
         .label_font(font(13))
         .draw()?;
     root.present()?;
-    println!("{}", path.display());
     Ok(())
 }
 
@@ -351,7 +356,7 @@ struct Tracked {
     color: RGBColor,
 }
 
-fn tracking_section() -> Result<(), Box<dyn Error>> {
+fn tracking_section(out: &Out) -> Result<(), Box<dyn Error>> {
     println!(
         "\n== 2. three links carrying 0.5 kg that the model does not know, through via-points =="
     );
@@ -442,7 +447,9 @@ fn tracking_section() -> Result<(), Box<dyn Error>> {
         model.mass_matrix(&q0)[(2, 2)],
         real.mass_matrix(&q0)[(2, 2)]
     );
-    draw_tracking(&docs().join("sim-tracking.svg"), &path, &runs, &summary)?;
+    let file = out.path("sim-tracking.svg");
+    draw_tracking(&file, &path, &runs, &summary)?;
+    out.wrote(&file);
     Ok(())
 }
 
@@ -476,7 +483,6 @@ fn draw_tracking(
     angles_panel(&top, reference, &runs[2])?;
     error_panel(&bottom, reference, runs)?;
     root.present()?;
-    println!("{}", path.display());
     Ok(())
 }
 
@@ -610,7 +616,7 @@ fn outline<A: PlanarArm<N>, const N: usize>(arm: &A, q: &SVector<f64, N>) -> Vec
     points
 }
 
-fn line_section() -> Result<(), Box<dyn Error>> {
+fn line_section(out: &Out) -> Result<(), Box<dyn Error>> {
     println!("\n== 3. the tip along a straight line, by inverse kinematics, tracked by computed torque ==");
     let real = Picker::holding(LOAD);
     let model = Picker::holding(LOAD);
@@ -643,12 +649,9 @@ fn line_section() -> Result<(), Box<dyn Error>> {
         "from ({:.3}, {:.3}) to ({}, {}) in 2 s: the tip strays at most {:.1e} m from the line, ends {:.1e} m from the target",
         from.x, from.y, to.x, to.y, off, last
     );
-    draw_strobe(
-        &docs().join("sim-strobe.svg"),
-        &real,
-        &states,
-        (from, to.coords),
-    )?;
+    let file = out.path("sim-strobe.svg");
+    draw_strobe(&file, &real, &states, (from, to.coords))?;
+    out.wrote(&file);
 
     // The free rods beside it, for the animation: 10 s of a chaotic double pendulum.
     let rods = Rods::default();
@@ -659,9 +662,9 @@ fn line_section() -> Result<(), Box<dyn Error>> {
         .into_vec()?;
     let picker: Vec<State<3>> = states.iter().step_by(8).copied().collect();
     let svg = animate(&real, &picker, &rods, &swing, (from, to.coords));
-    let path = docs().join("sim-animated.svg");
-    std::fs::write(&path, svg)?;
-    println!("{}", path.display());
+    let file = out.path("sim-animated.svg");
+    std::fs::write(&file, svg)?;
+    out.wrote(&file);
     Ok(())
 }
 
@@ -756,7 +759,6 @@ fn draw_strobe(
         .label_font(font(13))
         .draw()?;
     root.present()?;
-    println!("{}", path.display());
     Ok(())
 }
 
@@ -943,9 +945,10 @@ fn step_size_section() -> Result<(), Box<dyn Error>> {
 }
 
 fn main() -> Result<(), Box<dyn Error>> {
-    energy_section()?;
-    tracking_section()?;
-    line_section()?;
+    let out = Out::from_args("simulate");
+    energy_section(&out)?;
+    tracking_section(&out)?;
+    line_section(&out)?;
     step_size_section()?;
     Ok(())
 }

@@ -1,31 +1,38 @@
 //! Draws the work-spaces of the paper's arms as SVG, from derived arms (their `workspace()`,
 //! [`DexterousWorkspace`], `tip_pose`, `joint_positions` and closed-form inverse kinematics):
 //!
-//! - `docs/workspace-two-link.svg`: the reachable annulus `|l1 - l2| ..= l1 + l2` of the paper's
+//! - `workspace-two-link.svg`: the reachable annulus `|l1 - l2| ..= l1 + l2` of the paper's
 //!   two equal links (a disk) and of an unequal pair, with the tips of random configurations;
-//! - `docs/workspace-three-link.svg`: the usable (dexterous) work-space of three links, the
+//! - `workspace-three-link.svg`: the usable (dexterous) work-space of three links, the
 //!   points reached with every orientation of the last link, in the paper's three cases
 //!   (`l3 < |l1 - l2|`: an annulus; `l3 > |l1 - l2|`: an annulus and a disk; `l1 = l2 = l`: one
 //!   disk of radius `2 l - l3`), with the whole reachable annulus outlined. The dots are grid
 //!   points that the closed-form inverse kinematics reaches with each of 72 orientations;
-//! - `docs/workspace-prismatic.svg`: arms with prismatic joints and joint ranges, from their
+//! - `workspace-prismatic.svg`: arms with prismatic joints and joint ranges, from their
 //!   `links()`: a polar arm (a hinge with a range carrying a slide with a range, so the tip
 //!   reaches both ways along the link: two opposite sectors) and a slider carrying two links
 //!   (PRR: the two-link annulus swept along the carriage's travel). The shaded cells are those
 //!   whose centre `Workspace::of_links(...).contains`; the dots are `sample_tips` of random
 //!   configurations within the ranges, each of them checked to be contained.
 //!
+//! The pictures go to `target/pictures/`, to `DIR` with `--out DIR`, or with `--docs` to
+//! `docs/`, where README.md shows them.
+//!
 //! ```text
-//! cargo run --example workspace
+//! cargo run --release --example workspace [-- --out DIR | -- --docs]
 //! ```
 
+#[path = "support/out.rs"]
+mod out;
+
 use std::error::Error;
-use std::path::{Path, PathBuf};
 
 use planar_arm::kinematics::{sample_tips, DexterousWorkspace, Skeleton, Workspace};
 use planar_arm::prelude::*;
 use plotters::coord::Shift;
 use plotters::prelude::*;
+
+use out::Out;
 
 /// The paper's two equal links.
 #[derive(PlanarArm, Default)]
@@ -434,12 +441,9 @@ fn on_edge(l1: f64, l2: f64, l3: f64, rho: f64) -> bool {
     (rho + l3 - b).abs() < 1e-2 || ((rho - l3).abs() - a).abs() < 1e-2
 }
 
-fn docs() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("docs")
-}
-
 fn main() -> Result<(), Box<dyn Error>> {
-    let two = docs().join("workspace-two-link.svg");
+    let out = Out::from_args("workspace");
+    let two = out.path("workspace-two-link.svg");
     {
         let root = SVGBackend::new(&two, (1140, 500)).into_drawing_area();
         root.fill(&WHITE)?;
@@ -459,9 +463,9 @@ fn main() -> Result<(), Box<dyn Error>> {
         )?;
         root.present()?;
     }
-    println!("{}", two.display());
+    out.wrote(&two);
 
-    let three = docs().join("workspace-three-link.svg");
+    let three = out.path("workspace-three-link.svg");
     {
         let root = SVGBackend::new(&three, (1480, 460)).into_drawing_area();
         root.fill(&WHITE)?;
@@ -491,9 +495,9 @@ fn main() -> Result<(), Box<dyn Error>> {
         )?;
         root.present()?;
     }
-    println!("{}", three.display());
+    out.wrote(&three);
 
-    let prismatic = docs().join("workspace-prismatic.svg");
+    let prismatic = out.path("workspace-prismatic.svg");
     {
         let root = SVGBackend::new(&prismatic, (1140, 500)).into_drawing_area();
         root.fill(&WHITE)?;
@@ -532,6 +536,6 @@ fn main() -> Result<(), Box<dyn Error>> {
         )?;
         root.present()?;
     }
-    println!("{}", prismatic.display());
+    out.wrote(&prismatic);
     Ok(())
 }
