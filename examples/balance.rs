@@ -30,6 +30,8 @@
 //! cargo run --release --example balance [-- --out DIR | -- --docs]
 //! ```
 
+#[path = "support/num.rs"]
+mod num;
 #[path = "support/out.rs"]
 mod out;
 
@@ -44,6 +46,7 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use num::{complex, fixed, sig};
 use out::Out;
 
 /// The paper's two equal links: uniform rods, 1 m and 1 kg.
@@ -118,11 +121,12 @@ fn textbook_check(arm: &Rods) -> f64 {
     println!("eigenvalues of A (1/s):  by hand +-sqrt(mu)   from linearize   difference");
     let mut worst = largest_imaginary;
     for (h, d) in by_hand.iter().zip(&derived) {
-        println!("{:24}{h:>16.12} {d:>16.12} {:>12.1e}", "", d - h);
+        println!("{:24}{h:>16.12} {d:>16.12} {:>12}", "", sig(d - h, 2));
         worst = worst.max((d - h).abs());
     }
     println!(
-        "(largest imaginary part {largest_imaginary:.1e}); two real unstable modes: upright falls with time constants {:.3} s and {:.3} s",
+        "(largest imaginary part {}); two real unstable modes: upright falls with time constants {:.3} s and {:.3} s",
+        sig(largest_imaginary, 2),
         1.0 / by_hand[3],
         1.0 / by_hand[2]
     );
@@ -152,13 +156,16 @@ fn design<const M: usize>(
         - p;
     let residual = riccati.amax() / p.amax();
     println!(
-        "dlqr: {} doublings; residual |Q + Ad^T P Ad - Ad^T P Bd (R + Bd^T P Bd)^-1 Bd^T P Ad - P| / |P| = {residual:.1e} (dlqr reports {:.1e})",
-        lqr_d.iterations, lqr_d.residual
+        "dlqr: {} doublings; residual |Q + Ad^T P Ad - Ad^T P Bd (R + Bd^T P Bd)^-1 Bd^T P Ad - P| / |P| = {} (dlqr reports {})",
+        lqr_d.iterations,
+        sig(residual, 2),
+        sig(lqr_d.residual, 2)
     );
     assert!(residual < 1e-12, "Riccati residual too large");
     println!("K (columns q1, q2, qd1, qd2; N m per rad, N m s per rad):");
     for row in k.row_iter() {
-        println!("    {:9.3?}", row.iter().collect::<Vec<_>>());
+        let row: Vec<String> = row.iter().map(|k| format!("{:>9}", fixed(*k, 3))).collect();
+        println!("    [{}]", row.join(", "));
     }
     // The continuous-time design from the same linearisation and weights: scaling Q and R
     // together leaves K alone, so the discrete design, whose cost is a sum over 10 ms steps,
@@ -182,8 +189,11 @@ fn design<const M: usize>(
     let (mut slowest, mut apart) = (0.0_f64, 0.0_f64);
     for ((s, z), s_c) in discrete.iter().zip(&continuous) {
         println!(
-            "    z = {z:.6}   |z| = {:.6}   s = {s:.3} 1/s   s_c = {s_c:.3} 1/s",
-            z.norm()
+            "    z = {:17}   |z| = {:.6}   s = {} 1/s   s_c = {} 1/s",
+            complex(z.re, z.im, 6),
+            z.norm(),
+            complex(s.re, s.im, 3),
+            complex(s_c.re, s_c.im, 3)
         );
         slowest = slowest.max(z.norm());
         apart = apart.max((s - s_c).norm() / s_c.norm());
@@ -274,12 +284,16 @@ fn report(run: &Run) -> (V2, f64, f64) {
         "largest angle errors {:.4} rad, {:.4} rad; within 0.01 rad of upright from t = {settled:.2} s on",
         swing[0], swing[1]
     );
-    println!("peak torques {:.3} N m, {:.3} N m", peak[0], peak[1]);
-    println!("at t = 5 s: |x - x*| = {:.2e}", last.norm());
+    println!(
+        "peak torques {} N m, {} N m",
+        fixed(peak[0], 3),
+        fixed(peak[1], 3)
+    );
+    println!("at t = 5 s: |x - x*| = {}", sig(last.norm(), 3));
     assert!(
         last.norm() < 1e-3,
-        "not balanced: |x - x*| = {:e}",
-        last.norm()
+        "not balanced: |x - x*| = {}",
+        sig(last.norm(), 3)
     );
     (peak, settled, last.norm())
 }
@@ -549,7 +563,11 @@ fn main() -> Result<(), Box<dyn Error>> {
     let out = Out::from_args("balance");
     let arm = Rods::default();
     let worst = textbook_check(&arm);
-    assert!(worst < 1e-9, "A differs from the textbook by {worst:.1e}");
+    assert!(
+        worst < 1e-9,
+        "A differs from the textbook by {}",
+        sig(worst, 2)
+    );
 
     println!("\n== 2. LQR with both joints driven ==");
     // Angles weigh ten times the rates; torque costs 1 per (N m)^2.

@@ -22,6 +22,8 @@
 //! cargo run --release --example identify [-- --out DIR | -- --docs]
 //! ```
 
+#[path = "support/num.rs"]
+mod num;
 #[path = "support/out.rs"]
 mod out;
 
@@ -36,6 +38,7 @@ use plotters::coord::ranged1d::SegmentValue;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use num::fixed;
 use out::Out;
 
 /// A 3-link arm with realistic masses, geared joints (armature, viscous and Coulomb friction)
@@ -559,8 +562,13 @@ fn print_estimate(truth: &SVector<f64, B>, est: &Estimate) -> f64 {
         let z = err / est.std[i];
         worst = worst.max(z.abs());
         println!(
-            "{:width$}  {:>10.5} {:>10.5} {:>10.5} {:>9.5} {:>7.2}",
-            names[i], truth[i], est.theta[i], err, est.std[i], z
+            "{:width$}  {:>10} {:>10} {:>10} {:>9} {:>7}",
+            names[i],
+            fixed(truth[i], 5),
+            fixed(est.theta[i], 5),
+            fixed(err, 5),
+            fixed(est.std[i], 5),
+            fixed(z, 2)
         );
     }
     println!("largest error: {worst:.2} standard deviations");
@@ -586,7 +594,10 @@ fn identify_empty(
             (V3::repeat(f64::MAX), V3::repeat(f64::MIN)),
             |(lo, hi), s| (lo.inf(&pick(s)), hi.sup(&pick(s))),
         );
-        format!("{:.2?}", (0..3).map(|j| (lo[j], hi[j])).collect::<Vec<_>>())
+        let pairs: Vec<String> = (0..3)
+            .map(|j| format!("({}, {})", fixed(lo[j], 2), fixed(hi[j], 2)))
+            .collect();
+        pairs.join(", ")
     };
     let torque_rms: Vec<f64> = (0..3)
         .map(|j| rms(run.measured.iter().map(|t| t[j])))
@@ -689,8 +700,14 @@ fn identify_payload(
         }
         let z_empty = (est.theta[i] - before[i]) / est.std[i];
         println!(
-            "{:width$}  {:>10.5} {:>10.5} {:>10.5} {:>9.5} {:>10.2} sd {:>9.1} sd",
-            names[i], before[i], after[i], est.theta[i], est.std[i], z_loaded, z_empty
+            "{:width$}  {:>10} {:>10} {:>10} {:>9} {:>10} sd {:>9} sd",
+            names[i],
+            fixed(before[i], 5),
+            fixed(after[i], 5),
+            fixed(est.theta[i], 5),
+            fixed(est.std[i], 5),
+            fixed(z_loaded, 2),
+            fixed(z_empty, 1)
         );
         assert!(
             z_empty.abs() > 10.0,

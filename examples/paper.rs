@@ -7,8 +7,13 @@
 //! cargo run --example paper
 //! ```
 
+#[path = "support/num.rs"]
+mod num;
+
 use planar_arm::prelude::*;
 use planar_arm::reference;
+
+use num::sig;
 use planar_arm::symbolic::ring::{int, ratio, show, Rational};
 use planar_arm::symbolic::{
     Angle, ArmSpec, Dynamics, Expr, Kinematics, LinkSpec, Monomial, Trig, Var,
@@ -200,8 +205,14 @@ fn main() {
     section("Generated code against the numeric reference");
     let worst2 = compare(&Paper2::default(), 500);
     let worst3 = compare(&Paper3::default(), 500);
-    println!("two links:   max relative difference over 500 random states: {worst2:.2e}");
-    println!("three links: max relative difference over 500 random states: {worst3:.2e}");
+    println!(
+        "two links:   max relative difference over 500 random states: {}",
+        sig(worst2, 3)
+    );
+    println!(
+        "three links: max relative difference over 500 random states: {}",
+        sig(worst3, 3)
+    );
     assert!(
         worst2 < 1e-12 && worst3 < 1e-12,
         "generated code disagrees with the reference"
@@ -347,13 +358,13 @@ fn simulate(arm: &Paper2) {
             Ok(s) => {
                 let tip = arm.tip_pose(&s.q).translation;
                 println!(
-                    "{:5.2} {:8.4} {:8.4} {:8.4} {:8.4}    {:9.2e} J",
+                    "{:5.2} {:8.4} {:8.4} {:8.4} {:8.4}    {:>9} J",
                     s.t,
                     s.q[0],
                     s.q[1],
                     tip.x,
                     tip.y,
-                    energy(&s.q, &s.qd) - e0
+                    sig(energy(&s.q, &s.qd) - e0, 3)
                 );
             }
             Err(e) => {

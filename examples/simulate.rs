@@ -18,6 +18,8 @@
 //! cargo run --release --example simulate [-- --out DIR | -- --docs]
 //! ```
 
+#[path = "support/num.rs"]
+mod num;
 #[path = "support/out.rs"]
 mod out;
 
@@ -36,6 +38,7 @@ use planar_arm::sim::{
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use num::{fixed, sig};
 use out::Out;
 
 /// The paper's two equal links: uniform rods, 1 m and 1 kg.
@@ -216,9 +219,14 @@ fn energy_section(out: &Out) -> Result<(), Box<dyn Error>> {
             .filter(|p| p.0 > 90.0)
             .fold(0.0_f64, |m, p| m.max(p.1));
         rows.push(format!(
-            "    {name:24} {:>9.2} us/step ({:>4.1}x RK4)   max |dE| 0-10 s {early:9.2e} J   90-100 s {late:9.2e} J",
-            per_step * 1e6,
-            per_step / t_rk4
+            "    {:53}   max |dE| 0-10 s {:>8} J   90-100 s {:>8} J",
+            format!(
+                "{name:24} {:>9} us/step ({:>4}x RK4)",
+                fixed(per_step * 1e6, 2),
+                fixed(per_step / t_rk4, 1)
+            ),
+            sig(early, 3),
+            sig(late, 3)
         ));
         curves.push(EnergyCurve {
             name: format!("{name}, dt = {} ms: {late:.1e} J at 90-100 s", dt * 1e3),
@@ -235,8 +243,13 @@ fn energy_section(out: &Out) -> Result<(), Box<dyn Error>> {
         .take_while(|p| p.0 <= 10.0)
         .fold(0.0_f64, |m, p| m.max(p.1));
     rows.push(format!(
-        "    RK4 at equal cost        dt = {:.2} ms (the 4th-order variational step's wall time)   max |dE| 0-10 s {early:9.2e} J   90-100 s {late:9.2e} J",
-        dt_equal * 1e3
+        "    {:53}   max |dE| 0-10 s {:>8} J   90-100 s {:>8} J",
+        format!(
+            "RK4, step {} ms: the 4th-order one's cost here",
+            fixed(dt_equal * 1e3, 2)
+        ),
+        sig(early, 3),
+        sig(late, 3)
     ));
     curves.push(EnergyCurve {
         name: format!(
@@ -247,8 +260,8 @@ fn energy_section(out: &Out) -> Result<(), Box<dyn Error>> {
         color: RGBColor(235, 160, 60),
     });
     println!(
-        "dt = {} ms; wall time per step in this build (the least of 30 interleaved rounds of 100 steps):",
-        dt * 1e3
+        "step {} ms; wall time per step in this build (the least of 30 interleaved rounds of 100 steps):",
+        sig(dt * 1e3, 2)
     );
     for r in &rows {
         println!("{r}");
@@ -433,10 +446,10 @@ fn tracking_section(out: &Out) -> Result<(), Box<dyn Error>> {
                 .fold(0.0, f64::max)
         };
         println!(
-            "    {:62} {:9.2e}   {:9.2e}",
+            "    {:62} {:>9}   {:>9}",
             r.name,
-            worst(0.0, 4.0),
-            worst(4.0, 5.0)
+            sig(worst(0.0, 4.0), 3),
+            sig(worst(4.0, 5.0), 3)
         );
         summary.push(worst(0.0, 5.0));
     }
@@ -646,8 +659,13 @@ fn line_section(out: &Out) -> Result<(), Box<dyn Error>> {
         (real.tip_pose(&s.q).translation.vector - to.coords).norm()
     });
     println!(
-        "from ({:.3}, {:.3}) to ({}, {}) in 2 s: the tip strays at most {:.1e} m from the line, ends {:.1e} m from the target",
-        from.x, from.y, to.x, to.y, off, last
+        "from ({:.3}, {:.3}) to ({}, {}) in 2 s: the tip strays at most {} m from the line, ends {} m from the target",
+        from.x,
+        from.y,
+        to.x,
+        to.y,
+        sig(off, 2),
+        sig(last, 2)
     );
     let file = out.path("sim-strobe.svg");
     draw_strobe(&file, &real, &states, (from, to.coords))?;
@@ -862,6 +880,11 @@ fn animate(
 // ---------------------------------------------------------------------------------------------
 // 4. Step size for six links with a light last link
 
+/// A step in milliseconds, for a table.
+fn ms(dt: f64) -> String {
+    sig(dt * 1e3, 1)
+}
+
 fn step_size_section() -> Result<(), Box<dyn Error>> {
     println!("\n== 4. step size: six links, the last 5 cm and 20 g ==");
     let arm = Six::default();
@@ -887,16 +910,21 @@ fn step_size_section() -> Result<(), Box<dyn Error>> {
             worst = worst.max((energy(&arm, &q, &qd) - e0).abs());
         }
         match failed {
-            Some((t, e)) => println!("    dt = {dt:7.0e} s: fails at t = {t:.3} s ({e})"),
-            None => println!("    dt = {dt:7.0e} s: {:9.2e}", worst / scale.abs()),
+            Some((t, e)) => println!("    step {:>4} ms: fails at t = {t:.3} s ({e})", ms(dt)),
+            None => println!(
+                "    step {:>4} ms: {:>9}",
+                ms(dt),
+                sig(worst / scale.abs(), 3)
+            ),
         }
     }
     let kp = SVector::<f64, 6>::from_element(200.0);
     let kd = SVector::<f64, 6>::from_element(10.0);
     let rate = fastest_rate(&arm, &q0, &kp, &kd)?;
     println!(
-        "PD + gravity with the same gains on every joint (kp = 200 N m/rad, kd = 10 N m s/rad): fastest_rate {rate:.3e} 1/s, so RK4 needs dt < {:.1e} s to be stable",
-        2.8 / rate
+        "PD + gravity with the same gains on every joint (kp = 200 N m/rad, kd = 10 N m s/rad): fastest_rate {} 1/s, so RK4 needs a step under {} s to be stable",
+        sig(rate, 3),
+        sig(2.8 / rate, 2)
     );
     let hold = planar_arm::sim::Quintic::rest_to_rest(q0, q0, 1.0)?;
     for dt in [1e-3, 1e-4, 3e-5] {
@@ -912,19 +940,20 @@ fn step_size_section() -> Result<(), Box<dyn Error>> {
             .last();
         match result {
             Some(Ok(s)) => println!(
-                "    dt = {dt:7.0e} s: error after 0.5 s {:9.2e} rad",
-                (s.q - q0).amax()
+                "    step {:>4} ms: error after 0.5 s {:>9} rad",
+                ms(dt),
+                sig((s.q - q0).amax(), 3)
             ),
-            Some(Err(e)) => println!("    dt = {dt:7.0e} s: {e}"),
+            Some(Err(e)) => println!("    step {:>4} ms: {e}", ms(dt)),
             None => {}
         }
     }
     // Computed torque's gains are per unit inertia: the light link gets a torque scaled to it.
     let omega = 20.0;
     println!(
-        "computed torque, {omega} rad/s on every joint (kp = omega^2, kd = 2 omega per unit inertia): rate sqrt(kp) + kd = {:.0} 1/s, RK4 stable below {:.1e} s",
+        "computed torque, {omega} rad/s on every joint (kp = omega^2, kd = 2 omega per unit inertia): rate sqrt(kp) + kd = {:.0} 1/s, RK4 stable below {} s",
         3.0 * omega,
-        2.8 / (3.0 * omega)
+        sig(2.8 / (3.0 * omega), 2)
     );
     for dt in [1e-2, 1e-3] {
         let sim = Simulator::new(Rk4, dt)?;
@@ -934,10 +963,11 @@ fn step_size_section() -> Result<(), Box<dyn Error>> {
             .last()
         {
             Some(Ok(s)) => println!(
-                "    dt = {dt:7.0e} s: error after 0.5 s {:9.2e} rad",
-                (s.q - q0).amax()
+                "    step {:>4} ms: error after 0.5 s {:>9} rad",
+                ms(dt),
+                sig((s.q - q0).amax(), 3)
             ),
-            Some(Err(e)) => println!("    dt = {dt:7.0e} s: {e}"),
+            Some(Err(e)) => println!("    step {:>4} ms: {e}", ms(dt)),
             None => {}
         }
     }
