@@ -34,17 +34,17 @@
 mod num;
 #[path = "support/out.rs"]
 mod out;
+#[path = "balance/pictures.rs"]
+mod pictures;
+#[path = "support/plot.rs"]
+mod plot;
 
 use std::error::Error;
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
-use std::path::Path;
 
 use planar_arm::nalgebra::{Complex, Matrix2, Matrix4, SMatrix, Vector4};
 use planar_arm::prelude::*;
 use planar_arm::{dlqr, lqr};
-use plotters::coord::types::RangedCoordf64;
-use plotters::coord::Shift;
-use plotters::prelude::*;
 
 use num::{complex, fixed, sig};
 use out::Out;
@@ -325,237 +325,72 @@ fn reach<const M: usize>(
     (lo, swing(lo))
 }
 
-const JOINT: [RGBColor; 2] = [RGBColor(70, 110, 190), RGBColor(200, 80, 40)];
-const ARM: RGBColor = RGBColor(35, 40, 60);
-const EARLY: RGBColor = RGBColor(235, 140, 60);
-const TIP: RGBColor = RGBColor(40, 150, 90);
-
-fn font(size: u32) -> TextStyle<'static> {
-    ("sans-serif", size).into_font().into()
-}
-
-type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
-type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
-
-/// A key entry's sample: a short line.
-fn swatch(style: ShapeStyle) -> impl Fn((i32, i32)) -> PathElement<(i32, i32)> {
-    move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style)
-}
-
-/// The chart's key, in its upper right corner.
-fn key<'a, 'b: 'a>(chart: &mut Chart<'a, 'b>) -> Result<(), Box<dyn Error>> {
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.9))
-        .border_style(BLACK.mix(0.3))
-        .label_font(font(13))
-        .draw()?;
-    Ok(())
-}
-
-/// One quantity per joint against time; `steps` draws it held between samples.
-fn time_panel(
-    area: &Area<'_>,
-    caption: &str,
-    y_desc: &str,
-    t: &[f64],
-    values: [(&str, Vec<f64>); 2],
-    steps: bool,
-) -> Result<(), Box<dyn Error>> {
-    let (lo, hi) = values
-        .iter()
-        .flat_map(|(_, v)| v.iter())
-        .fold((0.0_f64, 0.0_f64), |(lo, hi), v| (lo.min(*v), hi.max(*v)));
-    let pad = 0.08 * (hi - lo).max(1e-9);
-    let end = t.last().copied().unwrap_or(1.0);
-    let mut chart = ChartBuilder::on(area)
-        .margin(10)
-        .margin_right(20)
-        .caption(caption, font(16))
-        .x_label_area_size(40)
-        .y_label_area_size(64)
-        .build_cartesian_2d(0.0..end, (lo - pad)..(hi + pad))?;
-    chart
-        .configure_mesh()
-        .light_line_style(TRANSPARENT)
-        .bold_line_style(BLACK.mix(0.08))
-        .x_desc("time (s)")
-        .y_desc(y_desc)
-        .y_label_formatter(&|v| tick(*v))
-        .label_style(font(13))
-        .axis_desc_style(font(13))
-        .draw()?;
-    for ((name, v), color) in values.iter().zip(JOINT) {
-        let points: Vec<(f64, f64)> = if steps {
-            // Zero-order hold: each torque lasts until the next sample.
-            t.windows(2)
-                .zip(v)
-                .flat_map(|(w, &v)| [(w[0], v), (w[1], v)])
-                .collect()
-        } else {
-            t.iter().copied().zip(v.iter().copied()).collect()
-        };
-        chart
-            .draw_series(LineSeries::new(points, color.stroke_width(2)))?
-            .label(*name)
-            .legend(swatch(color.stroke_width(2)));
+/// Step 4: the same arm with only the elbow driven, its controllability, how far off upright
+/// it can start, and a run from 0.02 rad.
+fn acrobot(arm: &Rods, q_cost: &Matrix4<f64>, out: &Out) -> Result<(), Box<dyn Error>> {
+    println!("\n== 4. the acrobot: only the elbow driven ==");
+    let elbow = SMatrix::<f64, 2, 1>::new(0.0, 1.0);
+    let q = upright();
+    let (a, b) = arm.linearize(&q, &V2::zeros(), &arm.gravity(&q));
+    let b = b * elbow;
+    let mut c = Matrix4::zeros();
+    let mut column = b;
+    for i in 0..4 {
+        c.set_column(i, &column);
+        column = a * column;
     }
-    key(&mut chart)
-}
+    let sv = c.singular_values();
+    let rank = sv.iter().filter(|s| **s > 1e-9 * sv.max()).count();
+    println!(
+        "controllability matrix [b, Ab, A^2 b, A^3 b] (b: B's elbow column): singular values {:.4?}, rank {rank}",
+        sv.as_slice()
+    );
+    assert_eq!(rank, 4, "the acrobot is not controllable at upright");
+    let k = design(arm, &elbow, q_cost, &SMatrix::<f64, 1, 1>::new(1.0))?;
 
-/// The arm as drawn: base, elbow, tip.
-fn pose(arm: &Rods, q: &V2) -> Vec<(f64, f64)> {
-    let mut points: Vec<(f64, f64)> = arm.joint_positions(q).iter().map(|p| (p.x, p.y)).collect();
-    let tip = arm.tip_pose(q).translation.vector;
-    points.push((tip.x, tip.y));
-    points
-}
-
-/// A frame's colour: from `EARLY` at the first frame to `ARM` at the last.
-fn shade(f: f64) -> RGBColor {
-    // Between two u8 values, so in 0..=255.
-    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-    let mix = |a: u8, b: u8| (f64::from(a) + f * (f64::from(b) - f64::from(a))).round() as u8;
-    RGBColor(
-        mix(EARLY.0, ARM.0),
-        mix(EARLY.1, ARM.1),
-        mix(EARLY.2, ARM.2),
-    )
-}
-
-/// The arm at the `strobe` times, from orange (start) to dark (end), with the tip's path
-/// and the upright pose, on axes of equal units.
-fn strobe_panel(
-    area: &Area<'_>,
-    arm: &Rods,
-    run: &Run,
-    strobe: &[f64],
-) -> Result<(), Box<dyn Error>> {
-    let frames: Vec<(f64, Vec<(f64, f64)>)> = strobe
-        .iter()
-        .filter_map(|&t| {
-            let i = run.t.iter().position(|s| (s - t).abs() < 0.5 * PERIOD)?;
-            Some((t, pose(arm, &run.q[i])))
-        })
-        .collect();
-    let path: Vec<(f64, f64)> = run.q.iter().filter_map(|q| pose(arm, q).pop()).collect();
-    let half = path
-        .iter()
-        .chain(frames.iter().flat_map(|(_, p)| p))
-        .fold(0.4_f64, |m, p| m.max(p.0.abs()))
-        + 0.15;
-    let (bottom, top) = (-0.2, 2.2);
-    let (margin, x_labels, y_labels, caption) = (10_u32, 40_u32, 52_u32, 30_u32);
-    let (w, h) = area.dim_in_pixel();
-    let plot_w = f64::from(w - y_labels - 2 * margin);
-    let plot_h = f64::from(h - x_labels - 2 * margin - caption);
-    // Equal units: widen whichever axis has pixels to spare.
-    let (half, bottom, top) = if half * 2.0 / plot_w > (top - bottom) / plot_h {
-        let extra = half * 2.0 * plot_h / plot_w - (top - bottom);
-        (half, bottom - 0.5 * extra, top + 0.5 * extra)
-    } else {
-        (0.5 * (top - bottom) * plot_w / plot_h, bottom, top)
-    };
-    let mut chart = ChartBuilder::on(area)
-        .margin(margin)
-        .caption("the arm in motion (axes in equal units)", font(16))
-        .x_label_area_size(x_labels)
-        .y_label_area_size(y_labels)
-        .build_cartesian_2d(-half..half, bottom..top)?;
-    chart
-        .configure_mesh()
-        .light_line_style(TRANSPARENT)
-        .bold_line_style(BLACK.mix(0.08))
-        .x_desc("x (m)")
-        .y_desc("y (m)")
-        .y_label_formatter(&|v| tick(*v))
-        .x_label_formatter(&|v| tick(*v))
-        .label_style(font(13))
-        .axis_desc_style(font(13))
-        .draw()?;
-    chart.draw_series(std::iter::once(Rectangle::new(
-        [(-0.12, -0.05), (0.12, 0.0)],
-        BLACK.mix(0.25).filled(),
-    )))?;
-    chart
-        .draw_series(DashedLineSeries::new(
-            pose(arm, &upright()),
-            8,
-            6,
-            BLACK.mix(0.45).stroke_width(2),
-        ))?
-        .label("upright, q* = (pi/2, 0)")
-        .legend(swatch(BLACK.mix(0.45).stroke_width(2)));
-    // In the key here, drawn over the arms below, where it can be seen.
-    chart
-        .draw_series(std::iter::empty::<Circle<(f64, f64), u32>>())?
-        .label("tip path, 0 to 5 s")
-        .legend(swatch(TIP.stroke_width(2)));
-    // The time of each frame by its colour in the key: labels by the poses would collide
-    // where the arm comes back over itself.
-    let n = frames.len().max(2) - 1;
-    for (i, (t, points)) in frames.iter().enumerate() {
-        #[allow(clippy::cast_precision_loss)]
-        let color = shade(i as f64 / n as f64);
-        chart
-            .draw_series(LineSeries::new(
-                points.clone(),
-                color.mix(0.8).stroke_width(4),
-            ))?
-            .label(format!("the arm at t = {t} s"))
-            .legend(swatch(color.stroke_width(4)));
-        chart.draw_series(points.iter().map(|&p| Circle::new(p, 4, color.filled())))?;
+    // The passive shoulder is moved only through the coupling: to bring the centre of mass
+    // back over the base the elbow swings far, and past about 1 rad the linear model no
+    // longer holds. A start that keeps the centre of mass over the base (dq2 = -4 dq1 to
+    // first order, where gravity's torque on the shoulder vanishes) needs little swing.
+    println!(
+        "largest start from rest that it balances, along three directions (bisection, 2 mrad):"
+    );
+    for (name, direction) in [
+        ("shoulder only, (1, 0)", V2::new(1.0, 0.0)),
+        ("elbow only, (0, 1)", V2::new(0.0, 1.0)),
+        ("centre of mass over the base, (1, -4)", V2::new(1.0, -4.0)),
+    ] {
+        let (d, swing) = reach(arm, &k, &elbow, direction);
+        let bound = if d >= 0.5 { ">=" } else { "" };
+        println!("    {name:38} |dq| {bound}{d:.3} rad, the elbow then swings {swing:.2} rad");
     }
-    chart.draw_series(LineSeries::new(path, TIP.stroke_width(2)))?;
-    key(&mut chart)
-}
-
-/// A tick label without "-0" and without rounding noise.
-fn tick(v: f64) -> String {
-    // Adding 0.0 turns -0.0 into 0.0.
-    format!("{}", (v * 1e6).round() / 1e6 + 0.0)
-}
-
-/// Angle errors and torques against time (left), the strobe picture (right).
-fn draw(
-    path: &Path,
-    arm: &Rods,
-    run: &Run,
-    titles: [&str; 2],
-    torques: [&str; 2],
-    strobe: &[f64],
-) -> Result<(), Box<dyn Error>> {
-    let root = SVGBackend::new(path, (1200, 900)).into_drawing_area();
-    root.fill(&WHITE)?;
-    let (head, body) = root.split_vertically(70);
-    head.draw(&Text::new(titles[0], (16, 10), font(21)))?;
-    head.draw(&Text::new(titles[1], (16, 42), font(14)))?;
-    let (left, right) = body.split_horizontally(730);
-    let panels = left.split_evenly((2, 1));
-    let angle = |j: usize| run.error.iter().map(|e| e[j]).collect::<Vec<_>>();
-    let torque = |j: usize| run.tau.iter().map(|t| t[j]).collect::<Vec<_>>();
-    time_panel(
-        &panels[0],
-        "joint angle errors q - q* (wrapped to [-pi, pi))",
-        "angle error (rad)",
-        &run.t,
+    println!(
+        "so 0.05 rad at the shoulder is out of reach: the passive shoulder is moved only by \
+         swinging the elbow, and a swing of about a radian leaves the linear model behind"
+    );
+    let start = V2::new(0.02, 0.0);
+    println!(
+        "the nonlinear acrobot under it, from q* + ({}, {}) rad at rest:",
+        start[0], start[1]
+    );
+    let acro = simulate(arm, &k, &elbow, upright() + start);
+    let (peak, _, last) = report(&acro);
+    let file = out.path("balance-acrobot.svg");
+    pictures::draw(
+        &file,
+        arm,
+        &acro,
         [
-            ("joint 1 (shoulder)", angle(0)),
-            ("joint 2 (elbow)", angle(1)),
+            "The acrobot: the same rods balanced with the elbow motor alone (shoulder passive)",
+            &format!(
+                "from q* + ({}, {}) rad: the elbow swings {:.2} rad to carry the centre of mass back over the base; peak elbow torque {:.2} N m; |x - x*| = {} at 5 s",
+                start[0], start[1], acro.error.iter().map(|e| e[1].abs()).fold(0.0, f64::max), peak[1], sig(last, 1)
+            ),
         ],
-        false,
+        ["joint 1 (passive, 0)", "joint 2 (elbow, driven)"],
+        &[0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.2, 5.0],
     )?;
-    time_panel(
-        &panels[1],
-        "joint torques, held for each 10 ms control period",
-        "torque (N m)",
-        &run.t,
-        [(torques[0], torque(0)), (torques[1], torque(1))],
-        true,
-    )?;
-    strobe_panel(&right, arm, run, strobe)?;
-    root.present()?;
+    out.wrote(&file);
     Ok(())
 }
 
@@ -583,15 +418,15 @@ fn main() -> Result<(), Box<dyn Error>> {
     let run = simulate(&arm, &k, &both, upright() + start);
     let (peak, settled, last) = report(&run);
     let file = out.path("balance-two-link.svg");
-    draw(
+    pictures::draw(
         &file,
         &arm,
         &run,
         [
             "Balancing two 1 m, 1 kg rods upright: discrete LQR from the derived linearisation",
             &format!(
-                "nonlinear dynamics (RK4, 1 ms) from q* + ({}, {}) rad; both joints driven, 10 ms period; peak torques {:.2} and {:.2} N m; within 0.01 rad after {:.2} s; |x - x*| = {:.0e} at 5 s",
-                start[0], start[1], peak[0], peak[1], settled, last
+                "nonlinear dynamics (RK4, 1 ms) from q* + ({}, {}) rad; both joints driven, 10 ms period; peak torques {:.2} and {:.2} N m; within 0.01 rad after {:.2} s; |x - x*| = {} at 5 s",
+                start[0], start[1], peak[0], peak[1], settled, sig(last, 1)
             ),
         ],
         ["joint 1 (shoulder)", "joint 2 (elbow)"],
@@ -599,68 +434,5 @@ fn main() -> Result<(), Box<dyn Error>> {
     )?;
     out.wrote(&file);
 
-    println!("\n== 4. the acrobot: only the elbow driven ==");
-    let elbow = SMatrix::<f64, 2, 1>::new(0.0, 1.0);
-    let q = upright();
-    let (a, b) = arm.linearize(&q, &V2::zeros(), &arm.gravity(&q));
-    let b = b * elbow;
-    let mut c = Matrix4::zeros();
-    let mut column = b;
-    for i in 0..4 {
-        c.set_column(i, &column);
-        column = a * column;
-    }
-    let sv = c.singular_values();
-    let rank = sv.iter().filter(|s| **s > 1e-9 * sv.max()).count();
-    println!(
-        "controllability matrix [b, Ab, A^2 b, A^3 b] (b: B's elbow column): singular values {:.4?}, rank {rank}",
-        sv.as_slice()
-    );
-    assert_eq!(rank, 4, "the acrobot is not controllable at upright");
-    let k = design(&arm, &elbow, &q_cost, &SMatrix::<f64, 1, 1>::new(1.0))?;
-
-    // The passive shoulder is moved only through the coupling: to bring the centre of mass
-    // back over the base the elbow swings far, and past about 1 rad the linear model no
-    // longer holds. A start that keeps the centre of mass over the base (dq2 = -4 dq1 to
-    // first order, where gravity's torque on the shoulder vanishes) needs little swing.
-    println!(
-        "largest start from rest that it balances, along three directions (bisection, 2 mrad):"
-    );
-    for (name, direction) in [
-        ("shoulder only, (1, 0)", V2::new(1.0, 0.0)),
-        ("elbow only, (0, 1)", V2::new(0.0, 1.0)),
-        ("centre of mass over the base, (1, -4)", V2::new(1.0, -4.0)),
-    ] {
-        let (d, swing) = reach(&arm, &k, &elbow, direction);
-        let bound = if d >= 0.5 { ">=" } else { "" };
-        println!("    {name:38} |dq| {bound}{d:.3} rad, the elbow then swings {swing:.2} rad");
-    }
-    println!(
-        "so 0.05 rad at the shoulder is out of reach: the passive shoulder is moved only by \
-         swinging the elbow, and a swing of about a radian leaves the linear model behind"
-    );
-    let start = V2::new(0.02, 0.0);
-    println!(
-        "the nonlinear acrobot under it, from q* + ({}, {}) rad at rest:",
-        start[0], start[1]
-    );
-    let acro = simulate(&arm, &k, &elbow, upright() + start);
-    let (peak, _, last) = report(&acro);
-    let file = out.path("balance-acrobot.svg");
-    draw(
-        &file,
-        &arm,
-        &acro,
-        [
-            "The acrobot: the same rods balanced with the elbow motor alone (shoulder passive)",
-            &format!(
-                "from q* + ({}, {}) rad: the elbow swings {:.2} rad to carry the centre of mass back over the base; peak elbow torque {:.2} N m; |x - x*| = {:.0e} at 5 s",
-                start[0], start[1], acro.error.iter().map(|e| e[1].abs()).fold(0.0, f64::max), peak[1], last
-            ),
-        ],
-        ["joint 1 (passive, 0)", "joint 2 (elbow, driven)"],
-        &[0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.2, 5.0],
-    )?;
-    out.wrote(&file);
-    Ok(())
+    acrobot(&arm, &q_cost, &out)
 }

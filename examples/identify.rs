@@ -26,17 +26,17 @@
 mod num;
 #[path = "support/out.rs"]
 mod out;
+#[path = "identify/pictures.rs"]
+mod pictures;
+#[path = "support/plot.rs"]
+mod plot;
 
 use std::error::Error;
 use std::f64::consts::TAU;
-use std::path::Path;
 
 use planar_arm::nalgebra::{DMatrix, DVector, SVector};
 use planar_arm::prelude::*;
 use planar_arm::reference;
-use plotters::coord::ranged1d::SegmentValue;
-use plotters::prelude::*;
-use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use num::fixed;
 use out::Out;
@@ -322,232 +322,6 @@ fn rms(values: impl Iterator<Item = f64>) -> f64 {
     (sum / n).sqrt()
 }
 
-const MEASURED: RGBColor = RGBColor(110, 110, 110);
-const PREDICTED: RGBColor = RGBColor(200, 80, 40);
-const BAND: RGBColor = RGBColor(70, 110, 190);
-
-/// Seconds of the validation run drawn: enough for the shape, few enough to see the noise.
-const WINDOW: f64 = 5.0;
-
-fn label_font() -> TextStyle<'static> {
-    ("sans-serif", 13).into_font().into()
-}
-
-/// Per joint: measured against predicted torque, and their difference against the noise band.
-fn draw_torques(
-    path: &Path,
-    run: &Run,
-    predicted: &[V3],
-    errors: &[f64; 3],
-) -> Result<(), Box<dyn Error>> {
-    let root = SVGBackend::new(path, (1200, 900)).into_drawing_area();
-    root.fill(&WHITE)?;
-    let (head, body) = root.split_vertically(76);
-    head.draw(&Text::new(
-        "Identified model against measured torques on a fresh trajectory (the steps: Coulomb friction as a joint reverses)",
-        (16, 10),
-        ("sans-serif", 21).into_font(),
-    ))?;
-    let key = label_font();
-    let y = 52;
-    head.draw(&Circle::new((26, y), 3, MEASURED.filled()))?;
-    head.draw(&Text::new(
-        format!("measured: reference inverse dynamics + noise (sigma = {SIGMA} N m), {RATE} Hz"),
-        (40, y - 7),
-        key.clone(),
-    ))?;
-    head.draw(&PathElement::new(
-        vec![(560, y), (584, y)],
-        PREDICTED.stroke_width(2),
-    ))?;
-    head.draw(&Text::new(
-        "predicted: base_regressor(q, qd, qdd) * identified parameters",
-        (592, y - 7),
-        key.clone(),
-    ))?;
-    head.draw(&Rectangle::new(
-        [(1000, y - 6), (1018, y + 6)],
-        BAND.mix(0.2).filled(),
-    ))?;
-    head.draw(&Text::new("+- 2 sigma", (1026, y - 7), key))?;
-
-    let shown: Vec<usize> = (0..run.t.len()).filter(|&k| run.t[k] <= WINDOW).collect();
-    for (j, row) in body.split_evenly((3, 1)).iter().enumerate() {
-        let (left, right) = row.split_horizontally(790);
-        let (lo, hi) = shown.iter().fold((f64::MAX, f64::MIN), |(lo, hi), &k| {
-            let (m, p) = (run.measured[k][j], predicted[k][j]);
-            (lo.min(m).min(p), hi.max(m).max(p))
-        });
-        let pad = 0.08 * (hi - lo);
-        let mut chart = ChartBuilder::on(&left)
-            .margin(8)
-            .caption(format!("joint {}: torque", j + 1), ("sans-serif", 16))
-            .x_label_area_size(38)
-            .y_label_area_size(62)
-            .build_cartesian_2d(0.0..WINDOW, (lo - pad)..(hi + pad))?;
-        chart
-            .configure_mesh()
-            .light_line_style(TRANSPARENT)
-            .bold_line_style(BLACK.mix(0.08))
-            .x_desc("time (s)")
-            .y_desc("torque (N m)")
-            .label_style(label_font())
-            .axis_desc_style(label_font())
-            .draw()?;
-        chart.draw_series(
-            shown
-                .iter()
-                .map(|&k| Circle::new((run.t[k], run.measured[k][j]), 1, MEASURED.filled())),
-        )?;
-        chart.draw_series(LineSeries::new(
-            shown.iter().map(|&k| (run.t[k], predicted[k][j])),
-            PREDICTED.stroke_width(2),
-        ))?;
-
-        let lim = 4.0 * SIGMA;
-        let mut chart = ChartBuilder::on(&right)
-            .margin(8)
-            .margin_right(18)
-            .caption(
-                format!("measured - predicted: RMS {:.3} N m", errors[j]),
-                ("sans-serif", 16),
-            )
-            .x_label_area_size(38)
-            .y_label_area_size(62)
-            .build_cartesian_2d(0.0..WINDOW, -lim..lim)?;
-        chart
-            .configure_mesh()
-            .light_line_style(TRANSPARENT)
-            .bold_line_style(BLACK.mix(0.08))
-            .x_desc("time (s)")
-            .y_desc("error (N m)")
-            .x_labels(6)
-            .y_labels(5)
-            .label_style(label_font())
-            .axis_desc_style(label_font())
-            .draw()?;
-        chart.draw_series(std::iter::once(Rectangle::new(
-            [(0.0, -2.0 * SIGMA), (WINDOW, 2.0 * SIGMA)],
-            BAND.mix(0.2).filled(),
-        )))?;
-        chart.draw_series(shown.iter().map(|&k| {
-            let e = run.measured[k][j] - predicted[k][j];
-            Circle::new((run.t[k], e), 1, MEASURED.filled())
-        }))?;
-    }
-    root.present()?;
-    Ok(())
-}
-
-/// Per base parameter: its error in standard deviations, and its relative standard deviation.
-fn draw_parameters(
-    path: &Path,
-    truth: &SVector<f64, B>,
-    est: &Estimate,
-) -> Result<(), Box<dyn Error>> {
-    let names = <Arm as Identification<3, P, B>>::BASE_PARAMETERS;
-    let root = SVGBackend::new(path, (1200, 640)).into_drawing_area();
-    root.fill(&WHITE)?;
-    let (head, body) = root.split_vertically(50);
-    head.draw(&Text::new(
-        format!("Identified base parameters: {SAMPLES} samples, noise sigma = {SIGMA} N m"),
-        (16, 14),
-        ("sans-serif", 21).into_font(),
-    ))?;
-    let (left, right) = body.split_horizontally(800);
-    // The first parameter on top.
-    let row = |i: usize| SegmentValue::CenterOf(i32::try_from(B - 1 - i).unwrap_or(0));
-    // plotters' integer ranges include their end: B rows.
-    let rows = 0..i32::try_from(B - 1)?;
-
-    let mut chart = ChartBuilder::on(&left)
-        .margin(10)
-        .caption(
-            "(identified - true) / standard deviation (whiskers +- 1, band +- 2)",
-            ("sans-serif", 16),
-        )
-        .x_label_area_size(40)
-        .y_label_area_size(215)
-        .build_cartesian_2d(-4.0..4.0, rows.clone().into_segmented())?;
-    chart
-        .configure_mesh()
-        .light_line_style(TRANSPARENT)
-        .bold_line_style(BLACK.mix(0.08))
-        .y_labels(B)
-        .y_label_formatter(&|v| match v {
-            SegmentValue::CenterOf(i) => usize::try_from(*i)
-                .ok()
-                .and_then(|i| (B - 1).checked_sub(i))
-                .and_then(|i| names.get(i))
-                .map_or_else(String::new, |n| (*n).to_string()),
-            _ => String::new(),
-        })
-        .x_label_formatter(&|x| format!("{x:.0}"))
-        .x_desc("standard deviations")
-        .label_style(label_font())
-        .axis_desc_style(label_font())
-        .draw()?;
-    chart.draw_series(std::iter::once(Rectangle::new(
-        [(-2.0, SegmentValue::Exact(0)), (2.0, SegmentValue::Last)],
-        BAND.mix(0.15).filled(),
-    )))?;
-    chart.draw_series(std::iter::once(PathElement::new(
-        vec![(0.0, SegmentValue::Exact(0)), (0.0, SegmentValue::Last)],
-        BLACK.mix(0.5),
-    )))?;
-    // plotters' ErrorBar needs a feature this crate does not enable: a whisker and a dot.
-    let z = |i: usize| (est.theta[i] - truth[i]) / est.std[i];
-    chart.draw_series((0..B).map(|i| {
-        PathElement::new(
-            vec![(z(i) - 1.0, row(i)), (z(i) + 1.0, row(i))],
-            PREDICTED.stroke_width(2),
-        )
-    }))?;
-    chart.draw_series((0..B).map(|i| Circle::new((z(i), row(i)), 4, PREDICTED.filled())))?;
-
-    let mut chart = ChartBuilder::on(&right)
-        .margin(10)
-        .caption("standard deviation / |true value|", ("sans-serif", 16))
-        .x_label_area_size(40)
-        .y_label_area_size(10)
-        .margin_right(24)
-        .build_cartesian_2d((0.01..30.0).log_scale(), rows.into_segmented())?;
-    chart
-        .configure_mesh()
-        .light_line_style(TRANSPARENT)
-        .bold_line_style(BLACK.mix(0.08))
-        .y_labels(B)
-        .y_label_formatter(&|_| String::new())
-        .x_label_formatter(&|x| format!("{x}%"))
-        .x_desc("relative standard deviation (log scale)")
-        .label_style(label_font())
-        .axis_desc_style(label_font())
-        .draw()?;
-    let pct = |i: usize| 100.0 * est.std[i] / truth[i].abs();
-    chart.draw_series((0..B).map(|i| {
-        PathElement::new(
-            vec![(0.01, row(i)), (pct(i), row(i))],
-            BAND.mix(0.7).stroke_width(12),
-        )
-    }))?;
-    chart.draw_series((0..B).map(|i| {
-        let p = pct(i);
-        let text = if p < 0.1 {
-            format!("{p:.3}%")
-        } else {
-            format!("{p:.2}%")
-        };
-        EmptyElement::at((p, row(i)))
-            + Text::new(
-                text,
-                (6, 0),
-                label_font().pos(Pos::new(HPos::Left, VPos::Center)),
-            )
-    }))?;
-    root.present()?;
-    Ok(())
-}
-
 /// Prints the table of base parameters and returns the largest error in standard deviations.
 fn print_estimate(truth: &SVector<f64, B>, est: &Estimate) -> f64 {
     let names = <Arm as Identification<3, P, B>>::BASE_PARAMETERS;
@@ -748,10 +522,10 @@ fn main() -> Result<(), Box<dyn Error>> {
 
     println!();
     let torques = out.path("identify-torques.svg");
-    draw_torques(&torques, &check, &predicted, &errors)?;
+    pictures::draw_torques(&torques, &check, &predicted, &errors)?;
     out.wrote(&torques);
     let parameters = out.path("identify-parameters.svg");
-    draw_parameters(&parameters, &robot.base_parameters(), &est)?;
+    pictures::draw_parameters(&parameters, &robot.base_parameters(), &est)?;
     out.wrote(&parameters);
     Ok(())
 }

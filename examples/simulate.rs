@@ -1,14 +1,14 @@
 //! Simulation and control with `planar_arm::sim`, and pictures of it:
 //!
 //! 1. the energy of the paper's two rods swinging freely for 100 s under each integrator, with
-//!    what each step costs (`docs/sim-energy.svg`);
-//! 2. a three-link arm carrying 1 kg that its controller's model does not know about, through
+//!    what each step costs (`sim-energy.svg`);
+//! 2. a three-link arm carrying 0.5 kg that its controller's model does not know about, through
 //!    via-points: dead reckoning alone (the model's inverse dynamics), computed torque (the
 //!    same plus PD feedback), PD with the model's gravity, and computed torque with the exact
-//!    model (`docs/sim-tracking.svg`: joint angles and tracking error against time);
+//!    model (`sim-tracking.svg`: joint angles and tracking error against time);
 //! 3. the same arm moving its tip along a straight line (inverse kinematics), drawn as a strobe
-//!    picture (`docs/sim-strobe.svg`) and, with the free rods beside it, as an animated SVG
-//!    (`docs/sim-animated.svg`, SMIL `<animateTransform>` on nested links);
+//!    picture (`sim-strobe.svg`) and, with the free rods beside it, as an animated SVG
+//!    (`sim-animated.svg`, SMIL `<animateTransform>` on nested links);
 //! 4. the step size a six-link arm with a light last link needs, free and under PD: printed.
 //!
 //! The pictures go to `target/pictures/`, to `DIR` with `--out DIR`, or with `--docs` to
@@ -18,25 +18,29 @@
 //! cargo run --release --example simulate [-- --out DIR | -- --docs]
 //! ```
 
+#[path = "simulate/animation.rs"]
+mod animation;
 #[path = "support/num.rs"]
 mod num;
 #[path = "support/out.rs"]
 mod out;
+#[path = "simulate/pictures.rs"]
+mod pictures;
+#[path = "support/plot.rs"]
+mod plot;
 
 use std::error::Error;
 use std::f64::consts::PI;
-use std::fmt::Write as _;
-use std::path::Path;
 use std::time::Instant;
 
 use planar_arm::nalgebra::{SVector, Vector3};
 use planar_arm::prelude::*;
 use planar_arm::sim::{
-    fastest_rate, from_fn, ComputedTorque, Integrator, PdGravity, Rk4, SemiImplicitEuler, SimError,
-    Simulator, State, TipLine, Trajectory, Variational4, VariationalMidpoint, ViaPoints,
+    fastest_rate, from_fn, ComputedTorque, Controller, Integrator, PdGravity, Rk4,
+    SemiImplicitEuler, SimError, Simulator, State, TipLine, Trajectory, Variational4,
+    VariationalMidpoint, ViaPoints,
 };
-use plotters::coord::Shift;
-use plotters::prelude::*;
+use plotters::style::RGBColor;
 
 use num::{fixed, sig};
 use out::Out;
@@ -294,72 +298,8 @@ fn energy_section(out: &Out) -> Result<(), Box<dyn Error>> {
     };
     println!("(the swing's energy above hanging still: {e_scale:.3} J)");
     let path = out.path("sim-energy.svg");
-    draw_energy(&path, &curves, e_scale)?;
+    pictures::draw_energy(&path, &curves, e_scale)?;
     out.wrote(&path);
-    Ok(())
-}
-
-fn font(size: u32) -> TextStyle<'static> {
-    ("sans-serif", size).into_font().into()
-}
-
-type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
-
-fn swatch(style: ShapeStyle) -> impl Fn((i32, i32)) -> PathElement<(i32, i32)> {
-    move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style)
-}
-
-/// A tick label without "-0" and without rounding noise.
-fn tick(v: f64) -> String {
-    format!("{}", (v * 1e6).round() / 1e6 + 0.0)
-}
-
-fn draw_energy(path: &Path, curves: &[EnergyCurve], e_scale: f64) -> Result<(), Box<dyn Error>> {
-    let root = SVGBackend::new(path, (1100, 650)).into_drawing_area();
-    root.fill(&WHITE)?;
-    let (head, body) = root.split_vertically(64);
-    head.draw(&Text::new(
-        "Energy of two 1 m, 1 kg rods swinging freely for 100 s, by integrator",
-        (16, 10),
-        font(20),
-    ))?;
-    head.draw(&Text::new(
-        format!("|E(t) - E(0)|, log scale, sampled every 0.1 s; the swing holds {e_scale:.2} J above hanging still. RK4 drifts, the variational ones do not; at equal cost RK4 is more accurate."),
-        (16, 38),
-        font(14),
-    ))?;
-    let mut chart = ChartBuilder::on(&body)
-        .margin(12)
-        .margin_right(24)
-        .x_label_area_size(40)
-        .y_label_area_size(70)
-        .build_cartesian_2d(0.0..100.0, (1e-14..1e4).log_scale())?;
-    chart
-        .configure_mesh()
-        .light_line_style(TRANSPARENT)
-        .bold_line_style(BLACK.mix(0.08))
-        .x_desc("time (s)")
-        .y_desc("|E - E0| (J)")
-        .y_label_formatter(&|v| format!("{v:.0e}"))
-        .label_style(font(13))
-        .axis_desc_style(font(13))
-        .draw()?;
-    for c in curves {
-        // Log scale: a sample that happens to be exact would be off the chart.
-        let points: Vec<(f64, f64)> = c.points.iter().map(|&(t, e)| (t, e.max(1e-14))).collect();
-        chart
-            .draw_series(LineSeries::new(points, c.color.stroke_width(2)))?
-            .label(c.name.clone())
-            .legend(swatch(c.color.stroke_width(3)));
-    }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.9))
-        .border_style(BLACK.mix(0.3))
-        .label_font(font(13))
-        .draw()?;
-    root.present()?;
     Ok(())
 }
 
@@ -383,8 +323,27 @@ fn via_points() -> Result<ViaPoints<3, 5>, SimError> {
 /// A controller's run, sampled every control period.
 struct Tracked {
     name: &'static str,
+    /// The name in a title.
+    short: &'static str,
     states: Vec<State<3>>,
     color: RGBColor,
+}
+
+/// The loaded arm from `q0` at rest for `duration` under `controller`, every control period.
+fn track<C: Controller<3>>(
+    q0: V3,
+    duration: f64,
+    controller: C,
+) -> Result<Vec<State<3>>, SimError> {
+    let sim = Simulator::new(Rk4, 1e-3)?.with_control_period(5e-3)?;
+    sim.run(
+        &Picker::holding(LOAD),
+        q0,
+        V3::zeros(),
+        duration,
+        controller,
+    )?
+    .into_vec()
 }
 
 fn tracking_section(out: &Out) -> Result<(), Box<dyn Error>> {
@@ -394,64 +353,48 @@ fn tracking_section(out: &Out) -> Result<(), Box<dyn Error>> {
     let real = Picker::holding(LOAD);
     let model = Picker::holding(0.0);
     let path = via_points()?;
-    let sim = Simulator::new(Rk4, 1e-3)?.with_control_period(5e-3)?;
     let (q0, duration) = (path.sample(0.0).q, 5.0);
     let omega = 20.0;
     let kp = V3::new(300.0, 150.0, 20.0);
     let kd = V3::new(30.0, 12.0, 1.5);
     let mut summary = Vec::new();
+    // Colours that the joints in the picture's angle panel do not use.
     let runs = [
         Tracked {
             name: "dead reckoning (the model's inverse dynamics alone)",
-            states: sim
-                .run(
-                    &real,
-                    q0,
-                    V3::zeros(),
-                    duration,
-                    ComputedTorque::critically_damped(&model, path, 0.0),
-                )?
-                .into_vec()?,
-            color: RGBColor(200, 80, 40),
+            short: "dead reckoning",
+            states: track(
+                q0,
+                duration,
+                ComputedTorque::critically_damped(&model, path, 0.0),
+            )?,
+            color: RGBColor(213, 94, 0),
         },
         Tracked {
             name: "PD with the model's gravity",
-            states: sim
-                .run(
-                    &real,
-                    q0,
-                    V3::zeros(),
-                    duration,
-                    PdGravity::new(&model, path, kp, kd),
-                )?
-                .into_vec()?,
-            color: RGBColor(150, 110, 190),
+            short: "PD with the model's gravity",
+            states: track(q0, duration, PdGravity::new(&model, path, kp, kd))?,
+            color: RGBColor(110, 70, 170),
         },
         Tracked {
             name: "computed torque, wrong model (dead reckoning + PD, 20 rad/s)",
-            states: sim
-                .run(
-                    &real,
-                    q0,
-                    V3::zeros(),
-                    duration,
-                    ComputedTorque::critically_damped(&model, path, omega),
-                )?
-                .into_vec()?,
-            color: RGBColor(70, 110, 190),
+            short: "computed torque with the wrong model",
+            states: track(
+                q0,
+                duration,
+                ComputedTorque::critically_damped(&model, path, omega),
+            )?,
+            color: RGBColor(30, 70, 160),
         },
         Tracked {
             name: "computed torque, exact model",
-            states: sim
-                .run(
-                    &real,
-                    q0,
-                    V3::zeros(),
-                    duration,
-                    ComputedTorque::critically_damped(&real, path, omega),
-                )?
-                .into_vec()?,
-            color: RGBColor(40, 150, 90),
+            short: "computed torque with the exact model",
+            states: track(
+                q0,
+                duration,
+                ComputedTorque::critically_damped(&real, path, omega),
+            )?,
+            color: RGBColor(20, 140, 60),
         },
     ];
     println!("RK4 at 1 ms, torques held for 5 ms; largest |q* - q| (rad) over 0-4 s (moving) and 4-5 s (holding):");
@@ -479,173 +422,13 @@ fn tracking_section(out: &Out) -> Result<(), Box<dyn Error>> {
         real.mass_matrix(&q0)[(2, 2)]
     );
     let file = out.path("sim-tracking.svg");
-    draw_tracking(&file, &path, &runs, &summary)?;
+    pictures::draw_tracking(&file, &path, &runs, &summary)?;
     out.wrote(&file);
-    Ok(())
-}
-
-fn draw_tracking(
-    path: &Path,
-    reference: &ViaPoints<3, 5>,
-    runs: &[Tracked],
-    worst: &[f64],
-) -> Result<(), Box<dyn Error>> {
-    let root = SVGBackend::new(path, (1100, 900)).into_drawing_area();
-    root.fill(&WHITE)?;
-    let (head, body) = root.split_vertically(64);
-    head.draw(&Text::new(
-        "Three links carrying 0.5 kg that the controller's model does not know",
-        (16, 10),
-        font(20),
-    ))?;
-    head.draw(&Text::new(
-        format!(
-            "five via-points in 4 s, then holding; RK4 at 1 ms, torques held for 5 ms. Largest errors: {}",
-            runs.iter()
-                .zip(worst)
-                .map(|(r, w)| format!("{} {w:.1e}", r.name.split(" (").next().unwrap_or(r.name)))
-                .collect::<Vec<_>>()
-                .join(", ")
-        ),
-        (16, 38),
-        font(13),
-    ))?;
-    let (top, bottom) = body.split_vertically(430);
-    angles_panel(&top, reference, &runs[2])?;
-    error_panel(&bottom, reference, runs)?;
-    root.present()?;
-    Ok(())
-}
-
-const JOINTS: [RGBColor; 3] = [
-    RGBColor(70, 110, 190),
-    RGBColor(200, 80, 40),
-    RGBColor(40, 150, 90),
-];
-
-fn angles_panel(
-    area: &Area<'_>,
-    reference: &ViaPoints<3, 5>,
-    run: &Tracked,
-) -> Result<(), Box<dyn Error>> {
-    let end = run.states.last().map_or(1.0, |s| s.t);
-    let mut chart = ChartBuilder::on(area)
-        .margin(10)
-        .margin_right(24)
-        .caption(
-            format!("joint angles: desired (dashed) and under {}", run.name),
-            font(15),
-        )
-        .x_label_area_size(36)
-        .y_label_area_size(64)
-        .build_cartesian_2d(0.0..end, -1.6..1.6)?;
-    chart
-        .configure_mesh()
-        .light_line_style(TRANSPARENT)
-        .bold_line_style(BLACK.mix(0.08))
-        .x_desc("time (s)")
-        .y_desc("angle (rad)")
-        .y_label_formatter(&|v| tick(*v))
-        .label_style(font(13))
-        .axis_desc_style(font(13))
-        .draw()?;
-    for (j, color) in JOINTS.iter().enumerate() {
-        let want: Vec<(f64, f64)> = run
-            .states
-            .iter()
-            .map(|s| (s.t, reference.sample(s.t).q[j]))
-            .collect();
-        chart.draw_series(DashedLineSeries::new(
-            want,
-            7,
-            5,
-            color.mix(0.7).stroke_width(2),
-        ))?;
-        chart
-            .draw_series(LineSeries::new(
-                run.states.iter().map(|s| (s.t, s.q[j])),
-                color.stroke_width(2),
-            ))?
-            .label(format!("q{}", j + 1))
-            .legend(swatch(color.stroke_width(2)));
-    }
-    chart.draw_series(
-        [1.0, 2.0, 3.0, 4.0]
-            .iter()
-            .map(|&t| PathElement::new(vec![(t, -1.6), (t, 1.6)], BLACK.mix(0.15))),
-    )?;
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .background_style(WHITE.mix(0.9))
-        .border_style(BLACK.mix(0.3))
-        .label_font(font(13))
-        .draw()?;
-    Ok(())
-}
-
-fn error_panel(
-    area: &Area<'_>,
-    reference: &ViaPoints<3, 5>,
-    runs: &[Tracked],
-) -> Result<(), Box<dyn Error>> {
-    let end = runs[0].states.last().map_or(1.0, |s| s.t);
-    let mut chart = ChartBuilder::on(area)
-        .margin(10)
-        .margin_right(24)
-        .caption(
-            "tracking error: the largest |q* - q| over the three joints (log scale)",
-            font(15),
-        )
-        .x_label_area_size(40)
-        .y_label_area_size(64)
-        .build_cartesian_2d(0.0..end, (1e-8..10.0).log_scale())?;
-    chart
-        .configure_mesh()
-        .light_line_style(TRANSPARENT)
-        .bold_line_style(BLACK.mix(0.08))
-        .x_desc("time (s)")
-        .y_desc("error (rad)")
-        .y_label_formatter(&|v| format!("{v:.0e}"))
-        .label_style(font(13))
-        .axis_desc_style(font(13))
-        .draw()?;
-    for r in runs {
-        let points: Vec<(f64, f64)> = r
-            .states
-            .iter()
-            .map(|s| {
-                (
-                    s.t,
-                    (s.q - reference.sample(s.t).q).amax().clamp(1e-8, 10.0),
-                )
-            })
-            .collect();
-        chart
-            .draw_series(LineSeries::new(points, r.color.stroke_width(2)))?
-            .label(r.name)
-            .legend(swatch(r.color.stroke_width(3)));
-    }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::LowerRight)
-        .background_style(WHITE.mix(0.9))
-        .border_style(BLACK.mix(0.3))
-        .label_font(font(13))
-        .draw()?;
     Ok(())
 }
 
 // ---------------------------------------------------------------------------------------------
 // 3. A straight tip line: strobe and animation
-
-/// Base, joints and tip of an arm.
-fn outline<A: PlanarArm<N>, const N: usize>(arm: &A, q: &SVector<f64, N>) -> Vec<(f64, f64)> {
-    let mut points: Vec<(f64, f64)> = arm.joint_positions(q).iter().map(|p| (p.x, p.y)).collect();
-    let tip = arm.tip_pose(q).translation.vector;
-    points.push((tip.x, tip.y));
-    points
-}
 
 fn line_section(out: &Out) -> Result<(), Box<dyn Error>> {
     println!("\n== 3. the tip along a straight line, by inverse kinematics, tracked by computed torque ==");
@@ -654,16 +437,11 @@ fn line_section(out: &Out) -> Result<(), Box<dyn Error>> {
     let q0 = V3::new(-0.9, 1.9, 0.6);
     let to = Point2::new(0.75, 0.45);
     let line = TipLine::new(&model, q0, to, 2.0)?;
-    let sim = Simulator::new(Rk4, 1e-3)?.with_control_period(5e-3)?;
-    let states = sim
-        .run(
-            &real,
-            q0,
-            V3::zeros(),
-            2.5,
-            ComputedTorque::critically_damped(&model, &line, 20.0),
-        )?
-        .into_vec()?;
+    let states = track(
+        q0,
+        2.5,
+        ComputedTorque::critically_damped(&model, &line, 20.0),
+    )?;
     let from = real.tip_pose(&q0).translation.vector;
     let dir = (to.coords - from).normalize();
     let off = states
@@ -686,7 +464,7 @@ fn line_section(out: &Out) -> Result<(), Box<dyn Error>> {
         sig(last, 2)
     );
     let file = out.path("sim-strobe.svg");
-    draw_strobe(&file, &real, &states, (from, to.coords))?;
+    pictures::draw_strobe(&file, &real, &states, (from, to.coords))?;
     out.wrote(&file);
 
     // The free rods beside it, for the animation: 10 s of a chaotic double pendulum.
@@ -696,203 +474,13 @@ fn line_section(out: &Out) -> Result<(), Box<dyn Error>> {
         .with_control_period(0.04)?
         .run(&rods, V2::new(0.3, 1.0), V2::zeros(), 10.0, free)?
         .into_vec()?;
-    let picker: Vec<State<3>> = states.iter().step_by(8).copied().collect();
-    let svg = animate(&real, &picker, &rods, &swing, (from, to.coords));
+    // Every 50 ms, the last at the end of the run: the animation's loop is the run's length.
+    let picker: Vec<State<3>> = states.iter().step_by(10).copied().collect();
+    let svg = animation::animate(&real, &picker, &swing, (from, to.coords));
     let file = out.path("sim-animated.svg");
     std::fs::write(&file, svg)?;
     out.wrote(&file);
     Ok(())
-}
-
-fn draw_strobe(
-    path: &Path,
-    arm: &Picker,
-    states: &[State<3>],
-    line: (V2, V2),
-) -> Result<(), Box<dyn Error>> {
-    let root = SVGBackend::new(path, (900, 760)).into_drawing_area();
-    root.fill(&WHITE)?;
-    let (head, body) = root.split_vertically(64);
-    head.draw(&Text::new(
-        "The tip along a straight line: a strobe picture every 0.25 s",
-        (16, 10),
-        font(20),
-    ))?;
-    head.draw(&Text::new(
-        "three links holding 0.5 kg, inverse kinematics for the angles, computed torque (20 rad/s, exact model, 5 ms period)",
-        (16, 38),
-        font(14),
-    ))?;
-    // Equal units: 1.57 m wide, 1.2 m high in about 810 x 620 pixels.
-    let mut chart = ChartBuilder::on(&body)
-        .margin(12)
-        .margin_right(24)
-        .x_label_area_size(36)
-        .y_label_area_size(56)
-        .build_cartesian_2d(-0.45..1.12, -0.45..0.75)?;
-    chart
-        .configure_mesh()
-        .light_line_style(TRANSPARENT)
-        .bold_line_style(BLACK.mix(0.08))
-        .x_desc("x (m)")
-        .y_desc("y (m)")
-        .x_label_formatter(&|v| tick(*v))
-        .y_label_formatter(&|v| tick(*v))
-        .label_style(font(13))
-        .axis_desc_style(font(13))
-        .draw()?;
-    chart.draw_series(std::iter::once(Rectangle::new(
-        [(-0.05, -0.03), (0.05, 0.0)],
-        BLACK.mix(0.3).filled(),
-    )))?;
-    let (a, b) = line;
-    chart
-        .draw_series(DashedLineSeries::new(
-            vec![(a.x, a.y), (b.x, b.y)],
-            8,
-            6,
-            BLACK.mix(0.5).stroke_width(2),
-        ))?
-        .label("the desired line")
-        .legend(swatch(BLACK.mix(0.5).stroke_width(2)));
-    let frames: Vec<&State<3>> = states
-        .iter()
-        .filter(|s| (s.t * 4.0 - (s.t * 4.0).round()).abs() < 1e-6)
-        .collect();
-    let n = frames.len().max(2) - 1;
-    for (i, s) in frames.iter().enumerate() {
-        let f = i as f64 / n as f64;
-        let mix = |x: u8, y: u8| (f64::from(x) + f * (f64::from(y) - f64::from(x))).round() as u8;
-        let color = RGBColor(mix(235, 35), mix(140, 40), mix(60, 60));
-        let points = outline(arm, &s.q);
-        let series = chart.draw_series(LineSeries::new(
-            points.clone(),
-            color.mix(0.85).stroke_width(4),
-        ))?;
-        if i == 0 || i == n {
-            series
-                .label(format!("the arm at t = {} s", s.t))
-                .legend(swatch(color.stroke_width(4)));
-        }
-        chart.draw_series(points.iter().map(|&p| Circle::new(p, 4, color.filled())))?;
-    }
-    let tip: Vec<(f64, f64)> = states
-        .iter()
-        .map(|s| {
-            let p = arm.tip_pose(&s.q).translation.vector;
-            (p.x, p.y)
-        })
-        .collect();
-    chart
-        .draw_series(LineSeries::new(tip, RGBColor(40, 150, 90).stroke_width(2)))?
-        .label("the tip's path")
-        .legend(swatch(RGBColor(40, 150, 90).stroke_width(2)));
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::LowerRight)
-        .background_style(WHITE.mix(0.9))
-        .border_style(BLACK.mix(0.3))
-        .label_font(font(13))
-        .draw()?;
-    root.present()?;
-    Ok(())
-}
-
-/// One arm as nested SVG groups, each link's rotation animated by SMIL: the angles are
-/// relative, so each link turns inside the frame of the one before it.
-fn animated_arm<const N: usize>(
-    svg: &mut String,
-    lengths: [f64; N],
-    frames: &[SVector<f64, N>],
-    seconds: f64,
-    color: &str,
-    metres_per_pixel: f64,
-) {
-    let (stroke, joint) = (6.0 * metres_per_pixel, 5.0 * metres_per_pixel);
-    let colors = ["#466ebe", "#c85028", "#28965a", "#8c6ebe"];
-    for (j, l) in lengths.iter().enumerate() {
-        let values: Vec<String> = frames
-            .iter()
-            .map(|q| format!("{:.2}", q[j].to_degrees()))
-            .collect();
-        let _ = write!(
-            svg,
-            r#"<g><animateTransform attributeName="transform" type="rotate" dur="{seconds}s" repeatCount="indefinite" calcMode="linear" values="{}"/><line x1="0" y1="0" x2="{l}" y2="0" stroke="{}" stroke-width="{stroke:.5}" stroke-linecap="round"/><circle r="{joint:.5}" fill="{color}"/><g transform="translate({l} 0)">"#,
-            values.join(";"),
-            colors[j % colors.len()]
-        );
-    }
-    let _ = write!(svg, r#"<circle r="{:.5}" fill="{color}"/>"#, joint * 1.2);
-    for _ in 0..N {
-        svg.push_str("</g></g>");
-    }
-}
-
-fn animate(
-    picker: &Picker,
-    picker_states: &[State<3>],
-    rods: &Rods,
-    swing: &[State<2>],
-    line: (V2, V2),
-) -> String {
-    let mut svg = String::new();
-    let (w, h) = (1100.0, 560.0);
-    let _ = write!(
-        svg,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="sans-serif">
-<rect width="{w}" height="{h}" fill="white"/>
-<text x="16" y="30" font-size="20">planar_arm::sim, animated (SMIL): each link's angle is an animateTransform inside the link before it</text>
-<text x="16" y="54" font-size="14">left: three links moving the tip along the dashed line (2.5 s, repeating); right: the paper's two rods swinging freely (10 s, repeating)</text>
-"#
-    );
-    let links = picker.links();
-    let lengths = [links[0].length, links[1].length, links[2].length];
-    let frames: Vec<V3> = picker_states.iter().map(|s| s.q).collect();
-    let t_picker = picker_states.last().map_or(1.0, |s| s.t);
-    // Left panel: 1 m = 330 px, base at (150, 330).
-    let (a, b) = line;
-    let _ = write!(
-        svg,
-        r##"<g transform="translate(150 330) scale(330 -330)">
-<rect x="-0.05" y="-0.03" width="0.1" height="0.03" fill="#999"/>
-<line x1="{:.4}" y1="{:.4}" x2="{:.4}" y2="{:.4}" stroke="#777" stroke-width="0.006" stroke-dasharray="0.02 0.015"/>
-"##,
-        a.x, a.y, b.x, b.y
-    );
-    animated_arm(&mut svg, lengths, &frames, t_picker, "#23283c", 1.0 / 330.0);
-    svg.push_str("</g>\n");
-    // Right panel: 1 m = 105 px, base at (820, 300).
-    let frames: Vec<V2> = swing.iter().map(|s| s.q).collect();
-    let t_swing = swing.last().map_or(1.0, |s| s.t);
-    let _ = write!(
-        svg,
-        r##"<g transform="translate(820 300) scale(105 -105)">
-<circle r="2" fill="none" stroke="#ddd" stroke-width="0.01"/>
-<rect x="-0.15" y="-0.06" width="0.3" height="0.06" fill="#999"/>
-"##
-    );
-    animated_arm(
-        &mut svg,
-        [1.0, 1.0],
-        &frames,
-        t_swing,
-        "#23283c",
-        1.0 / 105.0,
-    );
-    svg.push_str("</g>\n");
-    // A progress bar per panel: the frames of a screenshot differ even where an arm is still.
-    for (x, seconds, label) in [
-        (60.0, t_picker, "t mod 2.5 s"),
-        (630.0, t_swing, "t mod 10 s"),
-    ] {
-        let _ = writeln!(
-            svg,
-            r##"<rect x="{x}" y="520" width="380" height="8" fill="#eee"/><rect x="{x}" y="520" width="0" height="8" fill="#466ebe"><animate attributeName="width" from="0" to="380" dur="{seconds}s" repeatCount="indefinite"/></rect><text x="{x}" y="545" font-size="12">{label}</text>"##
-        );
-    }
-    let _ = rods;
-    svg.push_str("</svg>\n");
-    svg
 }
 
 // ---------------------------------------------------------------------------------------------

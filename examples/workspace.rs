@@ -22,8 +22,12 @@
 //! cargo run --release --example workspace [-- --out DIR | -- --docs]
 //! ```
 
+#[path = "support/num.rs"]
+mod num;
 #[path = "support/out.rs"]
 mod out;
+#[path = "support/plot.rs"]
+mod plot;
 
 use std::error::Error;
 
@@ -32,7 +36,9 @@ use planar_arm::prelude::*;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use num::tick;
 use out::Out;
+use plot::{font, side_key, Sample};
 
 /// The paper's two equal links.
 #[derive(PlanarArm, Default)]
@@ -180,7 +186,7 @@ fn square_chart<'a, 'b>(
     title: &str,
     half: f64,
 ) -> Result<Chart<'a, 'b>, Box<dyn Error>> {
-    let (margin, x_labels, y_labels) = (12_u32, 28_u32, 36_u32);
+    let (margin, x_labels, y_labels) = (12_u32, 44_u32, 56_u32);
     let (w, h) = area.dim_in_pixel();
     let caption_height = 34;
     let plot_w = f64::from(w - y_labels - 2 * margin);
@@ -192,7 +198,7 @@ fn square_chart<'a, 'b>(
     };
     let mut chart = ChartBuilder::on(area)
         .margin(margin)
-        .caption(title, ("sans-serif", 17))
+        .caption(title, font(16))
         .x_label_area_size(x_labels)
         .y_label_area_size(y_labels)
         .build_cartesian_2d(-xr..xr, -yr..yr)?;
@@ -202,50 +208,14 @@ fn square_chart<'a, 'b>(
         .bold_line_style(BLACK.mix(0.08))
         .x_labels(7)
         .y_labels(7)
-        .label_style(("sans-serif", 12))
+        .x_desc("x (m)")
+        .y_desc("y (m)")
+        .x_label_formatter(&|v| tick(*v))
+        .y_label_formatter(&|v| tick(*v))
+        .label_style(font(12))
+        .axis_desc_style(font(13))
         .draw()?;
     Ok(chart)
-}
-
-/// An entry of a figure's key.
-enum Key {
-    Patch(RGBAColor),
-    Dot(RGBAColor),
-    Line(RGBAColor, u32),
-    Note,
-}
-
-/// Draws a figure's key (shared by its panels) in its own strip.
-fn draw_key(
-    area: &DrawingArea<SVGBackend<'_>, Shift>,
-    entries: &[(Key, &str)],
-) -> Result<(), Box<dyn Error>> {
-    let font = ("sans-serif", 13).into_font();
-    let x = 8;
-    let mut y = 70;
-    for (key, text) in entries {
-        match key {
-            Key::Patch(c) => {
-                area.draw(&Rectangle::new([(x, y - 6), (x + 18, y + 6)], c.filled()))?
-            }
-            Key::Dot(c) => area.draw(&Circle::new((x + 9, y), 3, c.filled()))?,
-            Key::Line(c, w) => {
-                area.draw(&PathElement::new(
-                    vec![(x, y), (x + 18, y)],
-                    c.stroke_width(*w),
-                ))?;
-            }
-            Key::Note => {}
-        }
-        let indent = if matches!(key, Key::Note) { 0 } else { 26 };
-        area.draw(&Text::new(
-            text.to_string(),
-            (x + indent, y - 7),
-            font.clone(),
-        ))?;
-        y += 24;
-    }
-    Ok(())
 }
 
 fn two_link_panel<A: PlanarArm<2>>(
@@ -257,11 +227,15 @@ fn two_link_panel<A: PlanarArm<2>>(
     let w = arm.workspace();
     let (inner, outer) = (w.inner_radius(), w.outer_radius());
     let shape = if inner == 0.0 {
-        format!("a disk, r <= {outer}")
+        format!("a disk of radius {} m", tick(outer))
     } else {
-        format!("an annulus, {inner:.1} <= r <= {outer:.1}")
+        format!(
+            "an annulus, {} to {} m from the base",
+            tick(inner),
+            tick(outer)
+        )
     };
-    let title = format!("l1 = {l1}, l2 = {l2}: {shape}");
+    let title = format!("links of {} m and {} m: {shape}", tick(l1), tick(l2));
     let mut chart = square_chart(area, &title, 1.1 * outer)?;
     chart.draw_series(std::iter::once(Polygon::new(
         annulus(inner, outer),
@@ -302,7 +276,12 @@ where
     let all = arm.workspace();
     let usable = DexterousWorkspace::of_lengths(l1, l2, l3);
     let outer = all.outer_radius();
-    let title = format!("l = ({l1}, {l2}, {l3}): {case}");
+    let title = format!(
+        "links of {}, {} and {} m: {case}",
+        tick(l1),
+        tick(l2),
+        tick(l3)
+    );
     let mut chart = square_chart(area, &title, 1.06 * outer)?;
 
     // The usable pieces, filled.
@@ -441,101 +420,146 @@ fn on_edge(l1: f64, l2: f64, l3: f64, rho: f64) -> bool {
     (rho + l3 - b).abs() < 1e-2 || ((rho - l3).abs() - a).abs() < 1e-2
 }
 
-fn main() -> Result<(), Box<dyn Error>> {
-    let out = Out::from_args("workspace");
+/// The two-link arms: a disk and an annulus.
+fn draw_two_link(out: &Out) -> Result<(), Box<dyn Error>> {
     let two = out.path("workspace-two-link.svg");
     {
-        let root = SVGBackend::new(&two, (1140, 500)).into_drawing_area();
+        let root = SVGBackend::new(&two, (1160, 520)).into_drawing_area();
         root.fill(&WHITE)?;
         let (plots, key) = root.split_horizontally(900);
         let panels = plots.split_evenly((1, 2));
         let mut rng = Rng(7);
         two_link_panel(&Equal2::default(), &panels[0], &mut rng)?;
         two_link_panel(&Unequal2::default(), &panels[1], &mut rng)?;
-        draw_key(
+        side_key(
             &key,
+            70,
             &[
-                (Key::Patch(REACHABLE.mix(0.3)), "workspace(): reachable"),
-                (Key::Line(REACHABLE.to_rgba(), 2), "|l1 - l2| and l1 + l2"),
-                (Key::Dot(BLACK.mix(0.6)), "tip_pose of random q"),
-                (Key::Line(ARM.to_rgba(), 3), "the arm at q = (0.5, 2)"),
+                (
+                    Sample::Patch(REACHABLE.mix(0.3).filled()),
+                    "where the tip can reach",
+                ),
+                (
+                    Sample::Line(REACHABLE.stroke_width(2)),
+                    "its bounding circles, of radii |l1 - l2| and l1 + l2",
+                ),
+                (
+                    Sample::Dot(BLACK.mix(0.6).filled()),
+                    "the tip in 300 random configurations",
+                ),
+                (
+                    Sample::Line(ARM.stroke_width(3)),
+                    "the arm at q = (0.5, 2) rad",
+                ),
             ],
         )?;
         root.present()?;
     }
     out.wrote(&two);
+    Ok(())
+}
 
+/// The three-link arms' usable regions, in the paper's three cases.
+fn draw_three_link(out: &Out) -> Result<(), Box<dyn Error>> {
     let three = out.path("workspace-three-link.svg");
     {
-        let root = SVGBackend::new(&three, (1480, 460)).into_drawing_area();
+        let root = SVGBackend::new(&three, (1500, 480)).into_drawing_area();
         root.fill(&WHITE)?;
         let (plots, key) = root.split_horizontally(1240);
         let panels = plots.split_evenly((1, 3));
         three_link_panel(&ShortHand::default(), "l3 < |l1 - l2|", &panels[0])?;
         three_link_panel(&LongHand::default(), "l3 > |l1 - l2|", &panels[1])?;
         three_link_panel(&EqualPair::default(), "l1 = l2 = l", &panels[2])?;
-        draw_key(
+        side_key(
             &key,
+            70,
             &[
-                (Key::Line(REACHABLE.to_rgba(), 2), "workspace(): reachable"),
-                (Key::Patch(USABLE.mix(0.45)), "DexterousWorkspace: usable"),
-                (Key::Dot(BLACK.mix(0.6)), "reached with all 72"),
-                (Key::Note, "      orientations (IK)"),
-                (Key::Line(ARM.to_rgba(), 3), "an arm reaching a"),
-                (Key::Note, "      usable point"),
-                (Key::Line(ARM.mix(0.7), 1), "the circle of radius l3"),
-                (Key::Note, "      about that point"),
-                (Key::Note, ""),
-                (Key::Note, "Usable: every orientation"),
-                (Key::Note, "of the last link reaches it."),
-                (Key::Note, "Left: an annulus; middle: an"),
-                (Key::Note, "annulus and a disk; right:"),
-                (Key::Note, "one disk of radius 2l - l3."),
+                (
+                    Sample::Line(REACHABLE.stroke_width(2)),
+                    "bounds of where the tip can reach",
+                ),
+                (
+                    Sample::Patch(USABLE.mix(0.45).filled()),
+                    "usable: reached with the last link at every angle",
+                ),
+                (
+                    Sample::Dot(BLACK.mix(0.6).filled()),
+                    "grid points that inverse kinematics reaches at all 72 angles tried",
+                ),
+                (Sample::Line(ARM.stroke_width(3)), "the arm reaching a usable point"),
+                (
+                    Sample::Line(ARM.mix(0.7).stroke_width(1)),
+                    "where its wrist can be: a circle of radius l3 about that point",
+                ),
+                (
+                    Sample::Note,
+                    "Left: an annulus; middle: an annulus and a disk; right: one disk of radius 2l\u{a0}-\u{a0}l3.",
+                ),
             ],
         )?;
         root.present()?;
     }
     out.wrote(&three);
+    Ok(())
+}
 
+/// The arms with prismatic joints and joint ranges.
+fn draw_prismatic(out: &Out) -> Result<(), Box<dyn Error>> {
     let prismatic = out.path("workspace-prismatic.svg");
     {
-        let root = SVGBackend::new(&prismatic, (1140, 500)).into_drawing_area();
+        let root = SVGBackend::new(&prismatic, (1160, 520)).into_drawing_area();
         root.fill(&WHITE)?;
         let (plots, key) = root.split_horizontally(900);
         let panels = plots.split_evenly((1, 2));
         links_panel(
             &Polar::default(),
-            "polar RP: q1 in -0.5..2, q2 in -1.2..0.3",
+            "a hinge (-0.5 to 2 rad) carrying a slide (-1.2 to 0.3 m)",
             &SVector::<f64, 2>::new(1.2, 0.1),
             &panels[0],
         )?;
         links_panel(
             &SliderArm::default(),
-            "PRR: q1 in -0.35..0.05, l = 0.2, 0.6, 0.3",
+            "a carriage (-0.35 to 0.05 m) carrying links of 0.6 and 0.3 m",
             &SVector::<f64, 3>::new(-0.1, 1.9, -2.2),
             &panels[1],
         )?;
-        draw_key(
+        side_key(
             &key,
+            70,
             &[
-                (Key::Patch(REACHABLE.mix(0.3)), "Workspace::of_links"),
-                (Key::Note, "      .contains (cell centres)"),
-                (Key::Line(REACHABLE.to_rgba(), 1), "inner/outer_radius()"),
-                (Key::Dot(BLACK.mix(0.6)), "sample_tips within"),
-                (Key::Note, "      the ranges"),
-                (Key::Line(ARM.to_rgba(), 3), "Skeleton::of_links at q"),
-                (Key::Line(BLACK.mix(0.45), 6), "the slider's rail"),
-                (Key::Note, ""),
-                (Key::Note, "Left: the slide reaches both"),
-                (Key::Note, "ways through the base, so two"),
-                (Key::Note, "opposite sectors (radii 1 and"),
-                (Key::Note, "0.5). Right: the annulus"),
-                (Key::Note, "0.3..0.9 swept along the"),
-                (Key::Note, "carriage's 0.4 m of travel."),
+                (
+                    Sample::Patch(REACHABLE.mix(0.3).filled()),
+                    "where the tip can reach (grid cells whose centre is inside)",
+                ),
+                (
+                    Sample::Line(REACHABLE.stroke_width(1)),
+                    "its nearest and farthest distance from the base",
+                ),
+                (
+                    Sample::Dot(BLACK.mix(0.6).filled()),
+                    "the tip in random configurations within the joint ranges",
+                ),
+                (Sample::Line(ARM.stroke_width(3)), "the arm in one configuration"),
+                (Sample::Line(BLACK.mix(0.45).stroke_width(6)), "the carriage's rail"),
+                (
+                    Sample::Note,
+                    "Left: the slide passes through the base, so the tip reaches both ways: two opposite sectors, of radii 1 m and 0.5 m.",
+                ),
+                (
+                    Sample::Note,
+                    "Right: the annulus 0.3 to 0.9 m from the carriage, swept along its 0.4 m of travel.",
+                ),
             ],
         )?;
         root.present()?;
     }
     out.wrote(&prismatic);
     Ok(())
+}
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let out = Out::from_args("workspace");
+    draw_two_link(&out)?;
+    draw_three_link(&out)?;
+    draw_prismatic(&out)
 }
