@@ -11,7 +11,10 @@
 //! 4. validation: torques predicted with the identified parameters on a fresh trajectory
 //!    against fresh measurements, whose RMS error should be the noise level;
 //! 5. an unknown payload: the same regressor identifies the loaded arm's base parameters, and
-//!    the change from the empty arm's gives the payload's mass.
+//!    the change from the empty arm's gives the payload's mass;
+//! 6. the same from a simulation: the states of `sim::Run` (angles, rates, applied torque and
+//!    the acceleration it gave) are the regressor's rows as they stand, where accelerations
+//!    differenced from the sampled rates bias the friction parameters.
 //!
 //! It prints the tables and draws `identify-torques.svg` (measured against predicted torques on
 //! the fresh trajectory) and `identify-parameters.svg` (identification errors against their
@@ -30,6 +33,8 @@ mod out;
 mod pictures;
 #[path = "support/plot.rs"]
 mod plot;
+#[path = "identify/simulated.rs"]
+mod simulated;
 
 use std::error::Error;
 use std::f64::consts::TAU;
@@ -71,10 +76,8 @@ struct Arm {
     load_y: f64,
 }
 
-/// Standard parameters: zz, mx, my per link and the payload's (12), four masses, three
-/// armatures, three dampings, three Coulomb frictions.
-const P: usize = 25;
-/// Base parameters: three per link, the armatures of joints 2 and 3 (joint 1's joins zz1),
+/// Base parameters (of 25 standard ones: zz, mx, my per link and the payload's, four masses,
+/// three armatures, three dampings, three Coulomb frictions): three per link, the armatures of joints 2 and 3 (joint 1's joins zz1),
 /// damping and Coulomb friction per joint.
 const B: usize = 17;
 
@@ -324,7 +327,7 @@ fn rms(values: impl Iterator<Item = f64>) -> f64 {
 
 /// Prints the table of base parameters and returns the largest error in standard deviations.
 fn print_estimate(truth: &SVector<f64, B>, est: &Estimate) -> f64 {
-    let names = <Arm as Identification<3, P, B>>::BASE_PARAMETERS;
+    let names = Arm::base_parameter_names();
     let width = names.iter().map(|n| n.len()).max().unwrap_or(0);
     println!(
         "{:width$}  {:>10} {:>10} {:>10} {:>9} {:>7}",
@@ -452,7 +455,7 @@ fn identify_payload(
     let carrying = measure(&loaded, excitation, SAMPLES, rng);
     let est = identify(model, &carrying)?;
     let (before, after) = (robot.base_parameters(), loaded.base_parameters());
-    let names = <Arm as Identification<3, P, B>>::BASE_PARAMETERS;
+    let names = Arm::base_parameter_names();
     let width = names.iter().map(|n| n.len()).max().unwrap_or(0);
     println!(
         "{:width$}  {:>10} {:>10} {:>10} {:>9} {:>12} {:>12}",
@@ -519,6 +522,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let (excitation, est) = identify_empty(&model, &robot, &mut rng)?;
     let (check, predicted, errors) = validate(&model, &robot, &est, &mut rng);
     identify_payload(&model, &robot, &excitation, &est, &mut rng)?;
+    simulated::identify_simulated(&model, &robot, &excitation, &mut rng)?;
 
     println!();
     let torques = out.path("identify-torques.svg");

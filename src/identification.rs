@@ -41,6 +41,9 @@ use crate::PlanarArm;
 /// let arm = Two { upper: Revolute, fore: Revolute, m2: 1.5 };
 /// // zz, mx, my of two links, two masses, one damping: 9 standard, 7 base parameters.
 /// assert_eq!(<Two as Identification<2, 9, 7>>::BASE_PARAMETERS[0], "zz1 + 1/4 m2");
+/// // The same names without the counts.
+/// assert_eq!(Two::base_parameter_names()[0], "zz1 + 1/4 m2");
+/// assert_eq!(Two::parameter_names().len(), 9);
 /// let (q, qd, qdd) = (Vector2::new(0.3, -0.8), Vector2::new(1.0, 0.5), Vector2::new(-2.0, 1.0));
 /// let tau = arm.inverse_dynamics(&q, &qd, &qdd);
 /// assert!((arm.regressor(&q, &qd, &qdd) * arm.standard_parameters() - tau).norm() < 1e-12);
@@ -70,4 +73,22 @@ pub trait Identification<const N: usize, const P: usize, const B: usize>: Planar
     ) -> SMatrix<f64, N, B>;
     /// The base parameters' values now.
     fn base_parameters(&self) -> SVector<f64, B>;
+    /// [`PARAMETERS`](Self::PARAMETERS) without naming `P` and `B`: `Arm::parameter_names()`
+    /// (there is one impl per arm, so the counts are inferred).
+    #[must_use]
+    fn parameter_names() -> &'static [&'static str]
+    where
+        Self: Sized,
+    {
+        &Self::PARAMETERS
+    }
+    /// [`BASE_PARAMETERS`](Self::BASE_PARAMETERS) without naming `P` and `B`:
+    /// `Arm::base_parameter_names()`.
+    #[must_use]
+    fn base_parameter_names() -> &'static [&'static str]
+    where
+        Self: Sized,
+    {
+        &Self::BASE_PARAMETERS
+    }
 }

@@ -13,7 +13,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use crate::num::{fixed, tick};
 use crate::plot::font;
-use crate::{Arm, Estimate, Run, B, P, RATE, SAMPLES, SIGMA, V3};
+use crate::{Arm, Estimate, Run, B, RATE, SAMPLES, SIGMA, V3};
 
 const MEASURED: RGBColor = RGBColor(110, 110, 110);
 const PREDICTED: RGBColor = RGBColor(200, 80, 40);
@@ -248,7 +248,7 @@ fn errors_panel(
     truth: &SVector<f64, B>,
     est: &Estimate,
 ) -> Result<(), Box<dyn Error>> {
-    let names = <Arm as Identification<3, P, B>>::BASE_PARAMETERS;
+    let names = Arm::base_parameter_names();
     let mut chart = ChartBuilder::on(area)
         .margin(10)
         .caption(

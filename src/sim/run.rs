@@ -70,8 +70,13 @@ where
     FnController(f)
 }
 
-/// The arm at one control sample: time, angles, rates, and the torque applied from `t` until
-/// the next sample.
+/// The arm at one control sample: time, angles, rates, the torque applied from `t` until the
+/// next sample, and the acceleration that torque gives at `t`.
+///
+/// `qdd` is the arm's own forward dynamics at `(q, qd, tau)`, so `inverse_dynamics(q, qd, qdd)
+/// == tau` to rounding: a state is a regressor row `Y(q, qd, qdd) theta = tau` as it stands,
+/// which accelerations differenced from sampled rates are not (they average over the control
+/// period and bias what they identify, friction above all).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct State<const N: usize> {
     /// Time, s.
@@ -82,6 +87,8 @@ pub struct State<const N: usize> {
     pub qd: SVector<f64, N>,
     /// The controller's torque at `t`, N m, held for the following control period.
     pub tau: SVector<f64, N>,
+    /// The joint accelerations at `t` under `tau`, rad/s^2 (m/s^2 for a slide).
+    pub qdd: SVector<f64, N>,
 }
 
 /// An integrator with its step and the control period (a whole number of steps).
@@ -272,11 +279,17 @@ where
             self.failed = true;
             return Some(Err(e.at(t)));
         }
+        let qdd = self.arm.forward_dynamics(&self.q, &self.qd, &tau);
+        if let Err(e) = finite(&qdd, "qdd") {
+            self.failed = true;
+            return Some(Err(e.at(t)));
+        }
         let state = State {
             t,
             q: self.q,
             qd: self.qd,
             tau,
+            qdd,
         };
         if self.sample < self.samples {
             for k in 0..self.sim.hold {
