@@ -284,7 +284,7 @@ pub mod prelude {
         ArmError, Frozen, Identification, Joint, Linearize, Link, Model, Payload, PlanarArm,
         Prismatic, Real, Revolute,
     };
-    pub use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2};
+    pub use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2, Vector3};
 }
 
 /// A planar serial arm of `N` links, revolute or prismatic, whose dynamics, kinematics and

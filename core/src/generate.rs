@@ -893,6 +893,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     } = header;
     Ok(quote! {
         #[automatically_derived]
+        #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
         impl #impl_generics ::planar_arm::PlanarArm<#nn> for #ty #where_clause {
             const EXACT: ::planar_arm::exact::Derivation<#nn> = {
                 const #table: &[&#STR] = &[#(#names),*];
@@ -956,6 +957,7 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
     let svt = quote!(::planar_arm::nalgebra::SVector<__T, #nn>);
     quote! {
         #[automatically_derived]
+        #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
         impl #impl_generics ::planar_arm::PlanarArm<#nn> for #ty #where_clause {
             const EXACT: ::planar_arm::exact::Derivation<#nn> = ::planar_arm::exact::Derivation {
                 kinetic_energy: ::planar_arm::__private::terms(b"", &[]),

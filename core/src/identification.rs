@@ -282,6 +282,7 @@ pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenS
     } = header;
     Ok(quote! {
         #[automatically_derived]
+        #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
         impl #impl_generics ::planar_arm::Identification<#nn, #pl, #bl> for #ty #where_clause {
             const PARAMETERS: [&'static #STR; #pl] = [#(#names),*];
             const BASE_PARAMETERS: [&'static #STR; #bl] = [#(#formulas),*];

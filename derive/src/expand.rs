@@ -146,6 +146,7 @@ fn param_accessors(arm: &Arm<'_>, header: &Header) -> TokenStream {
     } = header;
     quote! {
         #[automatically_derived]
+        #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
         #[allow(non_snake_case)]
         impl #impl_generics #ty #where_clause {
             #(#accessors)*
@@ -313,11 +314,13 @@ fn fallback(input: &DeriveInput) -> TokenStream {
             let force = result(quote!(::planar_arm::nalgebra::Vector2<#F64>));
             tokens.extend(quote! {
                 #[automatically_derived]
+                #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
                 impl #impl_generics ::planar_arm::kinematics::ClosedFormIk<2> for #ty #where_clause {
                     type Target = ::planar_arm::nalgebra::Point2<#F64>;
                     fn inverse_kinematics(&self, _: &::planar_arm::nalgebra::Point2<#F64>) -> #ik #unreachable
                 }
                 #[automatically_derived]
+                #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
                 impl #impl_generics ::planar_arm::kinematics::TipForce for #ty #where_clause {
                     fn tip_force(&self, _: &#v, _: &#v) -> #force #unreachable
                 }
@@ -331,11 +334,13 @@ fn fallback(input: &DeriveInput) -> TokenStream {
             let wrench = result(quote!((::planar_arm::nalgebra::Vector2<#F64>, #F64)));
             tokens.extend(quote! {
                 #[automatically_derived]
+                #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
                 impl #impl_generics ::planar_arm::kinematics::ClosedFormIk<3> for #ty #where_clause {
                     type Target = ::planar_arm::nalgebra::Isometry2<#F64>;
                     fn inverse_kinematics(&self, _: &::planar_arm::nalgebra::Isometry2<#F64>) -> #ik #unreachable
                 }
                 #[automatically_derived]
+                #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
                 impl #impl_generics ::planar_arm::kinematics::TipWrench for #ty #where_clause {
                     fn tip_wrench(&self, _: &#v, _: &#v) -> #wrench #unreachable
                 }

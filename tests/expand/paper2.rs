@@ -1,4 +1,5 @@
 #[automatically_derived]
+#[allow(clippy::nursery)]
 impl ::planar_arm::PlanarArm<2> for Paper2 {
     const EXACT: ::planar_arm::exact::Derivation<2> = {
         const __NAMES: &[&::core::primitive::str] = &[];
@@ -594,6 +595,7 @@ Cost: 47 multiplications, 36 additions, 3 divisions, 2 sin_cos pairs.*/
     type __Frozen = ::planar_arm::__private::Block<0>;
 }
 #[automatically_derived]
+#[allow(clippy::nursery)]
 impl ::planar_arm::kinematics::ClosedFormIk<2> for Paper2 {
     type Target = ::planar_arm::nalgebra::Point2<::core::primitive::f64>;
     ///The paper's closed form for two equal links: cos(q2/2) = r / 2l, q1 + q2/2 = atan2(y, x).
@@ -609,6 +611,7 @@ impl ::planar_arm::kinematics::ClosedFormIk<2> for Paper2 {
     }
 }
 #[automatically_derived]
+#[allow(clippy::nursery)]
 impl ::planar_arm::kinematics::TipForce for Paper2 {
     #[inline]
     fn tip_force(

@@ -1,4 +1,5 @@
 #[automatically_derived]
+#[allow(clippy::nursery)]
 impl ::planar_arm::PlanarArm<3> for Paper3 {
     const EXACT: ::planar_arm::exact::Derivation<3> = {
         const __NAMES: &[&::core::primitive::str] = &[];
@@ -947,6 +948,7 @@ Cost: 47 multiplications, 44 additions, 3 divisions, 3 sin_cos pairs.*/
     type __Frozen = ::planar_arm::__private::Block<0>;
 }
 #[automatically_derived]
+#[allow(clippy::nursery)]
 impl ::planar_arm::kinematics::ClosedFormIk<3> for Paper3 {
     type Target = ::planar_arm::nalgebra::Isometry2<::core::primitive::f64>;
     /// Through the wrist point, as in the paper: the two-link solution for
@@ -963,6 +965,7 @@ impl ::planar_arm::kinematics::ClosedFormIk<3> for Paper3 {
     }
 }
 #[automatically_derived]
+#[allow(clippy::nursery)]
 impl ::planar_arm::kinematics::TipWrench for Paper3 {
     #[inline]
     fn tip_wrench(

@@ -1,4 +1,5 @@
 #[automatically_derived]
+#[allow(clippy::nursery)]
 impl ::planar_arm::PlanarArm<2> for Polar {
     const EXACT: ::planar_arm::exact::Derivation<2> = {
         const __NAMES: &[&::core::primitive::str] = &[];
@@ -546,6 +547,7 @@ Cost: 36 multiplications, 18 additions, 2 divisions, 1 sin_cos pairs.*/
     type __Frozen = ::planar_arm::__private::Block<0>;
 }
 #[automatically_derived]
+#[allow(clippy::nursery)]
 impl ::planar_arm::kinematics::ClosedFormIk<2> for Polar {
     type Target = ::planar_arm::nalgebra::Point2<::core::primitive::f64>;
     ///The polar arm: q1 = atan2(y, x) and the slide r - l1 - l2, or the opposite direction with the slide -r - l1 - l2; the branches within the ranges (see `kinematics::ik_rp`).
@@ -567,6 +569,7 @@ impl ::planar_arm::kinematics::ClosedFormIk<2> for Polar {
     }
 }
 #[automatically_derived]
+#[allow(clippy::nursery)]
 impl ::planar_arm::kinematics::TipForce for Polar {
     /// By the generated Jacobian: `J^T F = tau`, a prismatic joint's entry of
     /// `tau` a force along it.
