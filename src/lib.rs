@@ -364,9 +364,12 @@ pub trait PlanarArm<const N: usize> {
     ) -> SVector<T, N>;
     /// The joint accelerations qdd that solve M qdd = tau - c - g - f.
     ///
-    /// With one or two joints in closed form (Cramer's rule) on M, c and g as
+    /// With one joint, or two whose mass matrix has no run-time parameter, in closed form
+    /// (Cramer's rule, on the exact determinant) on M, c and g as
     /// [`mass_matrix`](Self::mass_matrix), [`coriolis`](Self::coriolis) and
-    /// [`gravity`](Self::gravity) return them; from three joints M and h = c + g + f as
+    /// [`gravity`](Self::gravity) return them; otherwise (from three joints, and two with
+    /// parameters in M, whose determinant, a product of two of them, could overflow) M and
+    /// h = c + g + f as
     /// [`mass_matrix_and_bias`](Self::mass_matrix_and_bias) returns them, solved by an
     /// `L D L^T` factorisation whose pivots are floored at 2^-52 times a bound on `M_ii`, so an
     /// ill-conditioned M gives finite accelerations. The method's docs on your arm give its

@@ -518,3 +518,40 @@ fn arm_error_is_a_std_error() {
     });
     assert!(!boxed.to_string().is_empty());
 }
+
+/// Two links whose masses are read at run time.
+#[derive(PlanarArm)]
+#[arm(gravity = 9.81)]
+struct Heavy2 {
+    #[arm(length = 1, mass = self.m1)]
+    a: Revolute,
+    #[arm(length = 0.5, mass = self.m2)]
+    b: Revolute,
+    m1: f64,
+    m2: f64,
+}
+
+#[test]
+fn enormous_masses_keep_two_link_forward_dynamics_finite() {
+    // Cramer's determinant of a two-link arm is a product of two masses: 1e154 squared
+    // overflowed to inf, and the accelerations to NaN. The solve works within M's own range.
+    for m in [1.0, 1e100, 1e154, 1e160, 1e300] {
+        let arm = Heavy2 {
+            a: Revolute,
+            b: Revolute,
+            m1: m,
+            m2: 0.5 * m,
+        };
+        let (q, qd) = (Vector2::new(0.3, 1.1), Vector2::new(0.2, -0.4));
+        let tau = Vector2::new(2.0, -1.0) * m;
+        let qdd = arm.forward_dynamics(&q, &qd, &tau);
+        assert!(qdd.iter().all(|x| x.is_finite()), "m = {m}: {qdd}");
+        let back = arm.inverse_dynamics(&q, &qd, &qdd);
+        assert!(
+            (back - tau).amax() <= 1e-12 * tau.amax(),
+            "m = {m}: {back} vs {tau}"
+        );
+        let frozen = arm.freeze().forward_dynamics(&q, &qd, &tau);
+        assert!((frozen - qdd).amax() <= 1e-12 * qdd.amax(), "m = {m}");
+    }
+}

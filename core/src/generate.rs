@@ -621,9 +621,12 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
         finish: Box::new(vector),
     });
     // From three joints `forward_dynamics` calls `mass_matrix_and_bias` and the run-time
-    // crate's fixed-size solve (see `solved_forward_dynamics`); one and two joints keep their
-    // closed forms.
-    if n < 3 {
+    // crate's fixed-size solve (see `solved_forward_dynamics`); one joint, and two whose mass
+    // matrix holds no run-time parameter, keep their closed forms. With parameters, Cramer's
+    // exact determinant is a product of two of them: masses of 1e154 overflow it, where the
+    // solve's pivots stay in M's own range.
+    let solved = n >= 3 || (n == 2 && !d.mass_matrix_method().program.params().is_empty());
+    if !solved {
         let fd_doc = match n {
             1 => "qdd = (tau - c - g - f) / M11.",
             _ => "qdd = M^-1 (tau - c - g - f) in closed form (Cramer's rule, det = M11 M22 - M12^2 > 0).",
@@ -823,7 +826,7 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     }
     fns.extend(ke_fn);
     let slots = frozen.as_ref().map_or(0, |fz| fz.block.outputs.len());
-    if n >= 3 {
+    if solved {
         let mh = specs
             .iter()
             .find(|f| f.name == "mass_matrix_and_bias")
