@@ -80,7 +80,7 @@ fn section(title: &str) {
 fn print_dynamics(n: usize) -> Dynamics {
     let d = Dynamics::derive(&ArmSpec::paper(n));
     println!("Lagrangian, in the paper's units (L = 1/2 m l^2 L'):");
-    println!("  L' = {}", paper_units(&d.lagrangian));
+    println!("  L' = {}", paper_units(&d.lagrangian()));
     println!("Mass (sensitivity) matrix, SI with m = l = 1:");
     for i in 0..n {
         for j in i..n {
@@ -133,7 +133,7 @@ fn main() {
     kinematics_and_statics();
 
     section("Errata: printed in the paper vs derived here");
-    let l3 = paper_units(&d3.lagrangian);
+    let l3 = paper_units(&d3.lagrangian());
     let mut link3 = ArmSpec::paper(3);
     for l in &mut link3.links[..2] {
         l.mass = int(0);

@@ -107,13 +107,14 @@ impl<C: Emit> Derived<C> {
         let n = self.arm.links.len();
         let mut p = Program::new();
         let mut outputs = Vec::with_capacity(2 * n * n);
-        for (i, tau) in self.dynamics.torques.iter().enumerate() {
+        let torques = self.dynamics.torques();
+        for (i, tau) in torques.iter().enumerate() {
             for j in 0..n {
                 let id = p.expr(&tau.diff_q(j));
                 outputs.push((format!("dtau{}_dq{}", i + 1, j + 1), id));
             }
         }
-        for (i, tau) in self.dynamics.torques.iter().enumerate() {
+        for (i, tau) in torques.iter().enumerate() {
             for j in 0..n {
                 let mut id = p.expr(&tau.diff_var(Var::Qd(j)));
                 if i == j {

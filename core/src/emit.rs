@@ -578,19 +578,24 @@ pub fn coefficient_tokens<C: Emit>(c: &C) -> Result<TokenStream, EmitError> {
     Ok(quote!({ #(#statements)* #out }))
 }
 
+/// A method's doc comment when its formulas, of `terms` terms, are past [`DOC_TERMS`]: formulas
+/// this long are not read in rustdoc, and formatting them costs every user compile time.
+#[must_use]
+pub fn long_formula_doc(title: &str, terms: usize) -> String {
+    format!(
+        "{title}\n\nThe exact formulas have {terms} terms, more than the {DOC_TERMS} shown \
+         in the documentation; `PlanarArm::EXACT` holds M, c, g, T and V exactly \
+         (each entry prints with `Display`), and `planar_arm::symbolic` (feature \
+         `symbolic`) derives them."
+    )
+}
+
 /// Human-readable formulas for a method's doc comment.
 #[must_use]
 pub fn formula_doc<C: Emit>(title: &str, rows: &[(String, &Expr<C>)]) -> String {
     let terms: usize = rows.iter().map(|(_, e)| e.len()).sum();
     if terms > DOC_TERMS {
-        // Formulas this long are not read in rustdoc, and formatting them costs every user
-        // compile time (see `DOC_TERMS`).
-        return format!(
-            "{title}\n\nThe exact formulas have {terms} terms, more than the {DOC_TERMS} shown \
-             in the documentation; `PlanarArm::EXACT` holds M, c, g, T and V exactly \
-             (each entry prints with `Display`), and `planar_arm::symbolic` (feature \
-             `symbolic`) derives them."
-        );
+        return long_formula_doc(title, terms);
     }
     let mut s = format!("{title}\n\n```text\n");
     for (name, e) in rows {

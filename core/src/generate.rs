@@ -611,11 +611,17 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
         generic: true,
         params: vec![q, qd, qdd],
         ret: svec.clone(),
-        doc: formula_doc(
-            "Lagrange's equation, tau_i = d/dt dL/dqd_i - dL/dq_i, expanded, plus the joint \
-                 friction f(qd) (see `friction`).",
-            &rows_doc("tau", &dy.torques),
-        ),
+        doc: {
+            let title = "Lagrange's equation, tau_i = d/dt dL/dqd_i - dL/dq_i, expanded, plus the \
+                 joint friction f(qd) (see `friction`).";
+            // Built only if it will be printed: a long arm's torques count millions of terms.
+            match dy.torque_terms(|_| 1) {
+                terms if terms <= crate::emit::DOC_TERMS => {
+                    formula_doc(title, &rows_doc("tau", &dy.torques()))
+                }
+                terms => crate::emit::long_formula_doc(title, terms),
+            }
+        },
         method: d.inverse_dynamics_method(),
         touch: TokenStream::new(),
         finish: Box::new(vector),

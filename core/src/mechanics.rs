@@ -160,11 +160,6 @@ pub struct Dynamics<C = Rational> {
     pub kinetic_energy: Expr<C>,
     /// Potential energy V(q), zero at y = 0.
     pub potential_energy: Expr<C>,
-    /// The Lagrangian L = T - V.
-    pub lagrangian: Expr<C>,
-    /// The torques `tau_i = d/dt dL/dqd_i - dL/dq_i` of Lagrange's equation, per joint, expanded
-    /// (assembled as `M qdd + c + g`; equal to [`lagrange_torques`](Self::lagrange_torques)).
-    pub torques: Vec<Expr<C>>,
     /// The mass matrix, row-major.
     pub mass_matrix: Vec<Vec<Expr<C>>>,
     /// The velocity-product torques c(q, qd).
@@ -522,7 +517,6 @@ impl<C: Coefficient> Dynamics<C> {
         let mut rates = RateProducts::new();
         let kinetic = kinetic_energy(arm, bodies, &mut rates);
         let potential = potential_energy(arm, bodies);
-        let lagrangian = kinetic.sub(&potential);
         // M as the Hessian of T in the rates, g = dV/dq, and the velocity terms from the
         // momenta p = dT/dqd: the same exact functions Lagrange's equation gives (checked
         // against it by `lagrange_torques`), without expanding d/dt dL/dqd, the costliest step.
@@ -545,25 +539,53 @@ impl<C: Coefficient> Dynamics<C> {
             (m, c)
         };
         let gravity: Vec<Expr<C>> = (0..n).map(|i| potential.diff_q(i)).collect();
-        let torques: Vec<Expr<C>> = (0..n)
-            .map(|i| {
-                let mut t = coriolis[i].add(&gravity[i]);
-                for (j, mij) in mass_matrix[i].iter().enumerate() {
-                    t.add_assign(&mij.mul_var(Var::Qdd(j)));
-                }
-                t
-            })
-            .collect();
         Self {
             n,
             kinetic_energy: kinetic,
             potential_energy: potential,
-            lagrangian,
-            torques,
             mass_matrix,
             coriolis,
             gravity,
         }
+    }
+
+    /// The Lagrangian L = T - V. Built on demand: for long arms it is as large as T, and
+    /// only the paper's route and the printed derivation need it.
+    #[must_use]
+    pub fn lagrangian(&self) -> Expr<C> {
+        self.kinetic_energy.sub(&self.potential_energy)
+    }
+
+    /// The torques `tau_i = d/dt dL/dqd_i - dL/dq_i` of Lagrange's equation, per joint, expanded
+    /// (assembled as `M qdd + c + g`; equal to [`lagrange_torques`](Self::lagrange_torques)).
+    /// Built on demand: they hold as many terms as M, c and g together (see
+    /// [`torque_terms`](Self::torque_terms)), which a forty-link arm counts in millions.
+    #[must_use]
+    pub fn torques(&self) -> Vec<Expr<C>> {
+        (0..self.n)
+            .map(|i| {
+                let mut t = self.coriolis[i].add(&self.gravity[i]);
+                for (j, mij) in self.mass_matrix[i].iter().enumerate() {
+                    t.add_assign(&mij.mul_var(Var::Qdd(j)));
+                }
+                t
+            })
+            .collect()
+    }
+
+    /// The terms of [`torques`](Self::torques) without building them, and the coefficients'
+    /// parts (`part_count` of each) where `parts`: c's monomials are quadratic in the rates,
+    /// g's free of them and each `M_ij qdd_j`'s linear in `qdd_j`, so no two terms merge.
+    #[must_use]
+    pub fn torque_terms(&self, parts: impl Fn(&C) -> usize) -> usize {
+        let count = |e: &Expr<C>| e.terms().map(|(_, _, c)| parts(c)).sum::<usize>();
+        (0..self.n)
+            .map(|i| {
+                count(&self.coriolis[i])
+                    + count(&self.gravity[i])
+                    + self.mass_matrix[i].iter().map(count).sum::<usize>()
+            })
+            .sum()
     }
 
     /// Lagrange's equation, `d/dt dL/dqd_i - dL/dq_i`, expanded: the route of the paper,
@@ -571,12 +593,13 @@ impl<C: Coefficient> Dynamics<C> {
     /// the Hessian of T, Christoffel symbols and dV/dq), and equal to it.
     #[must_use]
     pub fn lagrange_torques(&self) -> Vec<Expr<C>> {
+        let lagrangian = self.lagrangian();
         (0..self.n)
             .map(|i| {
-                self.lagrangian
+                lagrangian
                     .diff_var(rate(i))
                     .dt(self.n)
-                    .sub(&self.lagrangian.diff_q(i))
+                    .sub(&lagrangian.diff_q(i))
             })
             .collect()
     }
@@ -610,7 +633,7 @@ impl<C: Coefficient> fmt::Display for Dynamics<C> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         writeln!(f, "T = {}", self.kinetic_energy)?;
         writeln!(f, "V = {}", self.potential_energy)?;
-        writeln!(f, "L = T - V = {}", self.lagrangian)?;
+        writeln!(f, "L = T - V = {}", self.lagrangian())?;
         for i in 0..self.n {
             for j in i..self.n {
                 writeln!(f, "M{}{} = {}", i + 1, j + 1, self.mass_matrix[i][j])?;

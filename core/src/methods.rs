@@ -353,7 +353,7 @@ impl<C: Emit> Derived<C> {
     #[must_use]
     pub fn inverse_dynamics_method(&self) -> Method {
         let recursive = self.inverse_dynamics_newton_euler_method();
-        let terms = Self::terms(&self.dynamics.torques.iter().collect::<Vec<_>>());
+        let terms = self.dynamics.torque_terms(|c| c.part_count().max(1));
         if self.worth_expanding(terms, &recursive) {
             cheapest(vec![self.inverse_dynamics_lagrange_method(), recursive])
         } else {
@@ -364,7 +364,7 @@ impl<C: Emit> Derived<C> {
     /// `tau` from the expanded Lagrangian torques, term by term, plus friction.
     #[must_use]
     pub fn inverse_dynamics_lagrange_method(&self) -> Method {
-        self.with_friction(self.vector_method("tau", &self.dynamics.torques))
+        self.with_friction(self.vector_method("tau", &self.dynamics.torques()))
     }
 
     /// `tau` by the planar recursive Newton-Euler algorithm unrolled for this arm, plus

@@ -170,7 +170,7 @@ pub fn regressor(arm: &ArmSpec<Poly>) -> Regressor<Poly> {
     let n = arm.links.len();
     let (mut parameters, geometry, bodies) = symbolic(arm);
     parameters.retain(|s| s.kind != Kind::Frictionloss);
-    let torques = Dynamics::of_bodies(&geometry, &bodies).torques;
+    let torques = Dynamics::of_bodies(&geometry, &bodies).torques();
     let columns = parameters
         .iter()
         .map(|s| {

@@ -43,7 +43,7 @@ fn mass_matrix_two_ways_agree_and_c_is_christoffel() {
         assert_eq!(d.mass_matrix, d.mass_matrix_from_lagrange(), "n = {n}");
         let cm = d.coriolis_matrix();
         assert_eq!(cm, christoffel(&d.mass_matrix), "n = {n}");
-        assert_eq!(d.torques, d.lagrange_torques(), "n = {n}");
+        assert_eq!(d.torques(), d.lagrange_torques(), "n = {n}");
         for (i, row) in cm.iter().enumerate() {
             let mut cqd = Expr::zero();
             for (j, cij) in row.iter().enumerate() {

@@ -66,7 +66,7 @@ fn regressor_times_standard_parameters_is_the_torque_exactly() {
             let literal = arm(n, g, a, p).with_prismatic(pattern);
             let reg = regressor(&poly_arm(&literal));
             let values = standard_values(&literal, &reg.parameters);
-            let torques = Dynamics::derive(&poly_arm(&literal)).torques;
+            let torques = Dynamics::derive(&poly_arm(&literal)).torques();
             let pairs: Vec<(usize, Rational)> = values.into_iter().enumerate().collect();
             assert_eq!(combine(&reg, &pairs, n), torques, "n = {n}");
             // And with the base parameters.
