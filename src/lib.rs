@@ -246,7 +246,8 @@ pub mod trig;
 #[doc(hidden)]
 pub mod __private;
 
-/// The README's examples, compiled and run as doctests.
+/// The README's examples, compiled and run as doctests. Each is a complete program with its
+/// own `fn main` (`tests/readme.rs` checks that), so that what a newcomer pastes compiles.
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
