@@ -25,30 +25,36 @@ impl Out {
             eprintln!("error: {why}\n{usage}");
             std::process::exit(2)
         };
-        let mut dir = None;
-        let mut args = std::env::args().skip(1);
-        while let Some(arg) = args.next() {
-            let chosen = match arg.as_str() {
-                "--docs" => docs_dir(),
-                "--out" => PathBuf::from(
-                    args.next()
-                        .unwrap_or_else(|| fail("--out needs a directory")),
-                ),
-                "-h" | "--help" => {
-                    println!("{usage}");
-                    std::process::exit(0)
-                }
-                other => fail(&format!("unknown argument `{other}`")),
-            };
-            if dir.replace(chosen).is_some() {
-                fail("give one of --out and --docs, once");
+        let dir = match Self::directory(std::env::args().skip(1)) {
+            Ok(Some(dir)) => dir,
+            Ok(None) => {
+                println!("{usage}");
+                std::process::exit(0)
             }
-        }
-        let dir = dir.unwrap_or_else(default_dir);
+            Err(why) => fail(&why),
+        };
         if let Err(e) = std::fs::create_dir_all(&dir) {
             fail(&format!("cannot create {}: {e}", dir.display()));
         }
         Self { dir }
+    }
+
+    /// The directory the arguments choose, `None` for `--help`, or why they choose none.
+    pub fn directory(args: impl IntoIterator<Item = String>) -> Result<Option<PathBuf>, String> {
+        let mut dir = None;
+        let mut args = args.into_iter();
+        while let Some(arg) = args.next() {
+            let chosen = match arg.as_str() {
+                "--docs" => docs_dir(),
+                "--out" => PathBuf::from(args.next().ok_or("--out needs a directory")?),
+                "-h" | "--help" => return Ok(None),
+                other => return Err(format!("unknown argument `{other}`")),
+            };
+            if dir.replace(chosen).is_some() {
+                return Err("give one of --out and --docs, once".to_string());
+            }
+        }
+        Ok(Some(dir.unwrap_or_else(default_dir)))
     }
 
     /// The path of the picture `name` (`"sim-energy.svg"`).
