@@ -2,7 +2,6 @@
 //! an example leaves the repository as it was) and how they print numbers. Compiled here from
 //! the examples' own files, so that `cargo test` runs their tests too.
 
-#[allow(dead_code)]
 #[path = "../examples/support/num.rs"]
 mod num;
 #[allow(dead_code)]

@@ -90,7 +90,7 @@ mod tests {
         assert_eq!(log_tick(1e-14), "1e-14");
         assert_eq!(log_tick(100.0), "100");
         assert_eq!(log_tick(1e4), "1e4");
-        assert_eq!(log_tick(9999.999_999), "1e4");
+        assert_eq!(log_tick(9_999.999_999), "1e4");
         assert_eq!(log_tick(3e5), "3e5");
     }
 }
