@@ -73,11 +73,6 @@ pub enum ArmError {
     /// that lies farthest outside its range in that solution, and by how much, in the joint's
     /// own unit (radians for a hinge, metres for a slide).
     BeyondJointRange {
-        /// The tip position the caller asked for, `[x, y]`.
-        target: [f64; 2],
-        /// The absolute angle of the last link the caller asked for (radians), `None` for a
-        /// position target.
-        orientation: Option<f64>,
         /// The joint, 0-based as in `q[joint]`.
         joint: usize,
         /// Its kind, which gives the unit of `excess`.
@@ -86,6 +81,20 @@ pub enum ArmError {
         /// [`Joint::Revolute`](crate::Joint::Revolute), metres for
         /// [`Joint::Prismatic`](crate::Joint::Prismatic).
         excess: f64,
+    },
+    /// A spatial arm cannot place the point (or, for the arms whose last axes do not all meet,
+    /// the direction) its closed-form inverse kinematics turns on where the target needs it:
+    /// `what` names it ("the wrist centre", "the elbow's annulus", "the tool axis"), and
+    /// `distance` says by how much, in `unit` (`"m"` or `"rad"`).
+    OutOfReach {
+        /// The tool position asked for, `[x, y, z]`.
+        target: [f64; 3],
+        /// What cannot be placed.
+        what: &'static str,
+        /// By how much (always > 0).
+        distance: f64,
+        /// `"m"` for a point, `"rad"` for a direction.
+        unit: &'static str,
     },
     /// The configuration is singular (or too close to it) for the requested inverse.
     Singular {
@@ -289,8 +298,6 @@ impl fmt::Display for ArmError {
                 }
             }
             Self::BeyondJointRange {
-                target: [x, y],
-                orientation,
                 joint,
                 kind,
                 excess,
@@ -299,20 +306,10 @@ impl fmt::Display for ArmError {
                     crate::Joint::Revolute => ("hinge", "rad"),
                     crate::Joint::Prismatic => ("slide", "m"),
                 };
-                match orientation {
-                    None => write!(f, "target ({}, {})", r(x), r(y))?,
-                    Some(phi) => write!(
-                        f,
-                        "target ({}, {}) with the last link at {} rad",
-                        r(x),
-                        r(y),
-                        r(phi)
-                    )?,
-                }
                 write!(
                     f,
-                    " is out of reach within the joint ranges: the nearest solution puts q[{joint}] \
-                     (the {} joint, a {what}) {} {unit} outside its range",
+                    "the target is out of reach within the joint ranges: the nearest solution puts \
+                     q[{joint}] (the {} joint, a {what}) {} {unit} outside its range",
                     Ordinal(joint + 1),
                     r(excess)
                 )
@@ -321,6 +318,19 @@ impl fmt::Display for ArmError {
                 f,
                 "singular configuration: the measure of singularity is not a number (threshold {})",
                 r(threshold)
+            ),
+            Self::OutOfReach {
+                target: [x, y, z],
+                what,
+                distance,
+                unit,
+            } => write!(
+                f,
+                "target at ({}, {}, {}) is out of reach: {what} misses by {} {unit}",
+                r(x),
+                r(y),
+                r(z),
+                r(distance)
             ),
             Self::Singular {
                 measure: 0.0,
@@ -492,20 +502,16 @@ mod tests {
             "{text}"
         );
         let joint = ArmError::BeyondJointRange {
-            target: [1.7, 0.0],
-            orientation: None,
             joint: 1,
             kind: crate::Joint::Revolute,
             excess: 0.2518 + 3e-17,
         };
         assert_eq!(
             joint.to_string(),
-            "target (1.7, 0) is out of reach within the joint ranges: the nearest solution puts \
-             q[1] (the 2nd joint, a hinge) 0.2518 rad outside its range"
+            "the target is out of reach within the joint ranges: the nearest solution puts q[1] \
+             (the 2nd joint, a hinge) 0.2518 rad outside its range"
         );
         let slide = ArmError::BeyondJointRange {
-            target: [0.0, 1.5],
-            orientation: Some(0.5),
             joint: 0,
             kind: crate::Joint::Prismatic,
             excess: 0.2,

@@ -241,6 +241,7 @@ pub mod reference;
 pub mod sim;
 #[cfg(feature = "std")]
 pub mod simd;
+pub mod spatial;
 pub mod trig;
 
 #[doc(hidden)]

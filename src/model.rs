@@ -1,3 +1,6 @@
+#[cfg(not(feature = "std"))]
+use num_traits::Float as _;
+
 use nalgebra::{SVector, Vector2};
 
 use crate::{ArmError, Joint, Link};

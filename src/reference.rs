@@ -86,6 +86,7 @@ mod energy;
 mod kinematics;
 mod newton_euler;
 mod regressor;
+pub mod spatial;
 
 pub use articulated::forward_dynamics;
 pub use composite::{forward_dynamics_crba, gravity_torques, mass_matrix};

@@ -41,7 +41,7 @@ mod dyn_arm;
 mod manipulability;
 mod numeric;
 mod prismatic;
-mod range;
+pub(crate) mod range;
 mod skeleton;
 mod statics;
 #[cfg(test)]
@@ -79,6 +79,16 @@ use crate::ArmError;
 /// [`ArmError::Unreachable`]. [`Workspace::contains`] and [`DexterousWorkspace::contains`]
 /// use the same slack, so they agree with the inverse kinematics.
 pub const REACH_TOLERANCE: f64 = 1e-9;
+
+/// Wraps an angle into (-pi, pi]; NaN and infinities come back as they are.
+#[inline]
+pub(crate) fn wrap(a: f64) -> f64 {
+    if a.is_finite() {
+        wrap_angle(a)
+    } else {
+        a
+    }
+}
 
 /// Wraps an angle into (-pi, pi]. `a` must be finite.
 #[inline]

@@ -117,7 +117,7 @@ pub fn ik_rp(
     let branches = finite(branches)?;
     fit_branches(&kinds, &ranges, slack, branches)
         .map(|b| b.map(SVector::from))
-        .map_err(|miss| miss.error([x, y], None))
+        .map_err(|miss| miss.error())
 }
 
 /// The angle a joint takes when any angle will do: the representative of 0 in `range`, or its
@@ -219,7 +219,7 @@ pub fn ik_pr(
     let kinds = [Joint::Prismatic, Joint::Revolute];
     fit_branches(&kinds, &ranges, slack, branches)
         .map(|b| b.map(SVector::from))
-        .map_err(|miss| miss.error([x, y], None))
+        .map_err(|miss| miss.error())
 }
 
 /// Closed-form inverse kinematics of a slider carrying two links: a prismatic joint moving
@@ -291,5 +291,5 @@ pub fn ik_prr(
     let branches = finite([with_hand(a), with_hand(b)])?;
     fit_branches(&kinds, &ranges, slack, branches)
         .map(|b| b.map(Vector3::from))
-        .map_err(|miss| miss.error([t.x, t.y], Some(phi)))
+        .map_err(|miss| miss.error())
 }

@@ -51,7 +51,7 @@ pub(super) fn slide_slack(lengths: &[f64], ranges: &[Range]) -> f64 {
 /// `value + 2 pi k`: it is returned as it is when it lies in the range (within
 /// [`REACH_TOLERANCE`] radians), else the representative nearest the range side it lies
 /// beyond, clamped into the range; its excess is the angle to the nearer end of the range.
-pub(super) fn fit(kind: Joint, value: f64, range: Range, slack: f64) -> Result<f64, f64> {
+pub(crate) fn fit(kind: Joint, value: f64, range: Range, slack: f64) -> Result<f64, f64> {
     // Positive even when a bound near f64::MAX overflows the arithmetic below.
     fit_unchecked(kind, value, range, slack).map_err(|e| e.max(f64::MIN_POSITIVE))
 }
@@ -152,11 +152,9 @@ pub(super) struct RangeMiss {
 }
 
 impl RangeMiss {
-    /// The caller's error for the target it asked for.
-    pub fn error(self, target: [f64; 2], orientation: Option<f64>) -> ArmError {
+    /// As an [`ArmError`].
+    pub fn error(self) -> ArmError {
         ArmError::BeyondJointRange {
-            target,
-            orientation,
             joint: self.joint,
             kind: self.kind,
             excess: self.excess,

@@ -6,7 +6,7 @@
 
 use nalgebra::{Isometry2, Point2, SVector};
 
-use super::{ik2, ik3, target_coordinates};
+use super::{ik2, ik3};
 use crate::kinematics::range::{check_ranges, fit_branches, Range, RangeMiss};
 #[cfg(doc)]
 use crate::kinematics::REACH_TOLERANCE;
@@ -51,8 +51,7 @@ pub fn ik2_in_ranges(
 ) -> Result<[SVector<f64, 2>; 2], ArmError> {
     check_ranges(&ranges)?;
     let solutions = ik2(l1, l2, target)?;
-    let (x, y) = target_coordinates(target)?;
-    fit_revolute(solutions, &ranges).map_err(|miss| miss.error([x, y], None))
+    fit_revolute(solutions, &ranges).map_err(|miss| miss.error())
 }
 
 /// [`ik3`] within joint ranges, as [`ik2_in_ranges`] is [`ik2`] within them: the solutions
@@ -83,9 +82,7 @@ pub fn ik3_in_ranges(
 ) -> Result<[SVector<f64, 3>; 2], ArmError> {
     check_ranges(&ranges)?;
     let solutions = ik3(l1, l2, l3, target)?;
-    let t = target.translation.vector;
-    let phi = target.rotation.angle();
-    fit_revolute(solutions, &ranges).map_err(|miss| miss.error([t.x, t.y], Some(phi)))
+    fit_revolute(solutions, &ranges).map_err(|miss| miss.error())
 }
 
 /// The branches of an all-revolute closed form that fit `ranges`, or the smallest excess.

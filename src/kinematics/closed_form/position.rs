@@ -84,7 +84,7 @@ pub fn ik3_position(
             return Ok(Vector3::new(q1, q[0], q[1]));
         }
     }
-    Err(nearest_miss([l1, l2, l3], &ranges, rho, theta).error([x, y], None))
+    Err(nearest_miss([l1, l2, l3], &ranges, rho, theta).error())
 }
 
 /// The annulus three revolute links reach with free joints.

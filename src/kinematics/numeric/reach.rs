@@ -183,6 +183,6 @@ pub fn reachable_target_of<const N: usize>(
             outer: w.outer_radius(),
             distance,
         }),
-        Some(Miss::Joint(miss)) => Err(miss.error(asked, orientation)),
+        Some(Miss::Joint(miss)) => Err(miss.error()),
     }
 }

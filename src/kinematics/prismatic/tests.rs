@@ -95,15 +95,9 @@ fn ik_rp_round_trip_and_ranges() {
                     }
                     assert!(expected[0] || expected[1]);
                 }
-                Err(ArmError::BeyondJointRange {
-                    target,
-                    orientation,
-                    excess,
-                    ..
-                }) => {
+                Err(ArmError::BeyondJointRange { excess, .. }) => {
                     refused += 1;
                     assert!(!expected[0] && !expected[1], "({x}, {y}) refused");
-                    assert_eq!((target, orientation), ([x, y], None));
                     assert!(excess > 0.0);
                 }
                 Err(e) => panic!("{e:?}"),
@@ -317,15 +311,9 @@ fn ik_prr_round_trip_and_ranges() {
                     // Only beyond the band the wrist can reach.
                     assert!(w.1.abs() > l2.abs());
                 }
-                Err(ArmError::BeyondJointRange {
-                    target: asked,
-                    orientation,
-                    excess,
-                    ..
-                }) => {
+                Err(ArmError::BeyondJointRange { excess, .. }) => {
                     refused += 1;
-                    assert_eq!(asked, [x, y]);
-                    assert!(gap(orientation.unwrap(), phi) < 1e-15 && excess > 0.0);
+                    assert!(excess > 0.0);
                     {
                         // Reachable without ranges: check that the ranges exclude both.
                         let free = ik_prr(l1, l2, l3, [None; 3], &target).unwrap();

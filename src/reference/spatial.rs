@@ -1,0 +1,121 @@
+//! The numeric reference for spatial arms: each joint's transformation built from its
+//! convention's parameters at run time, multiplied out base to tip. It shares nothing with the
+//! symbolic path of `#[derive(SpatialArm)]`, which the tests check against it.
+//!
+//! Conventions as [`JointGeometry`](crate::spatial::JointGeometry) lists them; the geometric
+//! Jacobian's rows are the tool origin's linear velocity, then the angular velocity, both in
+//! base coordinates (Pinocchio's `LOCAL_WORLD_ALIGNED`); gravity torques are `dV/dq`, what the
+//! joints apply to hold the arm still, with `V = -sum m_i g . c_i` (zero at the base origin).
+
+use nalgebra::{Isometry3, Point3, SMatrix, SVector, Vector3};
+
+use crate::spatial::SpatialModel;
+use crate::Joint;
+
+/// Each link's frame in the base frame, base first.
+#[must_use]
+pub fn link_poses<const N: usize>(
+    model: &SpatialModel<N>,
+    q: &SVector<f64, N>,
+) -> [Isometry3<f64>; N] {
+    let mut pose = Isometry3::identity();
+    core::array::from_fn(|i| {
+        let j = &model.joints[i];
+        pose *= j.geometry.transform(j.kind, q[i]);
+        pose
+    })
+}
+
+/// The tool frame in the base frame.
+#[must_use]
+pub fn tip_pose<const N: usize>(model: &SpatialModel<N>, q: &SVector<f64, N>) -> Isometry3<f64> {
+    link_poses(model, q)
+        .last()
+        .copied()
+        .unwrap_or_else(Isometry3::identity)
+        * model.tool
+}
+
+/// Each joint's axis in the base frame at `q`: a point on it and its unit direction.
+#[must_use]
+pub fn joint_axes<const N: usize>(
+    model: &SpatialModel<N>,
+    q: &SVector<f64, N>,
+) -> [(Vector3<f64>, Vector3<f64>); N] {
+    let poses = link_poses(model, q);
+    core::array::from_fn(|i| {
+        let parent = if i == 0 {
+            Isometry3::identity()
+        } else {
+            poses[i - 1]
+        };
+        let (point, direction) = model.joints[i].geometry.axis_in_parent();
+        (
+            parent.transform_point(&Point3::from(point)).coords,
+            parent.rotation * direction,
+        )
+    })
+}
+
+/// The geometric Jacobian of the tool origin: column `i` is `(z_i x (p - o_i), z_i)` for a
+/// hinge and `(z_i, 0)` for a slide, `z_i` its axis, `o_i` a point on it, `p` the tool origin.
+#[must_use]
+pub fn jacobian<const N: usize>(
+    model: &SpatialModel<N>,
+    q: &SVector<f64, N>,
+) -> SMatrix<f64, 6, N> {
+    let tip = tip_pose(model, q).translation.vector;
+    let axes = joint_axes(model, q);
+    SMatrix::from_fn(|r, c| {
+        let (o, z) = axes[c];
+        let column = match model.joints[c].kind {
+            Joint::Revolute => [z.cross(&(tip - o)), z],
+            Joint::Prismatic => [z, Vector3::zeros()],
+        };
+        column[r / 3][r % 3]
+    })
+}
+
+/// Each link's centre of mass in the base frame.
+#[must_use]
+pub fn centres_of_mass<const N: usize>(
+    model: &SpatialModel<N>,
+    q: &SVector<f64, N>,
+) -> [Vector3<f64>; N] {
+    let poses = link_poses(model, q);
+    core::array::from_fn(|i| {
+        poses[i]
+            .transform_point(&Point3::from(model.links[i].com))
+            .coords
+    })
+}
+
+/// The potential energy `-sum m_i g . c_i`, J.
+#[must_use]
+pub fn potential_energy<const N: usize>(model: &SpatialModel<N>, q: &SVector<f64, N>) -> f64 {
+    centres_of_mass(model, q)
+        .iter()
+        .zip(&model.links)
+        .map(|(c, l)| -l.mass * model.gravity.dot(c))
+        .sum()
+}
+
+/// The gravity torques `g = dV/dq` (forces for slides): `g_i = -sum_{j >= i} m_j g . dc_j/dq_i`,
+/// with `dc_j/dq_i = z_i x (c_j - o_i)` for a hinge and `z_i` for a slide.
+#[must_use]
+pub fn gravity<const N: usize>(model: &SpatialModel<N>, q: &SVector<f64, N>) -> SVector<f64, N> {
+    let axes = joint_axes(model, q);
+    let centres = centres_of_mass(model, q);
+    SVector::from_fn(|i, _| {
+        let (o, z) = axes[i];
+        (i..N)
+            .map(|j| {
+                let dc = match model.joints[i].kind {
+                    Joint::Revolute => z.cross(&(centres[j] - o)),
+                    Joint::Prismatic => z,
+                };
+                -model.links[j].mass * model.gravity.dot(&dc)
+            })
+            .sum()
+    })
+}

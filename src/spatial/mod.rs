@@ -1,0 +1,10 @@
+//! Spatial (3-D) serial arms: joints in Denavit-Hartenberg or URDF form, their numeric
+//! description, and closed-form inverse kinematics by decoupling the wrist.
+
+mod ik;
+mod joint;
+mod model;
+
+pub use ik::{IkClass, IkSolutions, SpatialIk};
+pub use joint::JointGeometry;
+pub use model::{SpatialJoint, SpatialLink, SpatialModel};
