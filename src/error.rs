@@ -96,6 +96,13 @@ pub enum ArmError {
         /// `"m"` for a point, `"rad"` for a direction.
         unit: &'static str,
     },
+    /// The arm's geometry has no closed form for what was asked: `what` says which (a spatial
+    /// arm outside the classes of [`SpatialIk`](crate::spatial::SpatialIk), a wrench of an arm
+    /// whose `J^T w = tau` is not square).
+    NoClosedForm {
+        /// What has none, and what to use instead.
+        what: &'static str,
+    },
     /// The configuration is singular (or too close to it) for the requested inverse.
     Singular {
         /// The quantity that vanishes at the singularity, for example `l1 l2 sin q2`.
@@ -332,6 +339,7 @@ impl fmt::Display for ArmError {
                 r(z),
                 r(distance)
             ),
+            Self::NoClosedForm { what } => write!(f, "no closed form: {what}"),
             Self::Singular {
                 measure: 0.0,
                 threshold,

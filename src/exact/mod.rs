@@ -619,6 +619,20 @@ pub struct Derivation<const N: usize> {
     pub gravity: [Terms; N],
 }
 
+/// The exact kinematics and gravity of an `N`-joint spatial arm (`#[derive(SpatialArm)]`): the
+/// tool pose's entries, trigonometric polynomials in the joint angles (and polynomials in the
+/// slides), its potential energy and gravity torques. Constants the geometry cannot write as
+/// rationals (the cosine of a twist of 0.3 rad) appear by name, as run-time parameters do.
+#[derive(Clone, Copy, Debug)]
+pub struct SpatialDerivation<const N: usize> {
+    /// The tool pose's rotation (columns 0-2) and position (column 3), row-major: `tip[r][c]`.
+    pub tip: [[Terms; 4]; 3],
+    /// Potential energy V(q), zero at the base origin.
+    pub potential_energy: Terms,
+    /// The gravity torques g(q) = dV/dq.
+    pub gravity: [Terms; N],
+}
+
 /// The coefficient of the first term (no rates, no run-time parameter) whose atom is `1`
 /// (`kind` 0), `cos(angle . q)` (1) or `sin(angle . q)` (2); zero if absent.
 const fn coefficient(terms: Terms, kind: usize, angle: &[i32]) -> Rational {

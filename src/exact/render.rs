@@ -2,7 +2,7 @@
 
 use core::fmt::{self, Display, Formatter, Write as _};
 
-use super::{Angle, Derivation, Rational, Term, Terms, Trig, Var};
+use super::{Angle, Derivation, Rational, SpatialDerivation, Term, Terms, Trig, Var};
 
 /// How a formula is written.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -42,6 +42,14 @@ pub struct Latex<'a, T: ?Sized>(pub &'a T);
 
 impl Terms {
     /// This sum in LaTeX (see [`Latex`]).
+    #[must_use]
+    pub const fn latex(&self) -> Latex<'_, Self> {
+        Latex(self)
+    }
+}
+
+impl<const N: usize> SpatialDerivation<N> {
+    /// Every formula in LaTeX, one `aligned` line each (see [`Latex`]).
     #[must_use]
     pub const fn latex(&self) -> Latex<'_, Self> {
         Latex(self)
@@ -241,6 +249,57 @@ fn derivation<const N: usize>(
         line(f, &Named("g", sub(i, None)), &d.gravity[i], i + 1 == N)?;
     }
     f.write_str(close)
+}
+
+/// The spatial derivation: the tool pose's rotation `R11 .. R33` and position `p1 .. p3`, V,
+/// then `g1 .. gN`.
+fn spatial_derivation<const N: usize>(
+    f: &mut Formatter<'_>,
+    d: &SpatialDerivation<N>,
+    style: Style,
+) -> fmt::Result {
+    let (open, eq, end, close) = match style {
+        Style::Plain => ("", " = ", "\n", ""),
+        Style::Latex => ("\\begin{aligned}\n", " &= ", " \\\\\n", "\\end{aligned}"),
+    };
+    f.write_str(open)?;
+    let line = |f: &mut Formatter<'_>, name: &dyn Display, sum: &Terms, last: bool| {
+        write!(f, "{name}{eq}")?;
+        terms(f, sum, style)?;
+        f.write_str(if last && style == Style::Latex {
+            "\n"
+        } else {
+            end
+        })
+    };
+    let sub = |i: usize, j: Option<usize>| Subscripted { style, i, j };
+    for i in 0..3 {
+        for j in 0..3 {
+            line(f, &Named("R", sub(i, Some(j))), &d.tip[i][j], false)?;
+        }
+    }
+    for i in 0..3 {
+        line(f, &Named("p", sub(i, None)), &d.tip[i][3], false)?;
+    }
+    line(f, &"V", &d.potential_energy, N == 0)?;
+    for i in 0..N {
+        line(f, &Named("g", sub(i, None)), &d.gravity[i], i + 1 == N)?;
+    }
+    f.write_str(close)
+}
+
+impl<const N: usize> Display for SpatialDerivation<N> {
+    /// `R11 = ...` to `R33`, `p1 = ...` to `p3` (the tool pose), `V = ...`, `g1 = ...`, a line
+    /// each.
+    fn fmt(&self, f: &mut Formatter<'_>) -> fmt::Result {
+        spatial_derivation(f, self, Style::Plain)
+    }
+}
+
+impl<const N: usize> Display for Latex<'_, SpatialDerivation<N>> {
+    fn fmt(&self, f: &mut Formatter<'_>) -> fmt::Result {
+        spatial_derivation(f, self.0, Style::Latex)
+    }
 }
 
 /// `M12` or `M_{12}`.

@@ -39,7 +39,7 @@ mod chain;
 mod closed_form;
 mod dyn_arm;
 mod manipulability;
-mod numeric;
+pub(crate) mod numeric;
 mod prismatic;
 pub(crate) mod range;
 mod skeleton;

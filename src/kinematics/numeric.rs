@@ -11,7 +11,8 @@ use nalgebra::{Isometry2, Matrix2, Matrix3, Point2, SMatrix, SVector, Vector3};
 use super::{check_vector, wrap_angle};
 use crate::ArmError;
 
-mod arm;
+pub(crate) mod arm;
+pub(crate) mod lm;
 mod reach;
 #[cfg(test)]
 mod tests;
@@ -196,88 +197,14 @@ pub fn solve_dls<const N: usize>(
     if !target_is_finite(target) {
         return Err(ArmError::NonFinite { argument: "target" });
     }
-    if !(options.tolerance.is_finite() && options.damping.is_finite()) {
-        return Err(ArmError::NonFinite {
-            argument: "options",
-        });
-    }
-    let limits = checked_limits(options)?;
-    let clamp = |q: SVector<f64, N>| match &limits {
-        Some(limits) => SVector::from_fn(|i, _| q[i].clamp(limits[i].0, limits[i].1)),
-        None => q,
-    };
     let pose = matches!(target, IkTarget::Pose(_));
-    // The floor is low enough for the slow, singular approach to a target on the outer
-    // boundary (stretched arm, error quadratic in the angles), where a floor of 1e-3 of the
-    // damping stalled a six-link arm at 1.3e-10.
-    let floor = options.damping.abs() * 1e-6;
-    let mut lambda = options.damping.abs();
-    let mut q = clamp(*seed);
-    let mut error = task_error(target, &fk(&q))?;
-    let mut residual = error.norm();
-    let mut iterations = 0;
-    while iterations < options.max_iterations && residual > options.tolerance {
-        iterations += 1;
-        let mut j = jacobian(&q);
-        if !j.iter().all(|x| x.is_finite()) {
-            return Err(ArmError::NonFinite {
-                argument: "jacobian",
-            });
-        }
-        let mut accepted = false;
-        let mut step = dls_step(&j, &error, lambda, pose);
-        if let Some(limits) = &limits {
-            // Hold the joints that sit at a limit and would step beyond it; the others take
-            // the step recomputed without them (at most N rounds: each holds one more joint).
-            for _ in 0..N {
-                let Some(current) = step else { break };
-                let mut held = false;
-                for i in 0..N {
-                    let outward = (q[i] <= limits[i].0 && current[i] < 0.0)
-                        || (q[i] >= limits[i].1 && current[i] > 0.0);
-                    if outward && j.column(i).iter().any(|x| *x != 0.0) {
-                        j.column_mut(i).fill(0.0);
-                        held = true;
-                    }
-                }
-                if !held {
-                    break;
-                }
-                step = dls_step(&j, &error, lambda, pose);
-            }
-        }
-        if let Some(mut step) = step {
-            let norm = step.norm();
-            if norm > DLS_MAX_STEP {
-                step *= DLS_MAX_STEP / norm;
-            }
-            let candidate = clamp(q + step);
-            let candidate_error = task_error(target, &fk(&candidate))?;
-            let candidate_residual = candidate_error.norm();
-            if candidate_residual < residual {
-                q = candidate;
-                error = candidate_error;
-                residual = candidate_residual;
-                accepted = true;
-            }
-        }
-        if accepted {
-            lambda = (lambda * 0.5).max(floor);
-        } else {
-            lambda = (lambda * 4.0).max(1e-6);
-            if lambda > DLS_MAX_DAMPING {
-                break;
-            }
-        }
-    }
-    if residual <= options.tolerance {
-        Ok(q)
-    } else {
-        Err(ArmError::NoConvergence {
-            iterations,
-            residual,
-        })
-    }
+    lm::levenberg_marquardt(
+        |q| task_error(target, &fk(q)),
+        jacobian,
+        |j, e, lambda| dls_step(j, e, lambda, pose),
+        seed,
+        options,
+    )
 }
 
 fn target_is_finite(target: &IkTarget) -> bool {

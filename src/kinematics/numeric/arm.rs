@@ -12,13 +12,16 @@ use crate::{ArmError, Link};
 
 /// `options` with the links' ranges added to its joint limits (their intersection; a NaN bound
 /// counts as none).
-fn with_ranges<const N: usize>(links: &[Link; N], options: &DlsOptions<N>) -> DlsOptions<N> {
-    if links.iter().all(|l| l.range.is_none()) {
+pub(crate) fn with_ranges<const N: usize>(
+    ranges: &[Option<(f64, f64)>; N],
+    options: &DlsOptions<N>,
+) -> DlsOptions<N> {
+    if ranges.iter().all(Option::is_none) {
         return *options;
     }
     let free = (f64::NEG_INFINITY, f64::INFINITY);
     let limits = core::array::from_fn(|i| {
-        let (lo, hi) = links[i].range.unwrap_or(free);
+        let (lo, hi) = ranges[i].unwrap_or(free);
         let (olo, ohi) = options.limits.map_or(free, |l| l[i]);
         (lo.max(olo), hi.min(ohi))
     });
@@ -51,7 +54,7 @@ pub fn inverse_kinematics_near<A: crate::PlanarArm<N> + ?Sized, const N: usize>(
         |q| arm.jacobian(q),
         &target,
         seed,
-        &with_ranges(&links, options),
+        &with_ranges(&links.map(|l| l.range), options),
     )
 }
 
@@ -91,6 +94,6 @@ pub fn inverse_kinematics_of<const N: usize>(
         |q| jacobian_of(links, q),
         &target,
         seed,
-        &with_ranges(links, options),
+        &with_ranges(&links.map(|l| l.range), options),
     )
 }
