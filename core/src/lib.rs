@@ -43,11 +43,10 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod expr;
+mod algebra;
 pub mod mechanics;
-pub mod poly;
-pub mod ring;
-pub mod trig;
+
+pub use algebra::{expr, poly, ring, trig};
 
 pub use expr::{Expr, Monomial, Var};
 pub use mechanics::{ArmSpec, Body, Dynamics, JointKind, Kinematics, LinkSpec, PayloadSpec};

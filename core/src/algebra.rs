@@ -1,0 +1,8 @@
+//! The first stage: the exact algebra every later stage computes in. Coefficients
+//! ([`ring`], and [`poly`] for run-time parameters), trigonometric atoms of joint-angle sums
+//! ([`trig`]) and the canonical sums of terms built from them ([`expr`]).
+
+pub mod expr;
+pub mod poly;
+pub mod ring;
+pub mod trig;
