@@ -44,26 +44,35 @@
 #![warn(missing_docs)]
 
 mod algebra;
-pub mod mechanics;
+pub mod mechanics {
+    //! The second stage: the exact mechanics of an arm, derived symbolically in the algebra of
+    //! [`crate::expr`]. One part per geometry; `planar` is the planar serial arm, Lagrangian
+    //! mechanics following the paper's route.
+
+    pub(crate) mod planar;
+
+    pub use planar::{
+        standard_bodies, ArmSpec, Body, Dynamics, JointKind, Kinematics, LinkSpec, PayloadSpec,
+        RateProducts,
+    };
+}
 
 pub use algebra::{expr, poly, ring, trig};
+pub use mechanics::planar::{christoffel, definite};
 
 pub use expr::{Expr, Monomial, Var};
 pub use mechanics::{ArmSpec, Body, Dynamics, JointKind, Kinematics, LinkSpec, PayloadSpec};
 pub use poly::{Param, Poly};
 pub use ring::{Coefficient, Rational};
 pub use trig::{Angle, Trig};
-pub mod christoffel;
 pub mod closed_forms;
 pub mod compact;
-pub mod definite;
 pub mod derivative;
 pub mod emit;
 pub mod frozen;
 pub mod generate;
 pub mod identification;
 pub mod methods;
-mod metric;
 pub mod paths;
 pub mod regressor;
 pub mod slp;

@@ -2,7 +2,7 @@
 //! absolute angles' premise (each `Mt_ab` a function of `phi_a - phi_b`) checked on its own.
 
 use super::*;
-use crate::mechanics::tests::{christoffel, uneven_arm};
+use crate::mechanics::planar::tests::{christoffel, uneven_arm};
 use crate::mechanics::{Dynamics, JointKind};
 use crate::poly::Poly;
 use crate::trig::Trig;

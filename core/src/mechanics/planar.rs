@@ -346,7 +346,7 @@ impl<C: Coefficient> RateProducts<C> {
 
 /// The kinetic energy, built in its pairwise form: a sum over pairs of links `a >= b` of
 /// `omega_a omega_b` times `A cos(theta_a - theta_b) - B sin(theta_a - theta_b)`, `A` and `B`
-/// summed over the bodies ([`crate::metric`]). Squaring the velocity's x and y expressions
+/// summed over the bodies ([`metric`]). Squaring the velocity's x and y expressions
 /// gives the same canonical expression (checked in the tests) but creates every
 /// `cos(theta_a + theta_b)` term only to cancel it, and dominated the derive's time.
 fn kinetic_energy<C: Coefficient>(
@@ -358,7 +358,7 @@ fn kinetic_energy<C: Coefficient>(
         return kinetic_energy_of_velocities(arm, bodies);
     }
     let n = arm.links.len();
-    let crate::metric::Pairs { diag, cross } = crate::metric::pairs(arm, bodies);
+    let metric::Pairs { diag, cross } = metric::pairs(arm, bodies);
     let half = ratio(1, 2);
     let mut kinetic = Expr::zero();
     for a in 0..n {
@@ -524,7 +524,7 @@ impl<C: Coefficient> Dynamics<C> {
         // angles instead (small expressions per pair of links): the same expressions at a
         // fraction of the cost for long arms.
         let (mass_matrix, coriolis) = if arm.all_revolute() {
-            let pairs = crate::metric::pairs(arm, bodies);
+            let pairs = metric::pairs(arm, bodies);
             (pairs.mass_matrix(arm), pairs.coriolis(&mut rates))
         } else {
             let p: Vec<Expr<C>> = (0..n).map(|i| kinetic.diff_var(rate(i))).collect();
@@ -609,7 +609,7 @@ impl<C: Coefficient> Dynamics<C> {
     /// same function by a cheaper route for arms whose joints all turn).
     #[must_use]
     pub fn coriolis_matrix(&self) -> Vec<Vec<Expr<C>>> {
-        crate::christoffel::expanded(&self.mass_matrix)
+        christoffel::expanded(&self.mass_matrix)
     }
 
     /// The mass matrix read off Lagrange's equation (the coefficients of the accelerations in
@@ -649,5 +649,8 @@ impl<C: Coefficient> fmt::Display for Dynamics<C> {
     }
 }
 
+pub mod christoffel;
+pub mod definite;
+mod metric;
 #[cfg(test)]
 pub(crate) mod tests;
