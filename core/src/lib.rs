@@ -44,18 +44,7 @@
 #![warn(missing_docs)]
 
 mod algebra;
-pub mod mechanics {
-    //! The second stage: the exact mechanics of an arm, derived symbolically in the algebra of
-    //! [`crate::expr`]. One part per geometry; `planar` is the planar serial arm, Lagrangian
-    //! mechanics following the paper's route.
-
-    pub(crate) mod planar;
-
-    pub use planar::{
-        standard_bodies, ArmSpec, Body, Dynamics, JointKind, Kinematics, LinkSpec, PayloadSpec,
-        RateProducts,
-    };
-}
+pub mod mechanics;
 
 pub use algebra::{expr, poly, ring, trig};
 pub use mechanics::planar::{christoffel, definite};

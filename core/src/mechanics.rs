@@ -1,0 +1,10 @@
+//! The second stage: the exact mechanics of an arm, derived symbolically in the algebra of
+//! [`crate::expr`]. One part per geometry; `planar` is the planar serial arm, Lagrangian
+//! mechanics following the paper's route.
+
+pub(crate) mod planar;
+
+pub use planar::{
+    standard_bodies, ArmSpec, Body, Dynamics, JointKind, Kinematics, LinkSpec, PayloadSpec,
+    RateProducts,
+};
