@@ -320,7 +320,7 @@ fn solved_forward_dynamics<C: Emit>(
     let n = d.arm.links.len();
     let nn = Literal::usize_unsuffixed(n);
     let fixed: Vec<_> = (0..n)
-        .map(|i| crate::unrolled::fixed_pivot_floor(&d.dynamics.mass_matrix[i][i]))
+        .map(|i| crate::programs::unrolled::fixed_pivot_floor(&d.dynamics.mass_matrix[i][i]))
         .collect();
     let floors = fixed
         .iter()
@@ -333,7 +333,7 @@ fn solved_forward_dynamics<C: Emit>(
         })
         .collect::<Result<Vec<_>, EmitError>>()?;
     let relative = fixed.iter().filter(|f| f.is_none()).count();
-    let cost = mh + crate::unrolled::ldlt_solve_cost(n, relative);
+    let cost = mh + crate::programs::unrolled::ldlt_solve_cost(n, relative);
     let v = quote!(::planar_arm::nalgebra::SVector<__T, #nn>);
     let (q, qd, tau) = (local("q"), local("qd"), local("tau"));
     let (m, h) = (local("m"), local("h"));

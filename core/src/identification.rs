@@ -21,7 +21,7 @@ use crate::regressor::{
     base_parameters_from_energies, standard_values, BaseParameters, Kind, Standard,
 };
 use crate::slp::{Emit, Id, Input, Program};
-use crate::unrolled::{newton_euler_unit, Unit};
+use crate::programs::unrolled::{newton_euler_unit, Unit};
 
 fn to_poly<C: Emit>(c: &C) -> Poly {
     c.parts()

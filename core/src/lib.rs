@@ -45,9 +45,11 @@
 
 mod algebra;
 pub mod mechanics;
+mod programs;
 
 pub use algebra::{expr, poly, ring, trig};
 pub use mechanics::planar::{christoffel, definite};
+pub use programs::{derivative, frozen, slp};
 
 pub use expr::{Expr, Monomial, Var};
 pub use mechanics::{ArmSpec, Body, Dynamics, JointKind, Kinematics, LinkSpec, PayloadSpec};
@@ -56,13 +58,9 @@ pub use ring::{Coefficient, Rational};
 pub use trig::{Angle, Trig};
 pub mod closed_forms;
 pub mod compact;
-pub mod derivative;
 pub mod emit;
-pub mod frozen;
 pub mod generate;
 pub mod identification;
 pub mod methods;
 pub mod paths;
 pub mod regressor;
-pub mod slp;
-mod unrolled;

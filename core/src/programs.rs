@@ -1,0 +1,8 @@
+//! The third stage: straight-line programs. The engine's formulas become hash-consed programs
+//! ([`slp`]); recursions are unrolled into them for one arm (`unrolled`), differentiated
+//! ([`derivative`]) and split at their parameter-only part ([`frozen`]).
+
+pub mod derivative;
+pub mod frozen;
+pub mod slp;
+pub(crate) mod unrolled;
