@@ -49,6 +49,7 @@ mod programs;
 
 pub use algebra::{expr, poly, ring, trig};
 pub use mechanics::planar::{christoffel, definite};
+pub use methods::identification::regressor;
 pub use programs::{derivative, frozen, slp};
 
 pub use expr::{Expr, Monomial, Var};
@@ -63,4 +64,3 @@ pub mod generate;
 pub mod identification;
 pub mod methods;
 pub mod paths;
-pub mod regressor;

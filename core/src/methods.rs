@@ -839,5 +839,6 @@ fn matrix_outputs(m: &[Vec<Id>]) -> Vec<(String, Id)> {
     outputs
 }
 
+pub(crate) mod identification;
 #[cfg(test)]
 mod tests;

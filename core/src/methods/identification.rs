@@ -1,0 +1,3 @@
+//! Identification: the regressor and the base parameters, derived exactly.
+
+pub mod regressor;
