@@ -43,11 +43,15 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+// The stages in pipeline order; each uses only the stages above it.
 mod algebra;
+mod emission;
 pub mod mechanics;
+pub mod methods;
 mod programs;
 
 pub use algebra::{expr, poly, ring, trig};
+pub use emission::{closed_forms, compact, emit, generate, identification, paths};
 pub use mechanics::planar::{christoffel, definite};
 pub use methods::identification::regressor;
 pub use programs::{derivative, frozen, slp};
@@ -57,10 +61,3 @@ pub use mechanics::{ArmSpec, Body, Dynamics, JointKind, Kinematics, LinkSpec, Pa
 pub use poly::{Param, Poly};
 pub use ring::{Coefficient, Rational};
 pub use trig::{Angle, Trig};
-pub mod closed_forms;
-pub mod compact;
-pub mod emit;
-pub mod generate;
-pub mod identification;
-pub mod methods;
-pub mod paths;

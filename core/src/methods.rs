@@ -10,10 +10,12 @@ use num_traits::{Signed, Zero};
 
 use crate::expr::Expr;
 use crate::mechanics::{ArmSpec, Dynamics, Kinematics};
+use crate::programs::unrolled::{
+    composite_mass_matrix, ldlt_solve, newton_euler, pivot_floor, Terms,
+};
 use crate::ring::Rational;
 use crate::slp::{Emit, Id, Input, OpCount, Program};
 use crate::trig::Angle;
-use crate::programs::unrolled::{composite_mass_matrix, ldlt_solve, newton_euler, pivot_floor, Terms};
 
 /// Everything derived for one arm, ready to emit.
 ///

@@ -19,10 +19,10 @@ use num_traits::{One, Zero};
 
 use crate::expr::Var;
 use crate::methods::{cheapest, Derived, Method};
+use crate::programs::unrolled::{ldlt_solve, pivot_floor};
 use crate::ring::Rational;
 use crate::slp::{Emit, Id, Input, Node, Program};
 use crate::trig::Angle;
-use crate::programs::unrolled::{ldlt_solve, pivot_floor};
 
 /// The largest derivative program, in operations, that is emitted as code. Above it the
 /// derive emits nothing and the trait's default (the generated inverse dynamics evaluated in

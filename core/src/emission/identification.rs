@@ -17,11 +17,11 @@ use crate::mechanics::{ArmSpec, LinkSpec, PayloadSpec};
 use crate::methods::{Derived, Method};
 use crate::paths::{F64, STR};
 use crate::poly::Poly;
+use crate::programs::unrolled::{newton_euler_unit, Unit};
 use crate::regressor::{
     base_parameters_from_energies, standard_values, BaseParameters, Kind, Standard,
 };
 use crate::slp::{Emit, Id, Input, Program};
-use crate::programs::unrolled::{newton_euler_unit, Unit};
 
 fn to_poly<C: Emit>(c: &C) -> Poly {
     c.parts()

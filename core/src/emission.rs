@@ -1,0 +1,10 @@
+//! The last stage: Rust. Programs rendered as statements ([`emit`]), the impls the derive
+//! emits ([`generate`], [`closed_forms`], [`identification`]), the exact `const` data
+//! ([`compact`]) and the paths the generated code names ([`paths`]).
+
+pub mod closed_forms;
+pub mod compact;
+pub mod emit;
+pub mod generate;
+pub mod identification;
+pub mod paths;
