@@ -5,6 +5,8 @@
 pub mod closed_forms;
 pub mod compact;
 pub mod emit;
+mod function;
 pub mod generate;
+mod header;
 pub mod identification;
 pub mod paths;

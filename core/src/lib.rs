@@ -52,12 +52,17 @@ mod programs;
 
 pub use algebra::{expr, poly, ring, trig};
 pub use emission::{closed_forms, compact, emit, generate, identification, paths};
-pub use mechanics::planar::{christoffel, definite};
+pub use mechanics::planar::definite;
 pub use methods::identification::regressor;
-pub use programs::{derivative, frozen, slp};
+pub use programs::{christoffel, derivative, frozen, slp};
 
+// Re-exports, not copies, in the docs: each item's page stays in its module.
+#[doc(no_inline)]
 pub use expr::{Expr, Monomial, Var};
 pub use mechanics::{ArmSpec, Body, Dynamics, JointKind, Kinematics, LinkSpec, PayloadSpec};
+#[doc(no_inline)]
 pub use poly::{Param, Poly};
+#[doc(no_inline)]
 pub use ring::{Coefficient, Rational};
+#[doc(no_inline)]
 pub use trig::{Angle, Trig};

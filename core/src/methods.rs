@@ -14,7 +14,10 @@ use crate::programs::unrolled::{
     composite_mass_matrix, ldlt_solve, newton_euler, pivot_floor, Terms,
 };
 use crate::ring::Rational;
-use crate::slp::{Emit, Id, Input, OpCount, Program};
+use crate::slp::{Emit, Id, Input, Program};
+
+use crate::programs::method::two;
+pub use crate::programs::method::Method;
 use crate::trig::Angle;
 
 /// Everything derived for one arm, ready to emit.
@@ -93,57 +96,6 @@ impl<C: Emit> Derived<C> {
     }
 }
 
-/// One generated method body: its program, the outputs, and how to name them.
-#[derive(Clone, Debug)]
-pub struct Method {
-    /// The program.
-    pub program: Program,
-    /// The output nodes with the names of their `let`s.
-    pub outputs: Vec<(String, Id)>,
-    /// How the program evaluates the method, for its doc comment (empty when it evaluates the
-    /// documented formulas term by term).
-    pub evaluation: String,
-}
-
-impl Method {
-    /// The outputs evaluated by the program interpreter (see [`Program::eval`]).
-    #[must_use]
-    pub fn eval(&self, input: &dyn Fn(Input) -> f64) -> Vec<f64> {
-        let values = self.program.eval(input);
-        self.outputs
-            .iter()
-            .map(|(_, id)| values[id.0 as usize])
-            .collect()
-    }
-
-    /// The operation count of this method.
-    #[must_use]
-    pub fn op_count(&self) -> OpCount {
-        let outs: Vec<Id> = self.outputs.iter().map(|o| o.1).collect();
-        self.program.op_count(&outs)
-    }
-
-    /// The longest chain of dependent operations to an output (see [`Program::depth`]).
-    #[must_use]
-    pub fn depth(&self) -> usize {
-        let outs: Vec<Id> = self.outputs.iter().map(|o| o.1).collect();
-        self.program.depth(&outs)
-    }
-
-    pub(crate) fn new(program: Program, outputs: Vec<(String, Id)>) -> Self {
-        Self {
-            program,
-            outputs,
-            evaluation: String::new(),
-        }
-    }
-
-    pub(crate) fn described(mut self, evaluation: &str) -> Self {
-        self.evaluation = evaluation.to_string();
-        self
-    }
-}
-
 /// The estimated run time of a method's program, in units of one multiplication: the
 /// operations (a division costs about four multiplications, a `sin_cos` call about twenty) plus
 /// the longest chain of dependent operations (latency the out-of-order core cannot hide).
@@ -167,13 +119,9 @@ pub(crate) fn cheapest(candidates: Vec<Method>) -> Method {
     best.expect("at least one candidate").1
 }
 
-pub(crate) fn two(i: usize, j: usize) -> String {
-    format!("{}{}", i + 1, j + 1)
-}
-
 /// The straight-line program of each generated method.
 impl<C: Emit> Derived<C> {
-    /// `M(q)`: the cheaper (by [`OpCount`]) of the expanded entries and an unrolled
+    /// `M(q)`: the cheaper (by [`OpCount`](crate::slp::OpCount)) of the expanded entries and an unrolled
     /// composite-rigid-body recursion. Upper triangle; the lower one is the same nodes.
     #[must_use]
     pub fn mass_matrix_method(&self) -> Method {
@@ -841,6 +789,7 @@ fn matrix_outputs(m: &[Vec<Id>]) -> Vec<(String, Id)> {
     outputs
 }
 
+mod derivatives;
 pub(crate) mod identification;
 #[cfg(test)]
 mod tests;

@@ -7,8 +7,8 @@
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
+use super::header::Header;
 use crate::emit::{coefficient_tokens, f64_tokens, local};
-use crate::generate::Header;
 use crate::mechanics::JointKind;
 use crate::methods::Derived;
 use crate::paths::F64;

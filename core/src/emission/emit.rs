@@ -16,8 +16,9 @@ use proc_macro2::{Delimiter, Group, Ident, Literal, Punct, Spacing, Span, TokenS
 use quote::quote;
 
 use crate::expr::Expr;
-use crate::methods::{two, Derived, Method};
+use crate::methods::{Derived, Method};
 use crate::poly::Param;
+use crate::programs::method::two;
 use crate::ring::{show, to_f64, to_i128_pair, Rational};
 use crate::slp::{Emit, Id, Input, Node, Program};
 

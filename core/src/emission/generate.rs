@@ -7,8 +7,8 @@ use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
 use crate::emit::{
-    check_representable, coefficient_tokens, f64_tokens, formula_doc, input_name, local, render,
-    EmitError, Scalar,
+    check_representable, coefficient_tokens, f64_tokens, formula_doc, local, render, EmitError,
+    Scalar,
 };
 use crate::expr::Expr;
 use crate::mechanics::JointKind;
@@ -17,49 +17,11 @@ use crate::paths::{F64, STR};
 use crate::slp::Emit;
 use crate::slp::Input;
 
+pub use super::header::Header;
+#[doc(no_inline)]
 pub use crate::closed_forms::closed_forms;
 
-/// The pieces of the user's type that the impl header needs.
-pub struct Header {
-    /// `impl<...>` generics.
-    pub impl_generics: TokenStream,
-    /// The type, with its generics.
-    pub ty: TokenStream,
-    /// The where clause.
-    pub where_clause: TokenStream,
-    /// The link fields' names: the generated code reads them once, because the marker fields
-    /// are otherwise never read and the user would get `dead_code` warnings.
-    pub fields: Vec<proc_macro2::Ident>,
-}
-
-/// A parameter of a generated method.
-#[derive(Clone, Copy)]
-pub(crate) enum Param {
-    /// `&SVector<f64, N>` unpacked into per-joint locals.
-    Joints(&'static str, fn(usize) -> Input),
-    /// `&Vector2<f64>` unpacked into `u, v`.
-    Force,
-    /// `f64` tip torque.
-    Torque,
-}
-
-/// Builds a method's return value from its output identifiers.
-pub(crate) type Finish<'a> = Box<dyn std::ops::Fn(&[proc_macro2::Ident]) -> TokenStream + 'a>;
-
-pub(crate) struct Fn<'a> {
-    pub(crate) name: &'static str,
-    pub(crate) params: Vec<Param>,
-    pub(crate) ret: TokenStream,
-    pub(crate) doc: String,
-    pub(crate) method: Method,
-    /// Statements before the body.
-    pub(crate) touch: TokenStream,
-    /// Builds the return value from the output identifiers.
-    pub(crate) finish: Finish<'a>,
-    /// Emitted generic over the scalar (`fn NAME<__T: ::planar_arm::Real>`), its vectors of
-    /// `__T`.
-    pub(crate) generic: bool,
-}
+use super::function::{calls_frozen, emit_fn, matrix, vector, Fn, Param};
 
 /// The methods that get a variant reading a frozen block (see [`crate::frozen`]): what
 /// simulators and controllers call every cycle.
@@ -70,132 +32,6 @@ const HOT: [&str; 5] = [
     "inverse_dynamics",
     "forward_dynamics",
 ];
-
-/// Emits `f`, or with `frozen = Some((method, slots))` its hidden variant
-/// `__NAME_frozen(&self, __block, ...)` that evaluates `method`, whose parameter-only values
-/// are read from a block of `slots` values.
-pub(crate) fn emit_fn(
-    n: usize,
-    f: &Fn<'_>,
-    frozen: Option<(&Method, usize)>,
-) -> Result<TokenStream, EmitError> {
-    let method = frozen.map_or(&f.method, |(m, _)| m);
-    let scalar = if f.generic {
-        Scalar::Generic
-    } else {
-        Scalar::F64
-    };
-    let rendered = render(method, scalar)?;
-    let real = if f.generic { quote!(__T) } else { quote!(#F64) };
-    let nn = Literal::usize_unsuffixed(n);
-    let mut params = Vec::new();
-    let mut unpack = Vec::new();
-    if let Some((_, slots)) = frozen {
-        let (block, slots) = (local("block"), Literal::usize_unsuffixed(slots));
-        params.push(quote!(#block: &::planar_arm::__private::Block<#slots>));
-    }
-    for p in &f.params {
-        match *p {
-            Param::Joints(name, kind) => {
-                let used: Vec<bool> = (0..n)
-                    .map(|j| rendered.inputs_used.contains(&kind(j)))
-                    .collect();
-                let pname = if used.iter().any(|&u| u) {
-                    local(name)
-                } else {
-                    local("_")
-                };
-                params.push(quote!(#pname: &::planar_arm::nalgebra::SVector<#real, #nn>));
-                if used.iter().any(|&u| u) {
-                    let pats = (0..n).map(|j| {
-                        if used[j] {
-                            let id = local(&input_name(kind(j), &[]));
-                            quote!(#id)
-                        } else {
-                            quote!(_)
-                        }
-                    });
-                    unpack
-                        .push(quote!(let [#(#pats),*] = ::planar_arm::__private::unpack(#pname);));
-                }
-            }
-            Param::Force => {
-                let u = rendered.inputs_used.contains(&Input::Force(0));
-                let v = rendered.inputs_used.contains(&Input::Force(1));
-                let pname = if u || v { local("force") } else { local("_") };
-                params.push(quote!(#pname: &::planar_arm::nalgebra::Vector2<#F64>));
-                if u || v {
-                    let (u, v) = (local("u"), local("v"));
-                    unpack.push(quote!(let [#u, #v] = ::planar_arm::__private::unpack(#pname);));
-                }
-            }
-            Param::Torque => {
-                let pname = if rendered.inputs_used.contains(&Input::TipTorque) {
-                    local("torque")
-                } else {
-                    local("_")
-                };
-                params.push(quote!(#pname: #F64));
-            }
-        }
-    }
-    let touch = &f.touch;
-    let statements = &rendered.statements;
-    let result = (f.finish)(&rendered.outputs);
-    let ret = &f.ret;
-    let (name, doc, hidden) = if frozen.is_some() {
-        let doc = format!(
-            "`{}` with the parameter-only values read from a block computed by `__freeze`. Cost: {}.",
-            f.name,
-            method.op_count()
-        );
-        (
-            quote::format_ident!("__{}_frozen", f.name),
-            doc,
-            quote!(#[doc(hidden)]),
-        )
-    } else {
-        let evaluation = if method.evaluation.is_empty() {
-            String::new()
-        } else {
-            format!("{}\n\n", method.evaluation)
-        };
-        let doc = format!("{}\n\n{evaluation}Cost: {}.", f.doc, method.op_count());
-        (quote::format_ident!("{}", f.name), doc, TokenStream::new())
-    };
-    let generics = if f.generic {
-        quote!(<__T: ::planar_arm::Real>)
-    } else {
-        TokenStream::new()
-    };
-    // A frozen variant that is also the body of its plain method (see `frozen_wrapper`) must
-    // cost that method nothing over the code it used to hold.
-    let inline = if frozen.is_some() && calls_frozen(n, f.name) {
-        quote!(#[inline(always)])
-    } else {
-        quote!(#[inline])
-    };
-    Ok(quote! {
-        #[doc = #doc]
-        #hidden
-        #inline
-        fn #name #generics(&self, #(#params),*) -> #ret {
-            #touch
-            #(#unpack)*
-            #(#statements)*
-            #result
-        }
-    })
-}
-
-/// Whether the plain hot method `name` of an arm of `n` joints with run-time parameters is
-/// emitted as a call of its frozen variant ([`frozen_wrapper`]). Measured, one run each,
-/// interleaved, against their own bodies: 0.96-1.03x at three to six links; `mass_matrix`
-/// 1.04-1.12x there, so it keeps its body; at two links `mass_matrix_and_bias` 1.06-1.09x, so
-/// they all do.
-fn calls_frozen(n: usize, name: &str) -> bool {
-    n >= 3 && name != "mass_matrix"
-}
 
 /// A hot method of an arm with run-time parameters as the parameter-only values its frozen
 /// variant `m` reads (computed from the fields, the block's other slots 0.0) followed by a
@@ -270,18 +106,6 @@ fn frozen_wrapper(
             self.#frozen(&#b, #(#args),*)
         }
     })
-}
-
-pub(crate) fn matrix(rows: usize, cols: usize, ids: &[proc_macro2::Ident]) -> TokenStream {
-    let rows = (0..rows).map(|r| {
-        let row = &ids[r * cols..(r + 1) * cols];
-        quote!([#(#row),*])
-    });
-    quote!(::planar_arm::__private::matrix([#(#rows),*]))
-}
-
-pub(crate) fn vector(ids: &[proc_macro2::Ident]) -> TokenStream {
-    quote!(::planar_arm::__private::vector([#(#ids),*]))
 }
 
 /// `kinetic_energy` as `qd^T M qd / 2` with `M` from `mass_matrix`:

@@ -1,6 +1,8 @@
 //! Tests of the candidate programs: every candidate against the expanded formulas, literal
 //! arms against their parameterised twins, for revolute and mixed chains.
 
+mod frozen;
+
 use super::*;
 use crate::mechanics::{JointKind, LinkSpec};
 use crate::poly::Poly;

@@ -5,9 +5,9 @@
 
 use num_traits::{One, Signed, Zero};
 
+use super::method::two;
 use crate::expr::Expr;
 use crate::mechanics::{ArmSpec, JointKind};
-use crate::methods::two;
 use crate::ring::Rational;
 use crate::slp::{Emit, Id, Input, OpCount, Program};
 use crate::trig::Angle;

@@ -1,24 +1,10 @@
-//! The Coriolis matrix `C(q, qd)` of Christoffel symbols, `C qd = c` with `Mdot - 2 C` skew,
-//! by two routes that give the same exact function.
-//!
-//! - [`expanded`]: every entry as an expanded formula,
-//!   `2 C_ij = Mdot_ij + dp_i/dq_j - dp_j/dq_i` from the momenta `p = M qd`. Its entries have
-//!   as many terms as M's times the rates, and deriving and emitting them cost long arms most
-//!   of the derive's time.
-//! - [`absolute_derivatives`] and [`absolute_program`]: for arms whose joints all turn. In
-//!   the links' absolute angles `phi_a = q_1 + ... + q_a` (rates `w = J qd`, `J` the lower
-//!   triangle of ones) the kinetic energy is `1/2 w^T Mt(phi) w` with
-//!   `M = J^T Mt J + diag(armature)` and each `Mt_ab` a function of `phi_a - phi_b` alone
-//!   ([`crate::mechanics`] builds it pair by pair). For such a metric the Christoffel sum collapses to
-//!   `Ct_ab = dMt_ab/dphi_b w_b`, and since `J` is constant the symbols transform as a tensor:
-//!   `C = J^T Ct J`, sums of suffixes. `D_ab = dMt_ab/dphi_b` is antisymmetric, so the
-//!   program needs `n (n - 1) / 2` small derivatives, twice as many products with the rates
-//!   and about `2 n^2` additions, instead of `n^2` expanded entries.
+//! The Christoffel symbols of the mass matrix, by the two routes of [`crate::christoffel`]:
+//! the Coriolis matrix expanded entry by entry, and the derivatives `D_ab = dMt_ab/dphi_b` of
+//! the metric in the links' absolute angles, from which a program sums it.
 
+use super::spec::ArmSpec;
 use crate::expr::{Expr, Var};
-use crate::mechanics::ArmSpec;
 use crate::ring::{ratio, Coefficient};
-use crate::slp::{Emit, Id, Input, Program};
 
 /// `C` row-major from M and the momenta `p = M qd`, expanded:
 /// `C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k`, summed in closed form:
@@ -89,53 +75,6 @@ pub fn absolute_derivatives<C: Coefficient>(
         d.push(row);
     }
     Some(d)
-}
-
-/// The program of `C = J^T Ct J` from [`absolute_derivatives`]: `n^2` output nodes,
-/// row-major. `C_ij = sum_(a >= i) R_aj` with the row suffixes `R_aj = sum_(b >= j) Ct_ab`
-/// and `Ct_ab = D_ab w_b` (`-D_ba w_b` above the diagonal, zero on it): `n (n - 1)`
-/// products and `2 n^2` additions at most.
-pub fn absolute_program<C: Emit>(p: &mut Program, d: &[Vec<Expr<C>>]) -> Vec<Id> {
-    let n = d.len();
-    let zero = p.constant(crate::ring::int(0));
-    let mut w = Vec::with_capacity(n);
-    for k in 0..n {
-        let qd = p.input(Input::Qd(k));
-        let wk = if k == 0 { qd } else { p.add(w[k - 1], qd) };
-        w.push(wk);
-    }
-    let dn: Vec<Vec<Id>> = d
-        .iter()
-        .map(|row| row.iter().map(|e| p.expr(e)).collect())
-        .collect();
-    // r[a][j] = R_aj.
-    let mut r = vec![vec![zero; n]; n];
-    for a in 0..n {
-        let mut acc = zero;
-        for b in (0..n).rev() {
-            acc = match a.cmp(&b) {
-                std::cmp::Ordering::Greater => {
-                    let t = p.mul(dn[a][b], w[b]);
-                    p.add(t, acc)
-                }
-                std::cmp::Ordering::Less => {
-                    let t = p.mul(dn[b][a], w[b]);
-                    p.sub(acc, t)
-                }
-                std::cmp::Ordering::Equal => acc,
-            };
-            r[a][b] = acc;
-        }
-    }
-    let mut c = vec![zero; n * n];
-    for j in 0..n {
-        let mut acc = zero;
-        for i in (0..n).rev() {
-            acc = p.add(r[i][j], acc);
-            c[i * n + j] = acc;
-        }
-    }
-    c
 }
 
 #[cfg(test)]

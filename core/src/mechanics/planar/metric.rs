@@ -11,8 +11,10 @@
 //! `a > b` and `D_ba = -D_ab`. The same canonical expressions either way (the tests compare
 //! them with the Hessian of T and with Lagrange's equation).
 
+use super::bodies::Body;
+use super::rates::RateProducts;
+use super::spec::ArmSpec;
 use crate::expr::Expr;
-use crate::mechanics::{ArmSpec, Body, RateProducts};
 use crate::ring::{int, Coefficient};
 use crate::trig::Angle;
 

@@ -1,8 +1,14 @@
 //! Tests of the Lagrangian derivation: M, c, C and g against Lagrange's equation expanded, the
 //! Christoffel symbols summed one by one, the squared velocities, and closed forms by hand.
 
+use super::bodies::bodies;
+use super::energy::{kinetic_energy, kinetic_energy_of_velocities};
+use super::kinematics::point_on_link;
+use super::rates::rate;
 use super::*;
-use crate::trig::Trig;
+use crate::expr::{Expr, Var};
+use crate::ring::{int, ratio, Coefficient, Rational};
+use crate::trig::{Angle, Trig};
 
 fn c(k: &[i32]) -> Trig {
     Trig::Cos(Angle::new(k.to_vec()))

@@ -118,35 +118,3 @@ fn the_metric_in_absolute_angles_depends_on_differences() {
         }
     }
 }
-
-/// The program evaluates what the expanded entries evaluate.
-#[test]
-fn the_program_is_the_expanded_matrix() {
-    for n in 1..=6 {
-        let arm = uneven_arm(n);
-        let dy = Dynamics::derive(&arm);
-        let d = absolute_derivatives(&arm, &dy.mass_matrix).expect("all revolute");
-        let mut p = Program::new();
-        let out = absolute_program(&mut p, &d);
-        #[allow(clippy::cast_precision_loss)]
-        let q: Vec<f64> = (0..n).map(|k| 0.3 + 0.7 * k as f64).collect();
-        #[allow(clippy::cast_precision_loss)]
-        let qd: Vec<f64> = (0..n).map(|k| 1.1 - 0.45 * k as f64).collect();
-        let values = p.eval(&|i| match i {
-            Input::Q(k) => q[k],
-            Input::Qd(k) => qd[k],
-            _ => f64::NAN,
-        });
-        let cm = expanded(&dy.mass_matrix);
-        for i in 0..n {
-            for j in 0..n {
-                let want = cm[i][j].eval(&q, &qd, &[]);
-                let got = values[out[i * n + j].0 as usize];
-                assert!(
-                    (got - want).abs() <= 1e-12 * want.abs().max(1.0),
-                    "C{i}{j}: {got} vs {want}"
-                );
-            }
-        }
-    }
-}

@@ -2,7 +2,7 @@
 //! energies' elimination against the torques', groupings with run-time lengths.
 
 use super::*;
-use crate::identification::poly_arm;
+use crate::methods::identification::poly_arm;
 use crate::ring::{int, ratio};
 
 fn arm(n: usize, gravity: bool, armature: bool, payload: bool) -> ArmSpec {

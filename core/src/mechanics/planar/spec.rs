@@ -1,0 +1,162 @@
+//! The planar arm as the derive reads it: links and their joints, gravity, a payload, with
+//! exact values or polynomials in run-time parameters.
+
+use crate::poly::{Param, Poly};
+use crate::ring::{int, ratio, Coefficient, Rational};
+
+/// The kind of a link's joint.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum JointKind {
+    /// A hinge: `q_i` is the link's angle relative to the previous link.
+    #[default]
+    Revolute,
+    /// A slider along the previous link's direction (for the first link, +x of the base):
+    /// `q_i` is the displacement; the link does not turn.
+    Prismatic,
+}
+
+/// One link and its joint: exact parameters (or polynomials in run-time parameters).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LinkSpec<C = Rational> {
+    /// Joint-to-joint length.
+    pub length: C,
+    /// Mass.
+    pub mass: C,
+    /// Moment of inertia about the centre of mass.
+    pub inertia: C,
+    /// The centre of mass in the link's frame: `.0` along the link from its own joint toward
+    /// the next, `.1` perpendicular to it, counter-clockwise.
+    pub com: (C, C),
+    /// Reflected rotor inertia at this link's joint (MuJoCo's `armature`): kinetic energy
+    /// `armature qd_i^2 / 2`, so it adds to `M_ii`.
+    pub armature: C,
+    /// Viscous friction at this link's joint: torque `damping qd_i`.
+    pub damping: C,
+    /// Coulomb friction at this link's joint: torque `frictionloss sign(qd_i)`.
+    pub frictionloss: C,
+    /// The joint's kind.
+    pub joint: JointKind,
+    /// The joint's range `(lower, upper)`, if given: kinematics only, never the dynamics.
+    pub range: Option<(Rational, Rational)>,
+}
+
+impl<C: Coefficient> LinkSpec<C> {
+    /// A uniform rod: inertia `m l^2 / 12`, centre of mass at `(l / 2, 0)`, no armature, no
+    /// friction.
+    #[must_use]
+    pub fn rod(length: C, mass: C) -> Self {
+        let zero = C::from_rational(int(0));
+        Self {
+            inertia: (mass.clone() * length.clone() * length.clone()).scale(&ratio(1, 12)),
+            com: (length.scale(&ratio(1, 2)), zero.clone()),
+            length,
+            mass,
+            armature: zero.clone(),
+            damping: zero.clone(),
+            frictionloss: zero,
+            joint: JointKind::Revolute,
+            range: None,
+        }
+    }
+}
+
+/// A body rigidly held at the tip of the last link: a payload, a tool, a gripper.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PayloadSpec<C = Rational> {
+    /// Mass.
+    pub mass: C,
+    /// Moment of inertia about its own centre of mass.
+    pub inertia: C,
+    /// Its centre of mass relative to the tip, in the last link's frame.
+    pub com: (C, C),
+}
+
+/// A planar serial arm of revolute links, base first, with gravity of magnitude `gravity`
+/// along -y and perhaps a payload at the tip.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ArmSpec<C = Rational> {
+    /// The links, base first.
+    pub links: Vec<LinkSpec<C>>,
+    /// Magnitude of gravity, along -y.
+    pub gravity: C,
+    /// The body held at the tip, if any.
+    pub payload: Option<PayloadSpec<C>>,
+}
+
+impl ArmSpec<Rational> {
+    /// `n` equal uniform rods of unit length and mass, no gravity: the paper's equal links.
+    #[must_use]
+    pub fn paper(n: usize) -> Self {
+        Self {
+            links: vec![LinkSpec::rod(int(1), int(1)); n],
+            gravity: int(0),
+            payload: None,
+        }
+    }
+}
+
+impl ArmSpec<Rational> {
+    /// The same arm with every value a run-time parameter, named `v0, v1, ...` in the order
+    /// link by link (length, mass, inertia, com x, com y, armature, damping, frictionloss),
+    /// then gravity, then the payload's; and each parameter's value. The derivation over it,
+    /// evaluated at those values, must give the literal arm's numbers: a check of the
+    /// polynomial path against the rational one.
+    #[must_use]
+    pub fn parameterised(&self) -> (ArmSpec<Poly>, Vec<(Param, Rational)>) {
+        let mut values = Vec::new();
+        let mut param = |r: &Rational| {
+            let p = Param::new(&format!("v{}", values.len()));
+            values.push((p.clone(), r.clone()));
+            Poly::param(p)
+        };
+        let links = self
+            .links
+            .iter()
+            .map(|l| LinkSpec {
+                length: param(&l.length),
+                mass: param(&l.mass),
+                inertia: param(&l.inertia),
+                com: (param(&l.com.0), param(&l.com.1)),
+                armature: param(&l.armature),
+                damping: param(&l.damping),
+                frictionloss: param(&l.frictionloss),
+                joint: l.joint,
+                range: l.range.clone(),
+            })
+            .collect();
+        let gravity = param(&self.gravity);
+        let payload = self.payload.as_ref().map(|p| PayloadSpec {
+            mass: param(&p.mass),
+            inertia: param(&p.inertia),
+            com: (param(&p.com.0), param(&p.com.1)),
+        });
+        (
+            ArmSpec {
+                links,
+                gravity,
+                payload,
+            },
+            values,
+        )
+    }
+}
+
+impl<C> ArmSpec<C> {
+    /// Whether every joint is revolute (the paper's arms).
+    #[must_use]
+    pub fn all_revolute(&self) -> bool {
+        self.links.iter().all(|l| l.joint == JointKind::Revolute)
+    }
+
+    /// The same arm with joint `i` prismatic where bit `i` of `pattern` is set: the tests'
+    /// way to run one check over every mix of joint kinds.
+    #[cfg(test)]
+    pub(crate) fn with_prismatic(mut self, pattern: u32) -> Self {
+        for (i, l) in self.links.iter_mut().enumerate() {
+            if pattern >> i & 1 == 1 {
+                l.joint = JointKind::Prismatic;
+            }
+        }
+        self
+    }
+}
