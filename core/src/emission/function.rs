@@ -4,7 +4,7 @@
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
-use crate::emit::{input_name, local, render, EmitError, Scalar};
+use crate::emit::{input_name, local, render, EmitError, Rendered, Scalar};
 use crate::methods::Method;
 use crate::paths::F64;
 use crate::slp::Input;
@@ -23,6 +23,7 @@ pub(crate) enum Param {
 /// Builds a method's return value from its output identifiers.
 pub(crate) type Finish<'a> = Box<dyn std::ops::Fn(&[proc_macro2::Ident]) -> TokenStream + 'a>;
 
+/// A generated method whose body is its program.
 pub(crate) struct Fn<'a> {
     pub(crate) name: &'static str,
     pub(crate) params: Vec<Param>,
@@ -38,29 +39,126 @@ pub(crate) struct Fn<'a> {
     pub(crate) generic: bool,
 }
 
-/// Emits `f`, or with `frozen = Some((method, slots))` its hidden variant
-/// `__NAME_frozen(&self, __block, ...)` that evaluates `method`, whose parameter-only values
-/// are read from a block of `slots` values.
+impl<'a> Fn<'a> {
+    /// A method generic over the scalar, with nothing before its body.
+    pub(crate) fn new(
+        name: &'static str,
+        params: Vec<Param>,
+        ret: TokenStream,
+        doc: String,
+        method: Method,
+        finish: Finish<'a>,
+    ) -> Self {
+        Self {
+            name,
+            params,
+            ret,
+            doc,
+            method,
+            touch: TokenStream::new(),
+            finish,
+            generic: true,
+        }
+    }
+
+    /// The same method in `f64` only.
+    pub(crate) fn in_f64(mut self) -> Self {
+        self.generic = false;
+        self
+    }
+
+    /// The same method with `touch` before its body.
+    pub(crate) fn touching(mut self, touch: TokenStream) -> Self {
+        self.touch = touch;
+        self
+    }
+}
+
+/// The hidden variant of a method that reads its parameter-only values from a frozen block
+/// (see [`crate::frozen`]).
+#[derive(Clone, Copy)]
+pub(crate) struct FrozenVariant<'m> {
+    /// The method split at its parameter-only frontier.
+    pub(crate) method: &'m Method,
+    /// The number of values in the block.
+    pub(crate) slots: usize,
+    /// Whether the plain method is a call of this variant, which must then cost it nothing
+    /// over the code it used to hold.
+    pub(crate) is_body: bool,
+}
+
+/// Emits `f`, or with `frozen` its hidden variant `__NAME_frozen(&self, __block, ...)`.
 pub(crate) fn emit_fn(
     n: usize,
     f: &Fn<'_>,
-    frozen: Option<(&Method, usize)>,
+    frozen: Option<FrozenVariant<'_>>,
 ) -> Result<TokenStream, EmitError> {
-    let method = frozen.map_or(&f.method, |(m, _)| m);
+    let method = frozen.map_or(&f.method, |v| v.method);
     let scalar = if f.generic {
         Scalar::Generic
     } else {
         Scalar::F64
     };
     let rendered = render(method, scalar)?;
+    let (mut params, unpack) = parameters(n, f, &rendered);
+    if let Some(v) = frozen {
+        let (block, slots) = (local("block"), Literal::usize_unsuffixed(v.slots));
+        params.insert(0, quote!(#block: &::planar_arm::__private::Block<#slots>));
+    }
+    let touch = &f.touch;
+    let statements = &rendered.statements;
+    let result = (f.finish)(&rendered.outputs);
+    let ret = &f.ret;
+    let (name, doc, hidden) = if frozen.is_some() {
+        let doc = format!(
+            "`{}` with the parameter-only values read from a block computed by `__freeze`. Cost: {}.",
+            f.name,
+            method.op_count()
+        );
+        (
+            quote::format_ident!("__{}_frozen", f.name),
+            doc,
+            quote!(#[doc(hidden)]),
+        )
+    } else {
+        let evaluation = if method.evaluation.is_empty() {
+            String::new()
+        } else {
+            format!("{}\n\n", method.evaluation)
+        };
+        let doc = format!("{}\n\n{evaluation}Cost: {}.", f.doc, method.op_count());
+        (quote::format_ident!("{}", f.name), doc, TokenStream::new())
+    };
+    let generics = if f.generic {
+        quote!(<__T: ::planar_arm::Real>)
+    } else {
+        TokenStream::new()
+    };
+    let inline = if frozen.is_some_and(|v| v.is_body) {
+        quote!(#[inline(always)])
+    } else {
+        quote!(#[inline])
+    };
+    Ok(quote! {
+        #[doc = #doc]
+        #hidden
+        #inline
+        fn #name #generics(&self, #(#params),*) -> #ret {
+            #touch
+            #(#unpack)*
+            #(#statements)*
+            #result
+        }
+    })
+}
+
+/// The parameters of `f` as the rendered body reads them, and the statements that unpack them
+/// into the inputs' locals. A parameter the body does not read is `_`.
+fn parameters(n: usize, f: &Fn<'_>, rendered: &Rendered) -> (Vec<TokenStream>, Vec<TokenStream>) {
     let real = if f.generic { quote!(__T) } else { quote!(#F64) };
     let nn = Literal::usize_unsuffixed(n);
     let mut params = Vec::new();
     let mut unpack = Vec::new();
-    if let Some((_, slots)) = frozen {
-        let (block, slots) = (local("block"), Literal::usize_unsuffixed(slots));
-        params.push(quote!(#block: &::planar_arm::__private::Block<#slots>));
-    }
     for p in &f.params {
         match *p {
             Param::Joints(name, kind) => {
@@ -106,64 +204,10 @@ pub(crate) fn emit_fn(
             }
         }
     }
-    let touch = &f.touch;
-    let statements = &rendered.statements;
-    let result = (f.finish)(&rendered.outputs);
-    let ret = &f.ret;
-    let (name, doc, hidden) = if frozen.is_some() {
-        let doc = format!(
-            "`{}` with the parameter-only values read from a block computed by `__freeze`. Cost: {}.",
-            f.name,
-            method.op_count()
-        );
-        (
-            quote::format_ident!("__{}_frozen", f.name),
-            doc,
-            quote!(#[doc(hidden)]),
-        )
-    } else {
-        let evaluation = if method.evaluation.is_empty() {
-            String::new()
-        } else {
-            format!("{}\n\n", method.evaluation)
-        };
-        let doc = format!("{}\n\n{evaluation}Cost: {}.", f.doc, method.op_count());
-        (quote::format_ident!("{}", f.name), doc, TokenStream::new())
-    };
-    let generics = if f.generic {
-        quote!(<__T: ::planar_arm::Real>)
-    } else {
-        TokenStream::new()
-    };
-    // A frozen variant that is also the body of its plain method (see `frozen_wrapper`) must
-    // cost that method nothing over the code it used to hold.
-    let inline = if frozen.is_some() && calls_frozen(n, f.name) {
-        quote!(#[inline(always)])
-    } else {
-        quote!(#[inline])
-    };
-    Ok(quote! {
-        #[doc = #doc]
-        #hidden
-        #inline
-        fn #name #generics(&self, #(#params),*) -> #ret {
-            #touch
-            #(#unpack)*
-            #(#statements)*
-            #result
-        }
-    })
+    (params, unpack)
 }
 
-/// Whether the plain hot method `name` of an arm of `n` joints with run-time parameters is
-/// emitted as a call of its frozen variant (`frozen_wrapper` of [`crate::generate`]). Measured, one run each,
-/// interleaved, against their own bodies: 0.96-1.03x at three to six links; `mass_matrix`
-/// 1.04-1.12x there, so it keeps its body; at two links `mass_matrix_and_bias` 1.06-1.09x, so
-/// they all do.
-pub(crate) fn calls_frozen(n: usize, name: &str) -> bool {
-    n >= 3 && name != "mass_matrix"
-}
-
+/// `::planar_arm::__private::matrix` of the row-major outputs of a `rows x cols` matrix.
 pub(crate) fn matrix(rows: usize, cols: usize, ids: &[proc_macro2::Ident]) -> TokenStream {
     let rows = (0..rows).map(|r| {
         let row = &ids[r * cols..(r + 1) * cols];
@@ -172,6 +216,7 @@ pub(crate) fn matrix(rows: usize, cols: usize, ids: &[proc_macro2::Ident]) -> To
     quote!(::planar_arm::__private::matrix([#(#rows),*]))
 }
 
+/// `::planar_arm::__private::vector` of the outputs.
 pub(crate) fn vector(ids: &[proc_macro2::Ident]) -> TokenStream {
     quote!(::planar_arm::__private::vector([#(#ids),*]))
 }
