@@ -6,7 +6,9 @@ mod frozen;
 use super::*;
 use crate::mechanics::{JointKind, LinkSpec};
 use crate::poly::Poly;
+use crate::programs::unrolled::Terms;
 use crate::ring::ratio;
+use crate::slp::Input;
 
 /// An arm with uneven parameters (an offset centre of mass off the link's axis, a
 /// counterweight, armature, friction and a payload).
