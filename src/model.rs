@@ -2,6 +2,8 @@
 use num_traits::Float as _;
 
 use nalgebra::{SVector, Vector2};
+#[cfg(not(feature = "std"))]
+use num_traits::Float as _;
 
 use crate::{ArmError, Joint, Link};
 
