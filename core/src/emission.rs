@@ -2,11 +2,15 @@
 //! emits ([`generate`], [`closed_forms`], [`identification`]), the exact `const` data
 //! ([`compact`]) and the paths the generated code names ([`paths`]).
 
+mod chunks;
 pub mod closed_forms;
 pub mod compact;
 pub mod emit;
+mod error;
+mod formulas;
 mod function;
 pub mod generate;
 mod header;
 pub mod identification;
 pub mod paths;
+mod tokens;

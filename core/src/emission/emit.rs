@@ -9,105 +9,21 @@
 //! neither capture nor be captured by the user's items. Output is deterministic.
 
 use std::collections::BTreeMap;
-use std::fmt::Write as _;
 
-use num_traits::{Signed, ToPrimitive, Zero};
 use proc_macro2::{Delimiter, Group, Ident, Literal, Punct, Spacing, Span, TokenStream, TokenTree};
 use quote::quote;
 
-use crate::expr::Expr;
-use crate::methods::{Derived, Method};
+use super::chunks::chunked;
+use super::tokens::{constant_inner, path, punct, wrapped};
+use crate::methods::Method;
 use crate::poly::Param;
-use crate::programs::method::two;
-use crate::ring::{show, to_f64, to_i128_pair, Rational};
+use crate::ring::Rational;
 use crate::slp::{Emit, Id, Input, Node, Program};
 
-/// Why an arm cannot be emitted.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct EmitError {
-    /// What went wrong, lowercase, naming the fix.
-    pub message: String,
-}
-
-impl std::fmt::Display for EmitError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.message)
-    }
-}
-
-impl std::error::Error for EmitError {}
-
-/// `f64` tokens of an exact constant: `2.0`, `(10.0 / 3.0)`, or the nearest `f64` when the
-/// numerator or denominator is not exact in `f64`.
-///
-/// # Errors
-/// If the value is outside the finite `f64` range.
-pub fn f64_tokens(r: &Rational) -> Result<TokenStream, EmitError> {
-    Ok(wrapped(constant_inner(r)?).into_iter().collect())
-}
-
-/// An `f64` constant as an expression in its own right, as a function's argument is:
-/// `2.0`, `10.0 / 3.0`, `-(10.0 / 3.0)`.
-pub(crate) fn f64_argument_tokens(r: &Rational) -> Result<TokenStream, EmitError> {
-    Ok(constant_inner(r)?.into_iter().collect())
-}
-
-/// A constant's tokens without outer parentheses: `2.0`, `10.0 / 3.0`, `-2.0`, `-(10.0 / 3.0)`.
-fn constant_inner(r: &Rational) -> Result<Vec<TokenTree>, EmitError> {
-    const EXACT: u64 = 1 << 53;
-    let value = to_f64(r).ok_or_else(|| EmitError {
-        message: format!("the constant {} does not fit in f64", show(r)),
-    })?;
-    let magnitude = r.abs();
-    let num = magnitude.numer().to_u64().filter(|&v| v <= EXACT);
-    let den = magnitude.denom().to_u64().filter(|&v| v <= EXACT);
-    let body: Vec<TokenTree> = match (num, den) {
-        #[allow(clippy::cast_precision_loss)] // both are at most 2^53, exact in f64
-        (Some(a), Some(1)) => vec![Literal::f64_unsuffixed(a as f64).into()],
-        #[allow(clippy::cast_precision_loss)]
-        (Some(a), Some(b)) => vec![
-            Literal::f64_unsuffixed(a as f64).into(),
-            punct('/'),
-            Literal::f64_unsuffixed(b as f64).into(),
-        ],
-        _ => vec![Literal::f64_unsuffixed(value.abs()).into()],
-    };
-    Ok(if r.is_negative() {
-        vec![punct('-'), atom(body)]
-    } else {
-        body
-    })
-}
-
-/// The tokens as one operand: themselves if they are one token tree, else in parentheses.
-fn atom(mut tokens: Vec<TokenTree>) -> TokenTree {
-    if tokens.len() == 1 {
-        if let Some(t) = tokens.pop() {
-            return t;
-        }
-    }
-    Group::new(Delimiter::Parenthesis, tokens.into_iter().collect()).into()
-}
-
-/// [`atom`] as a token list.
-fn wrapped(tokens: Vec<TokenTree>) -> Vec<TokenTree> {
-    vec![atom(tokens)]
-}
-
-fn punct(c: char) -> TokenTree {
-    Punct::new(c, Spacing::Alone).into()
-}
-
-/// `::a::b::c` (every segment at the call site, as `quote!` writes it).
-fn path(segments: &[&str]) -> Vec<TokenTree> {
-    let mut out = Vec::with_capacity(3 * segments.len());
-    for s in segments {
-        out.push(Punct::new(':', Spacing::Joint).into());
-        out.push(Punct::new(':', Spacing::Alone).into());
-        out.push(Ident::new(s, Span::call_site()).into());
-    }
-    out
-}
+pub use super::error::EmitError;
+pub use super::formulas::{check_representable, formula_doc, long_formula_doc, DOC_TERMS};
+pub(crate) use super::tokens::f64_argument_tokens;
+pub use super::tokens::f64_tokens;
 
 /// Precedence of an emitted expression, to place parentheses.
 #[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
@@ -512,49 +428,6 @@ pub fn render(method: &Method, scalar: Scalar) -> Result<Rendered, EmitError> {
     })
 }
 
-/// The most `let`s in one block of a generated method.
-///
-/// Each `let` opens a scope that nests until the end of its block, and LLVM builds the debug
-/// information of nested scopes recursively: a method of several thousand `let`s (the
-/// regressor of a 30-link arm has 4,000) overflowed rustc's stack in a `dev` build
-/// (`debuginfo = 2`), where 2,700 still compiled.
-const CHUNK: usize = 1000;
-
-/// `statements[prefix..]` in blocks of at most [`CHUNK`] `let`s, each block handing on what
-/// later statements read: `let (a, b, ...) = { ...; (a, b, ...) };`. A method of fewer
-/// statements comes back as one token stream.
-fn chunked(
-    statements: Vec<Vec<TokenTree>>,
-    prefix: usize,
-    defined: &[(usize, Ident)],
-    last_read: &[usize],
-) -> Vec<TokenStream> {
-    if statements.len() - prefix <= CHUNK {
-        return vec![statements.into_iter().flatten().collect()];
-    }
-    let name_of: BTreeMap<usize, &Ident> = defined.iter().map(|(s, i)| (*s, i)).collect();
-    let mut out = Vec::new();
-    let mut it = statements.into_iter().enumerate().peekable();
-    while let Some((_, st)) = it.next_if(|(s, _)| *s < prefix) {
-        out.push(st.into_iter().collect());
-    }
-    let rest: Vec<(usize, Vec<TokenTree>)> = it.collect();
-    for chunk in rest.chunks(CHUNK) {
-        let end = chunk.last().map_or(0, |c| c.0 + 1);
-        let handed: Vec<&Ident> = chunk
-            .iter()
-            .filter(|(s, _)| last_read[*s] >= end)
-            .filter_map(|(s, _)| name_of.get(s).copied())
-            .collect();
-        let body: TokenStream = chunk
-            .iter()
-            .flat_map(|(_, st)| st.iter().cloned())
-            .collect();
-        out.push(quote!(let (#(#handed,)*) = { #body (#(#handed,)*) };));
-    }
-    out
-}
-
 /// An `f64` expression of a coefficient: a literal such as `(10.0 / 3.0)`, or for one with
 /// run-time parameters a block that reads them from `self` and evaluates the polynomial.
 ///
@@ -577,75 +450,4 @@ pub fn coefficient_tokens<C: Emit>(c: &C) -> Result<TokenStream, EmitError> {
     let statements = &rendered.statements;
     let out = &rendered.outputs[0];
     Ok(quote!({ #(#statements)* #out }))
-}
-
-/// A method's doc comment when its formulas, of `terms` terms, are past [`DOC_TERMS`]: formulas
-/// this long are not read in rustdoc, and formatting them costs every user compile time.
-#[must_use]
-pub fn long_formula_doc(title: &str, terms: usize) -> String {
-    format!(
-        "{title}\n\nThe exact formulas have {terms} terms, more than the {DOC_TERMS} shown \
-         in the documentation; `PlanarArm::EXACT` holds M, c, g, T and V exactly \
-         (each entry prints with `Display`), and `planar_arm::symbolic` (feature \
-         `symbolic`) derives them."
-    )
-}
-
-/// Human-readable formulas for a method's doc comment.
-#[must_use]
-pub fn formula_doc<C: Emit>(title: &str, rows: &[(String, &Expr<C>)]) -> String {
-    let terms: usize = rows.iter().map(|(_, e)| e.len()).sum();
-    if terms > DOC_TERMS {
-        return long_formula_doc(title, terms);
-    }
-    let mut s = format!("{title}\n\n```text\n");
-    for (name, e) in rows {
-        let _ = writeln!(s, "{name} = {e}");
-    }
-    s.push_str("```\n");
-    s
-}
-
-/// The most terms a method's documentation prints: every formula of an arm of up to four
-/// links; at six links the longest (736 terms) is left to `EXACT`. Formatting the formulas,
-/// and expanding C only to print it, was a fifth of an unoptimised 6-link derive at 2,000.
-pub const DOC_TERMS: usize = 500;
-
-/// Fails if a derived coefficient cannot be emitted as `const` data (`i128`) or as `f64`.
-///
-/// # Errors
-/// Names the first entry whose coefficient does not fit.
-pub fn check_representable<C: Emit>(d: &Derived<C>) -> Result<(), EmitError> {
-    let check = |what: &str, e: &Expr<C>| -> Result<(), EmitError> {
-        for (_, _, c) in e
-            .terms()
-            .flat_map(|(m, t, c)| c.parts().into_iter().map(move |(_, r)| (m, t, r)))
-        {
-            let c = &c;
-            if to_i128_pair(c).is_none() || to_f64(c).is_none() || c.is_zero() {
-                return Err(EmitError {
-                    message: format!(
-                        "the exact coefficient {} in {what} does not fit in i128 and f64; \
-                         choose link parameters with smaller numerators and denominators",
-                        show(c)
-                    ),
-                });
-            }
-        }
-        Ok(())
-    };
-    check("the kinetic energy", &d.dynamics.kinetic_energy)?;
-    check("the potential energy", &d.dynamics.potential_energy)?;
-    for (i, row) in d.dynamics.mass_matrix.iter().enumerate() {
-        for (j, e) in row.iter().enumerate() {
-            check(&format!("M{}", two(i, j)), e)?;
-        }
-    }
-    for (i, e) in d.dynamics.coriolis.iter().enumerate() {
-        check(&format!("c{}", i + 1), e)?;
-    }
-    for (i, e) in d.dynamics.gravity.iter().enumerate() {
-        check(&format!("g{}", i + 1), e)?;
-    }
-    Ok(())
 }
