@@ -3,6 +3,7 @@
 //! ([`trig`]) and the canonical sums of terms built from them ([`expr`]).
 
 pub mod expr;
+mod monomial;
 pub mod poly;
 pub mod ring;
 pub mod trig;
