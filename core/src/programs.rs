@@ -6,5 +6,11 @@ pub mod christoffel;
 pub mod derivative;
 pub mod frozen;
 pub mod method;
-pub mod slp;
+pub mod slp {
+    //! Straight-line programs: the run-time half of the engine.
+
+    mod program;
+
+    pub use program::*;
+}
 pub(crate) mod unrolled;
