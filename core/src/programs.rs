@@ -6,11 +6,5 @@ pub mod christoffel;
 pub mod derivative;
 pub mod frozen;
 pub mod method;
-pub mod slp {
-    //! Straight-line programs: the run-time half of the engine.
-
-    mod program;
-
-    pub use program::*;
-}
+pub mod slp;
 pub(crate) mod unrolled;

@@ -1,9 +1,5 @@
-//! Straight-line programs: the run-time half of the engine.
-//!
-//! A [`Program`] is an arena of nodes addressed by [`Id`], children before parents (egg's
-//! `RecExpr`). Construction is hash-consed, so a subexpression built twice is one node and
-//! common subexpressions are shared by construction. Trigonometric atoms are built from one
-//! `sin_cos` per joint by the angle-addition formulas, each computed once per call.
+//! The program: its nodes, hash-consed construction with constants folded, trigonometric
+//! atoms from one `sin_cos` per joint, and the coefficients it can compute ([`Emit`]).
 
 use std::collections::BTreeMap;
 
@@ -13,10 +9,6 @@ use crate::expr::{Expr, Monomial, Var};
 use crate::poly::{Param, ParamMonomial, Poly};
 use crate::ring::Rational;
 use crate::trig::{Angle, Trig};
-
-/// The latency of a division in units of an addition's or multiplication's (about 13-15
-/// cycles against 4 on current x86-64 cores).
-pub const DIV_LATENCY: usize = 3;
 
 /// A node index.
 #[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Debug)]
@@ -69,45 +61,6 @@ pub enum Node {
     Max(Id, Id),
     /// The sign of `a`: -1, 0 or 1 (0 at zero, unlike `f64::signum`; NaN stays NaN).
     Sign(Id),
-}
-
-/// Operation counts of a program (or of the part that reaches given outputs).
-#[derive(Clone, Copy, PartialEq, Eq, Debug, Default)]
-pub struct OpCount {
-    /// Multiplications.
-    pub mul: usize,
-    /// Additions, subtractions and negations.
-    pub add: usize,
-    /// Divisions.
-    pub div: usize,
-    /// Sine-cosine pairs, one per joint angle used (the generated code evaluates them all in
-    /// one call of `planar_arm::trig::sin_cos`).
-    pub sin_cos: usize,
-}
-
-/// The operations of two programs evaluated one after the other at the same joint angles (a
-/// method and the values or the solve it delegates to): the arithmetic adds up, the `sin_cos`
-/// pairs are shared.
-impl std::ops::Add for OpCount {
-    type Output = Self;
-    fn add(self, other: Self) -> Self {
-        Self {
-            mul: self.mul + other.mul,
-            add: self.add + other.add,
-            div: self.div + other.div,
-            sin_cos: self.sin_cos.max(other.sin_cos),
-        }
-    }
-}
-
-impl std::fmt::Display for OpCount {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(
-            f,
-            "{} multiplications, {} additions, {} divisions, {} sin_cos pairs",
-            self.mul, self.add, self.div, self.sin_cos
-        )
-    }
 }
 
 /// A hash-consed straight-line program.
@@ -504,112 +457,6 @@ impl Program {
             .map(|r| map[r.0 as usize].expect("roots are live"))
             .collect()
     }
-
-    /// Interprets the program: the value of every node, given the inputs and joint angles.
-    ///
-    /// This is the reference semantics of what [`emit`](crate::emit) renders as Rust, so the
-    /// programs can be tested on arms chosen at run time.
-    #[must_use]
-    pub fn eval(&self, input: &dyn Fn(Input) -> f64) -> Vec<f64> {
-        let mut v: Vec<f64> = Vec::with_capacity(self.nodes.len());
-        for node in &self.nodes {
-            let x = match *node {
-                Node::Input(i) => input(i),
-                Node::Const(ref r) => crate::ring::to_f64(r).unwrap_or(f64::NAN),
-                Node::Sin(j) => input(Input::Q(j)).sin(),
-                Node::Cos(j) => input(Input::Q(j)).cos(),
-                Node::Add(a, b) => v[a.0 as usize] + v[b.0 as usize],
-                Node::Sub(a, b) => v[a.0 as usize] - v[b.0 as usize],
-                Node::Mul(a, b) => v[a.0 as usize] * v[b.0 as usize],
-                Node::Div(a, b) => v[a.0 as usize] / v[b.0 as usize],
-                Node::Neg(a) => -v[a.0 as usize],
-                Node::Max(a, b) => v[a.0 as usize].max(v[b.0 as usize]),
-                Node::Sign(a) => sign(v[a.0 as usize]),
-            };
-            v.push(x);
-        }
-        v
-    }
-
-    /// How many live nodes use each node, for the given outputs.
-    #[must_use]
-    pub fn use_counts(&self, outputs: &[Id]) -> Vec<usize> {
-        let mut live = vec![false; self.nodes.len()];
-        for o in outputs {
-            live[o.0 as usize] = true;
-        }
-        let mut uses = vec![0; self.nodes.len()];
-        for o in outputs {
-            uses[o.0 as usize] += 1;
-        }
-        for i in (0..self.nodes.len()).rev() {
-            if !live[i] {
-                continue;
-            }
-            for c in children(&self.nodes[i]) {
-                live[c.0 as usize] = true;
-                uses[c.0 as usize] += 1;
-            }
-        }
-        uses
-    }
-
-    /// The length of the longest chain of dependent operations from the inputs and the
-    /// `sin_cos` results to an output (a division counts as [`DIV_LATENCY`] operations): the
-    /// latency-bound part of the run time, where [`op_count`](Self::op_count) is the
-    /// throughput-bound part.
-    #[must_use]
-    pub fn depth(&self, outputs: &[Id]) -> usize {
-        let mut depth = vec![0usize; self.nodes.len()];
-        for (i, node) in self.nodes.iter().enumerate() {
-            let below = children(node)
-                .iter()
-                .map(|c| depth[c.0 as usize])
-                .max()
-                .unwrap_or(0);
-            depth[i] = match node {
-                Node::Div(..) => below + DIV_LATENCY,
-                Node::Add(..)
-                | Node::Sub(..)
-                | Node::Mul(..)
-                | Node::Neg(..)
-                | Node::Max(..)
-                | Node::Sign(..) => below + 1,
-                Node::Input(_) | Node::Const(_) | Node::Sin(_) | Node::Cos(_) => 0,
-            };
-        }
-        outputs
-            .iter()
-            .map(|o| depth[o.0 as usize])
-            .max()
-            .unwrap_or(0)
-    }
-
-    /// Operation counts of the part of the program the outputs need.
-    #[must_use]
-    pub fn op_count(&self, outputs: &[Id]) -> OpCount {
-        let uses = self.use_counts(outputs);
-        let mut count = OpCount::default();
-        let mut joints = std::collections::BTreeSet::new();
-        for (node, &u) in self.nodes.iter().zip(&uses) {
-            if u == 0 {
-                continue;
-            }
-            match node {
-                Node::Mul(..) => count.mul += 1,
-                Node::Add(..) | Node::Sub(..) | Node::Neg(..) | Node::Max(..) | Node::Sign(..) => {
-                    count.add += 1
-                }
-                Node::Div(..) => count.div += 1,
-                Node::Sin(j) | Node::Cos(j) => {
-                    joints.insert(*j);
-                }
-                Node::Input(_) | Node::Const(_) => {}
-            }
-        }
-        count.sin_cos = joints.len();
-        count
-    }
 }
 
 /// The operands of a node.
@@ -621,20 +468,6 @@ pub fn children(node: &Node) -> Vec<Id> {
         }
         Node::Neg(a) | Node::Sign(a) => vec![a],
         Node::Input(_) | Node::Const(_) | Node::Sin(_) | Node::Cos(_) => vec![],
-    }
-}
-
-/// The sign the generated code computes (`planar_arm::__private::sign`): 0 at zero (either
-/// sign), NaN for NaN, else -1 or 1.
-#[must_use]
-pub fn sign(x: f64) -> f64 {
-    if x > 0.0 {
-        1.0
-    } else if x < 0.0 {
-        -1.0
-    } else {
-        // 0 for zero, NaN for NaN.
-        x * 0.0
     }
 }
 
