@@ -10,9 +10,10 @@ use crate::{exact, mass_inverse, ArmError, Frozen, Jet, Link, Model, Real};
 /// statics were derived at compile time by `#[derive(PlanarArm)]`.
 ///
 /// Conventions: `q[0]` is link 1's angle from +x, `q[i]` (i > 0) is link i+1's angle relative to
-/// link i, or for a [`Prismatic`](crate::Prismatic) joint its displacement along the previous link (metres, and
-/// its entry of `tau` a force); all zeros is the arm stretched along +x. Gravity acts along -y. The equations of
-/// motion are `tau = M(q) qdd + c(q, qd) + g(q) + f(qd)`, f the joint friction.
+/// link i, or for a [`Prismatic`](crate::Prismatic) joint its displacement along the previous
+/// link (metres, and its entry of `tau` a force); all zeros is the arm stretched along +x.
+/// Gravity acts along -y. The equations of motion are `tau = M(q) qdd + c(q, qd) + g(q) + f(qd)`,
+/// f the joint friction.
 ///
 /// # Numeric range
 ///

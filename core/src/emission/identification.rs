@@ -1,7 +1,7 @@
 //! The `impl Identification` the derive emits: the regressor, the standard parameters'
 //! values, the base regressor and the base parameters' values, as generated methods. Their
-//! programs, and the base parameters by exact elimination
-//! ([`base_parameters_from_energies`](crate::regressor::base_parameters_from_energies)), come from the methods stage.
+//! programs come from [`crate::methods`], the base parameters by exact elimination from
+//! [`base_parameters_from_energies`](crate::regressor::base_parameters_from_energies).
 
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
@@ -23,7 +23,8 @@ pub const MAX_LINKS: usize = 30;
 
 /// `impl ::planar_arm::Identification<N, P, B>` for the arm, or nothing when its lengths or
 /// gravity are such that the groupings are not polynomials (see
-/// [`base_parameters_from_energies`](crate::regressor::base_parameters_from_energies)) or it has more than [`MAX_LINKS`] links.
+/// [`base_parameters_from_energies`](crate::regressor::base_parameters_from_energies)) or it
+/// has more than [`MAX_LINKS`] links.
 ///
 /// # Errors
 /// If a constant does not fit in `f64`.
@@ -49,30 +50,7 @@ pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenS
     let formulas: Vec<String> = (0..bb)
         .map(|b| id.base.formula(b, &id.parameters))
         .collect();
-    let listing = |rows: &[String]| -> String {
-        rows.iter()
-            .enumerate()
-            .map(|(k, r)| format!("{}. {r}\n", k + 1))
-            .collect()
-    };
-    let standard_doc = format!(
-        "The standard parameters, in column order: per link `zz` (moment of inertia about the \
-         joint, kg m^2), `mx`, `my` (first moments m cx, m cy in the link's frame, kg m), then \
-         the payload's (`zzp`, `mxp`, `myp` in the last link's frame), the masses (kg), and \
-         per joint that has them armature `ia` (kg m^2), damping `fv` (N m s/rad) and \
-         Coulomb friction `fc` (N m):\n\n{}",
-        listing(&names.iter().map(|s| format!("`{s}`")).collect::<Vec<_>>())
-    );
-    let base_doc = format!(
-        "The base parameters, each an exact combination of the standard ones found at compile \
-         time by rational elimination on the regressor's columns:\n\n{}",
-        listing(
-            &formulas
-                .iter()
-                .map(|s| format!("`{s}`"))
-                .collect::<Vec<_>>()
-        )
-    );
+    let (standard_doc, base_doc) = parameter_docs(&names, &formulas);
     let specs = [
         Fn {
             name: "regressor",
@@ -134,4 +112,33 @@ pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenS
             #(#fns)*
         }
     })
+}
+
+/// The lists of the standard and base parameters that the methods' docs end with.
+fn parameter_docs(names: &[&str], formulas: &[String]) -> (String, String) {
+    let listing = |rows: &[String]| -> String {
+        rows.iter()
+            .enumerate()
+            .map(|(k, r)| format!("{}. {r}\n", k + 1))
+            .collect()
+    };
+    let standard_doc = format!(
+        "The standard parameters, in column order: per link `zz` (moment of inertia about the \
+         joint, kg m^2), `mx`, `my` (first moments m cx, m cy in the link's frame, kg m), then \
+         the payload's (`zzp`, `mxp`, `myp` in the last link's frame), the masses (kg), and \
+         per joint that has them armature `ia` (kg m^2), damping `fv` (N m s/rad) and \
+         Coulomb friction `fc` (N m):\n\n{}",
+        listing(&names.iter().map(|s| format!("`{s}`")).collect::<Vec<_>>())
+    );
+    let base_doc = format!(
+        "The base parameters, each an exact combination of the standard ones found at compile \
+         time by rational elimination on the regressor's columns:\n\n{}",
+        listing(
+            &formulas
+                .iter()
+                .map(|s| format!("`{s}`"))
+                .collect::<Vec<_>>()
+        )
+    );
+    (standard_doc, base_doc)
 }

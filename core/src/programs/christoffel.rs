@@ -9,8 +9,8 @@
 //!   the links' absolute angles `phi_a = q_1 + ... + q_a` (rates `w = J qd`, `J` the lower
 //!   triangle of ones) the kinetic energy is `1/2 w^T Mt(phi) w` with
 //!   `M = J^T Mt J + diag(armature)` and each `Mt_ab` a function of `phi_a - phi_b` alone
-//!   ([`crate::mechanics`] builds it pair by pair). For such a metric the Christoffel sum collapses to
-//!   `Ct_ab = dMt_ab/dphi_b w_b`, and since `J` is constant the symbols transform as a tensor:
+//!   ([`crate::mechanics`] builds it pair by pair). For such a metric the Christoffel sum
+//!   collapses to `Ct_ab = dMt_ab/dphi_b w_b`, and since `J` is constant the symbols transform as a tensor:
 //!   `C = J^T Ct J`, sums of suffixes. `D_ab = dMt_ab/dphi_b` is antisymmetric, so the
 //!   program needs `n (n - 1) / 2` small derivatives, twice as many products with the rates
 //!   and about `2 n^2` additions, instead of `n^2` expanded entries.
