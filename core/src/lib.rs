@@ -3,28 +3,45 @@
 //! Rust. The derive macro is a thin front on this crate; it is an ordinary library, usable and
 //! tested on its own.
 //!
-//! - [`ring`]: the coefficient ring. [`Rational`] is a big-integer fraction (no overflow);
-//!   [`Coefficient`] is the trait a later ring (named run-time parameters) would implement.
-//! - [`trig`] and [`expr`]: the canonical form. An [`Expr`] is a sum of
-//!   `coefficient x trig atom x monomial in rates`, with trig products linearised and angles
-//!   normalised, so equal expressions are structurally equal. `diff_q`, `diff_var` and `dt`
-//!   (the chain rule) act on it directly.
-//! - [`mechanics`]: the paper's route. Centre-of-mass velocities by `dt` of their positions,
-//!   kinetic energy (translation plus rotation about the centre of mass), potential energy;
-//!   M as the Hessian of T, g = dV/dq, C from Christoffel symbols and c = C qd, equal to what
-//!   Lagrange's equation gives (also derived, and compared, in the tests).
-//! - [`poly`]: run-time parameters, polynomials in named parameters with exact rational
-//!   coefficients, the coefficient ring of arms whose values are read at run time.
-//! - [`slp`]: hash-consed straight-line programs; trig atoms of angle sums by angle addition
-//!   from one sine-cosine pair per joint; operation counts.
-//! - [`methods`]: which program computes each generated method (the expanded formulas, or a
-//!   Newton-Euler or composite-rigid-body recursion unrolled for the arm, whichever is cheaper).
-//! - [`frozen`]: methods of arms with run-time parameters split into a block of
-//!   parameter-only values, evaluated once per parameter change, and the state-dependent rest.
-//! - [`regressor`]: identification, the torques' columns per standard parameter and the base
-//!   parameters by exact elimination.
-//! - [`emit`] and [`generate`]: programs rendered as Rust, and the `impl PlanarArm<N>` the
-//!   derive emits.
+//! The engine is a pipeline of five stages, one folder of `core/src/` each; a stage uses only
+//! the stages before it. Every module keeps its path at the crate root (`planar_arm_core::slp`,
+//! not `programs::slp`), so the folders are the source's layout, not the API's.
+//!
+//! 1. Algebra (`algebra/`).
+//!    - [`ring`]: the coefficient ring. [`Rational`] is a big-integer fraction (no overflow);
+//!      [`Coefficient`] is the trait every coefficient ring implements.
+//!    - [`poly`]: run-time parameters, polynomials in named parameters with exact rational
+//!      coefficients, the coefficient ring of arms whose values are read at run time.
+//!    - [`trig`] and [`expr`]: the canonical form. An [`Expr`] is a sum of
+//!      `coefficient x trig atom x monomial in rates`, with trig products linearised and angles
+//!      normalised, so equal expressions are structurally equal. `diff_q`, `diff_var` and `dt`
+//!      (the chain rule) act on it directly.
+//! 2. Mechanics (`mechanics/`, one part per geometry: `mechanics/planar/`).
+//!    - [`mechanics`]: the paper's route. Centre-of-mass velocities by `dt` of their positions,
+//!      kinetic energy (translation plus rotation about the centre of mass), potential energy;
+//!      M as the Hessian of T (or summed from the metric in absolute angles), g = dV/dq, C from
+//!      Christoffel symbols and c = C qd, equal to what Lagrange's equation gives (also
+//!      derived, and compared, in the tests).
+//!    - [`definite`]: whether an arm's mass matrix is positive definite, exactly.
+//! 3. Programs (`programs/`).
+//!    - [`slp`]: hash-consed straight-line programs; trig atoms of angle sums by angle
+//!      addition from one sine-cosine pair per joint; operation counts.
+//!    - The Newton-Euler and composite-rigid-body recursions and an `L D L^T` solve, unrolled
+//!      for one arm; [`christoffel`], the Coriolis matrix summed in absolute angles.
+//!    - [`derivative`]: programs differentiated at compile time.
+//!    - [`frozen`]: methods of arms with run-time parameters split into a block of
+//!      parameter-only values, evaluated once per parameter change, and the state-dependent
+//!      rest.
+//! 4. Methods (`methods/`).
+//!    - [`methods`]: which program computes each generated method (the expanded formulas, or a
+//!      recursion unrolled for the arm, whichever is cheaper).
+//!    - [`regressor`]: identification, the torques' columns per standard parameter and the base
+//!      parameters by exact elimination.
+//! 5. Emission (`emission/`).
+//!    - [`emit`]: programs rendered as Rust.
+//!    - [`generate`], [`closed_forms`] and [`identification`]: the impls the derive emits.
+//!    - [`compact`] and [`paths`]: the exact `const` data's encoding and the paths the
+//!      generated code names.
 //!
 //! # Example: the paper's three equal links
 //!
@@ -43,12 +60,16 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-// The stages in pipeline order; each uses only the stages above it.
+// The stages, in pipeline order: each uses only the ones above it.
 mod algebra;
-mod emission;
+
 pub mod mechanics;
-pub mod methods;
+
 mod programs;
+
+pub mod methods;
+
+mod emission;
 
 pub use algebra::{expr, poly, ring, trig};
 pub use emission::{closed_forms, compact, emit, generate, identification, paths};

@@ -5,6 +5,10 @@
 //! composite-rigid-body) unrolled for the arm with its constants folded in. [`Derived`] builds
 //! the candidates and keeps the cheapest by an estimate of run time ([`Method`], `cost`);
 //! [`emit`](crate::emit) then writes the chosen program as Rust.
+//!
+//! This is the engine's fourth stage, after the mechanics and the programs: one `impl Derived`
+//! per family of methods (the dynamics, the Coriolis matrix, the energies, the forward
+//! dynamics, the kinematics, the derivatives, the identification).
 
 use crate::expr::Expr;
 use crate::mechanics::{ArmSpec, Dynamics, Kinematics};

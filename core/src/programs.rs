@@ -1,6 +1,8 @@
 //! The third stage: straight-line programs. The engine's formulas become hash-consed programs
-//! ([`slp`]); recursions are unrolled into them for one arm (`unrolled`), differentiated
-//! ([`derivative`]) and split at their parameter-only part ([`frozen`]).
+//! ([`slp`]), a generated method's body is one with named outputs ([`method`]); recursions are
+//! unrolled into them for one arm (`unrolled`), the Coriolis matrix is summed in absolute
+//! angles ([`christoffel`]), and programs are differentiated ([`derivative`]) and split at
+//! their parameter-only part ([`frozen`]).
 
 pub mod christoffel;
 pub mod derivative;
