@@ -5,7 +5,7 @@
 //! parameter's column, and the kinematics is shared between the columns.
 
 use super::{Derived, Method};
-use crate::mechanics::{ArmSpec, LinkSpec, PayloadSpec};
+use crate::mechanics::ArmSpec;
 use crate::poly::Poly;
 use crate::programs::unrolled::{newton_euler_unit, Unit};
 use crate::slp::{Emit, Id, Input, Program};
@@ -21,29 +21,7 @@ fn to_poly<C: Emit>(c: &C) -> Poly {
 
 /// The arm over the polynomials (a literal arm's values as constants).
 pub(crate) fn poly_arm<C: Emit>(arm: &ArmSpec<C>) -> ArmSpec<Poly> {
-    ArmSpec {
-        links: arm
-            .links
-            .iter()
-            .map(|l| LinkSpec {
-                length: to_poly(&l.length),
-                mass: to_poly(&l.mass),
-                inertia: to_poly(&l.inertia),
-                com: (to_poly(&l.com.0), to_poly(&l.com.1)),
-                armature: to_poly(&l.armature),
-                damping: to_poly(&l.damping),
-                frictionloss: to_poly(&l.frictionloss),
-                joint: l.joint,
-                range: l.range.clone(),
-            })
-            .collect(),
-        gravity: to_poly(&arm.gravity),
-        payload: arm.payload.as_ref().map(|p| PayloadSpec {
-            mass: to_poly(&p.mass),
-            inertia: to_poly(&p.inertia),
-            com: (to_poly(&p.com.0), to_poly(&p.com.1)),
-        }),
-    }
+    arm.map(to_poly)
 }
 
 /// An arm's standard parameters and base parameters.

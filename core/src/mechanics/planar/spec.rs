@@ -104,44 +104,48 @@ impl ArmSpec<Rational> {
     #[must_use]
     pub fn parameterised(&self) -> (ArmSpec<Poly>, Vec<(Param, Rational)>) {
         let mut values = Vec::new();
-        let mut param = |r: &Rational| {
+        let param = |r: &Rational| {
             let p = Param::new(&format!("v{}", values.len()));
             values.push((p.clone(), r.clone()));
             Poly::param(p)
         };
-        let links = self
-            .links
-            .iter()
-            .map(|l| LinkSpec {
-                length: param(&l.length),
-                mass: param(&l.mass),
-                inertia: param(&l.inertia),
-                com: (param(&l.com.0), param(&l.com.1)),
-                armature: param(&l.armature),
-                damping: param(&l.damping),
-                frictionloss: param(&l.frictionloss),
-                joint: l.joint,
-                range: l.range.clone(),
-            })
-            .collect();
-        let gravity = param(&self.gravity);
-        let payload = self.payload.as_ref().map(|p| PayloadSpec {
-            mass: param(&p.mass),
-            inertia: param(&p.inertia),
-            com: (param(&p.com.0), param(&p.com.1)),
-        });
-        (
-            ArmSpec {
-                links,
-                gravity,
-                payload,
-            },
-            values,
-        )
+        (self.map(param), values)
     }
 }
 
 impl<C> ArmSpec<C> {
+    /// The same arm with every value mapped by `f`, in the order link by link (length, mass,
+    /// inertia, com x, com y, armature, damping, frictionloss), then gravity, then the
+    /// payload's (mass, inertia, com x, com y).
+    pub(crate) fn map<D>(&self, mut f: impl FnMut(&C) -> D) -> ArmSpec<D> {
+        let links = self
+            .links
+            .iter()
+            .map(|l| LinkSpec {
+                length: f(&l.length),
+                mass: f(&l.mass),
+                inertia: f(&l.inertia),
+                com: (f(&l.com.0), f(&l.com.1)),
+                armature: f(&l.armature),
+                damping: f(&l.damping),
+                frictionloss: f(&l.frictionloss),
+                joint: l.joint,
+                range: l.range.clone(),
+            })
+            .collect();
+        let gravity = f(&self.gravity);
+        let payload = self.payload.as_ref().map(|p| PayloadSpec {
+            mass: f(&p.mass),
+            inertia: f(&p.inertia),
+            com: (f(&p.com.0), f(&p.com.1)),
+        });
+        ArmSpec {
+            links,
+            gravity,
+            payload,
+        }
+    }
+
     /// Whether every joint is revolute (the paper's arms).
     #[must_use]
     pub fn all_revolute(&self) -> bool {
