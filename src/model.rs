@@ -2,8 +2,6 @@
 use num_traits::Float as _;
 
 use nalgebra::{SVector, Vector2};
-#[cfg(not(feature = "std"))]
-use num_traits::Float as _;
 
 use crate::{ArmError, Joint, Link};
 
