@@ -17,6 +17,7 @@ Arms: lengths 2/4, 3/4, 4/4, ... and literal masses, inertias and centres of mas
     python3 bench/compile_time.py 6 10 --runs 3   # chosen sizes, best of three
     python3 bench/compile_time.py 6 10 14 --lengths --repo /tmp/old   # against another checkout
     python3 bench/compile_time.py 6 10 14 --prismatic   # every second joint prismatic
+    python3 bench/compile_time.py 6 7 --spatial         # #[derive(SpatialArm)]: PUMA 560, Panda
 """
 
 import argparse
@@ -86,6 +87,63 @@ def crate(root, n, params, lengths=False, repo=REPO, derivatives=False, prismati
     return name, path
 
 
+def spatial_crate(root, n, params, repo=REPO):
+    """A crate deriving an `n`-joint spatial arm: the PUMA 560 at six joints, Franka's Panda
+    (modified DH) at seven, otherwise a chain of alternating twists; with `params` its masses
+    and centres of mass are run-time parameters."""
+    name = f"spatial{n}{'p' if params else ''}"
+    path = os.path.join(root, name)
+    os.makedirs(os.path.join(path, "src"), exist_ok=True)
+    with open(os.path.join(path, "Cargo.toml"), "w") as f:
+        f.write(
+            f'[package]\nname = "{name}"\nversion = "0.0.0"\nedition = "2021"\n'
+            f'[dependencies]\nplanar_arm = {{ path = "{repo}" }}\n[workspace]\n'
+        )
+    puma = [
+        "dh(a = 0, alpha = pi/2, d = 0)", "dh(a = 0.4318, alpha = 0, d = 0)",
+        "dh(a = 0.0203, alpha = -pi/2, d = 0.15005)", "dh(a = 0, alpha = pi/2, d = 0.4318)",
+        "dh(a = 0, alpha = -pi/2, d = 0)", "dh(a = 0, alpha = 0, d = 0)",
+    ]
+    panda = [
+        "mdh(a = 0, alpha = 0, d = 0.333)", "mdh(a = 0, alpha = -pi/2, d = 0)",
+        "mdh(a = 0, alpha = pi/2, d = 0.316)", "mdh(a = 0.0825, alpha = pi/2, d = 0)",
+        "mdh(a = -0.0825, alpha = -pi/2, d = 0.384)", "mdh(a = 0, alpha = pi/2, d = 0)",
+        "mdh(a = 0.088, alpha = pi/2, d = 0)",
+    ]
+    geometry = puma if n == 6 else panda if n == 7 else [
+        f"dh(a = {i % 3 + 1}/10, alpha = {'pi/2' if i % 2 == 0 else '-pi/2'}, d = {i % 2}/10)"
+        for i in range(n)
+    ]
+    links, fields, values = [], [], []
+    for i in range(n):
+        mass = f"self.m{i}" if params else f"{i % 4 + 1}/2"
+        com = f"(self.c{i}, 0, 0.05)" if params else f"({i % 3 + 1}/50, 0, 0.05)"
+        if params:
+            fields.append(f"    m{i}: f64,\n    c{i}: f64,")
+            values.append(f"m{i}: 1.5, c{i}: 0.02,")
+        links.append(
+            f"    #[arm({geometry[i]}, mass = {mass}, com = {com}, inertia(xx = 0.01, yy = 0.02, zz = 0.015))]\n"
+            f"    j{i}: Revolute,"
+        )
+        values.append(f"j{i}: Revolute,")
+    with open(os.path.join(path, "src", "main.rs"), "w") as f:
+        f.write(
+            "use planar_arm::prelude::*;\n\n"
+            "#[derive(SpatialArm)]\n#[arm(gravity = (0, 0, -9.81))]\n"
+            f"struct Arm {{\n{chr(10).join(links + fields)}\n}}\n\n"
+            "fn main() {\n"
+            f"    let arm = Arm {{ {' '.join(values)} }};\n"
+            f"    let q = SVector::<f64, {n}>::from_fn(|i, _| 0.1 * i as f64);\n"
+            "    let pose = arm.tip_pose(&q);\n"
+            "    let j = arm.jacobian(&q);\n"
+            "    let g = arm.gravity(&q);\n"
+            "    let ik = arm.inverse_kinematics(&pose).map_or(0, |s| s.len());\n"
+            '    println!("{} {} {} {ik}", pose.translation.vector.norm(), j.norm(), g.norm());\n'
+            "}\n"
+        )
+    return name, path
+
+
 def timed_build(path, name, target):
     env = dict(os.environ, CARGO_TARGET_DIR=target)
     env.pop("RUSTFLAGS", None)
@@ -110,6 +168,10 @@ def main():
         help="also call linearize (so the derivatives are compiled, not only type-checked)",
     )
     ap.add_argument(
+        "--spatial", action="store_true",
+        help="#[derive(SpatialArm)] of n joints (the PUMA 560 at six, the Panda at seven)",
+    )
+    ap.add_argument(
         "--prismatic", action="store_true",
         help="every second joint prismatic (links 2, 4, ...)",
     )
@@ -121,14 +183,19 @@ def main():
         for n in args.sizes:
             kinds = [False] if args.literal_only or n > 14 else [False, True]
             for params in kinds:
-                name, path = crate(
-                    root, n, params, args.lengths and params, args.repo, args.derivatives,
-                    args.prismatic,
-                )
+                if args.spatial:
+                    name, path = spatial_crate(root, n, params, args.repo)
+                else:
+                    name, path = crate(
+                        root, n, params, args.lengths and params, args.repo, args.derivatives,
+                        args.prismatic,
+                    )
                 env = dict(os.environ, CARGO_TARGET_DIR=target)
                 subprocess.run(["cargo", "build", "-q"], cwd=path, env=env, check=True)
                 best = min(timed_build(path, name, target) for _ in range(args.runs))
                 kind = ("parameters, lengths" if args.lengths else "parameters") if params else "literal"
+                if args.spatial:
+                    kind = "spatial, " + kind
                 if args.prismatic:
                     kind += ", every second joint prismatic"
                 print(f"| {n} | {kind} | {best[0]:.2f} | {best[1]:.0f} |", flush=True)

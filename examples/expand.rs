@@ -1,4 +1,4 @@
-//! Prints the code `#[derive(PlanarArm)]` generates, pretty-printed, for readers without
+//! Prints the code `#[derive(PlanarArm)]` (or `#[derive(SpatialArm)]`) generates, pretty-printed, for readers without
 //! `cargo expand`: for the paper's arms, or for every derived arm in a file of yours.
 //!
 //! ```text
@@ -24,6 +24,8 @@ mod check;
 mod ctxt;
 #[path = "../derive/src/expand.rs"]
 mod expand;
+#[path = "../derive/src/spatial/mod.rs"]
+mod spatial;
 #[path = "../derive/src/value.rs"]
 mod value;
 
@@ -43,7 +45,14 @@ fn paper(n: usize) -> String {
     format!("#[derive(PlanarArm)]\n#[arm(gravity = 9.81)]\nstruct Paper{n} {{\n{links}}}\n")
 }
 
-fn derives_planar_arm(attrs: &[syn::Attribute]) -> bool {
+/// Which of the two derives the struct asks for, if any.
+fn derives(attrs: &[syn::Attribute]) -> Option<&'static str> {
+    ["PlanarArm", "SpatialArm"]
+        .into_iter()
+        .find(|name| derives_named(attrs, name))
+}
+
+fn derives_named(attrs: &[syn::Attribute], name: &str) -> bool {
     attrs
         .iter()
         .filter(|a| a.path().is_ident("derive"))
@@ -54,7 +63,7 @@ fn derives_planar_arm(attrs: &[syn::Attribute]) -> bool {
             .is_ok_and(|paths| {
                 paths
                     .iter()
-                    .any(|p| p.segments.last().is_some_and(|s| s.ident == "PlanarArm"))
+                    .any(|p| p.segments.last().is_some_and(|s| s.ident == name))
             })
         })
 }
@@ -85,12 +94,19 @@ fn main() -> ExitCode {
     let mut failed = false;
     for item in file.items {
         let syn::Item::Struct(s) = item else { continue };
-        if !derives_planar_arm(&s.attrs) || wanted.as_ref().is_some_and(|w| s.ident != w) {
+        let Some(derive) = derives(&s.attrs) else {
+            continue;
+        };
+        if wanted.as_ref().is_some_and(|w| s.ident != w) {
             continue;
         }
         found += 1;
         let input: syn::DeriveInput = s.into();
-        let tokens = expand::derive(&input);
+        let tokens = if derive == "SpatialArm" {
+            spatial::expand::derive(&input)
+        } else {
+            expand::derive(&input)
+        };
         let text = tokens.to_string();
         if text.contains("compile_error") {
             // Only the errors matter then; the stub that follows them is not the arm.
@@ -111,7 +127,7 @@ fn main() -> ExitCode {
     }
     if found == 0 {
         eprintln!(
-            "error: no struct with #[derive(PlanarArm)]{} in the input",
+            "error: no struct with #[derive(PlanarArm)] or #[derive(SpatialArm)]{} in the input",
             wanted.map_or_else(String::new, |w| format!(" named `{w}`"))
         );
         return ExitCode::FAILURE;

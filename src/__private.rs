@@ -52,6 +52,18 @@ pub fn polar(r2: f64, x: f64, y: f64) -> (f64, f64) {
     (r2.max(0.0).sqrt(), y.atan2(x))
 }
 
+/// A spatial pose from the generated rotation (row-major) and position. The rotation is exact to
+/// rounding, so the quaternion's normalisation only absorbs that.
+#[inline]
+#[must_use]
+pub fn isometry3(r: [[f64; 3]; 3], p: [f64; 3]) -> nalgebra::Isometry3<f64> {
+    let m = nalgebra::Matrix3::from_fn(|i, j| r[i][j]);
+    let rotation = nalgebra::UnitQuaternion::from_rotation_matrix(
+        &nalgebra::Rotation3::from_matrix_unchecked(m),
+    );
+    nalgebra::Isometry3::from_parts(nalgebra::Translation3::new(p[0], p[1], p[2]), rotation)
+}
+
 /// A stored sum of exact terms (see `exact`).
 #[must_use]
 pub const fn terms(code: &'static [u8], names: &'static [&'static str]) -> crate::exact::Terms {

@@ -281,9 +281,10 @@ pub mod prelude {
     pub use crate::kinematics::{
         DexterousWorkspaceExt, DynArm, InverseStatics, RedundantTipWrench, Skeleton, StaticWrench,
     };
+    pub use crate::spatial::{IkSolutions, SpatialArm};
     pub use crate::{
         ArmError, Frozen, Identification, Joint, Linearize, Link, Model, Payload, PlanarArm,
         Prismatic, Real, Revolute,
     };
-    pub use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2, Vector3};
+    pub use nalgebra::{Isometry2, Isometry3, Point2, Point3, SMatrix, SVector, Vector2, Vector3};
 }

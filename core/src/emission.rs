@@ -13,4 +13,5 @@ pub mod generate;
 mod header;
 pub mod identification;
 pub mod paths;
+pub(crate) mod spatial;
 mod tokens;

@@ -77,6 +77,14 @@ pub use mechanics::planar::definite;
 pub use methods::identification::regressor;
 pub use programs::{christoffel, derivative, frozen, slp};
 
+/// Spatial arms, from their specification to the emitted `impl SpatialArm<N>`: the exact frames,
+/// the decoupling their geometry allows, the chosen programs and the emission.
+pub mod spatial {
+    pub use crate::emission::spatial::generate_spatial;
+    pub use crate::mechanics::spatial::*;
+    pub use crate::methods::spatial::SpatialDerived;
+}
+
 // Re-exports, not copies, in the docs: each item's page stays in its module.
 #[doc(no_inline)]
 pub use expr::{Expr, Monomial, Var};

@@ -3,6 +3,7 @@
 //! mechanics following the paper's route.
 
 pub(crate) mod planar;
+pub mod spatial;
 
 pub use planar::{
     standard_bodies, ArmSpec, Body, Dynamics, JointKind, Kinematics, LinkSpec, PayloadSpec,

@@ -165,5 +165,6 @@ mod energies;
 mod forward;
 pub(crate) mod identification;
 mod kinematics;
+pub mod spatial;
 #[cfg(test)]
 mod tests;

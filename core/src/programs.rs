@@ -9,4 +9,5 @@ pub mod derivative;
 pub mod frozen;
 pub mod method;
 pub mod slp;
+pub(crate) mod spatial;
 pub(crate) mod unrolled;

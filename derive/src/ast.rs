@@ -161,41 +161,8 @@ impl<'a> Arm<'a> {
 
     /// Whether the field `name` is a plain `f64` (what a run-time parameter must be).
     pub fn f64_field(&self, name: &str) -> Result<(), String> {
-        if self
-            .links
-            .iter()
-            .any(|l| l.field.ident.as_ref().is_some_and(|i| i == name))
-        {
-            return Err(format!(
-                "`self.{name}` is a link, not a run-time parameter; a parameter is an `f64` field of this struct"
-            ));
-        }
-        match self
-            .others
-            .iter()
-            .find(|f| f.ident.as_ref().is_some_and(|i| i == name))
-        {
-            Some(f) if is_f64(&f.ty) => Ok(()),
-            Some(_) => Err(format!(
-                "`self.{name}` must be an `f64` field to serve as a run-time parameter; change its type to `f64`"
-            )),
-            None => {
-                let names: Vec<String> = self
-                    .others
-                    .iter()
-                    .filter(|f| is_f64(&f.ty))
-                    .filter_map(|f| f.ident.as_ref().map(ToString::to_string))
-                    .collect();
-                Err(if names.is_empty() {
-                    format!("no field `{name}`: a run-time parameter is an `f64` field of this struct; add `{name}: f64`")
-                } else {
-                    format!(
-                        "no field `{name}`: a run-time parameter is an `f64` field of this struct (it has {}); or add `{name}: f64`",
-                        names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
-                    )
-                })
-            }
-        }
+        let links: Vec<&syn::Field> = self.links.iter().map(|l| l.field).collect();
+        param_field(&links, &self.others, name)
     }
 
     /// The number of link fields, whether or not each parsed.
@@ -238,8 +205,46 @@ fn is_f64(ty: &syn::Type) -> bool {
     }
 }
 
+/// Whether the field `name` is a plain `f64` (what a run-time parameter must be), not one of the
+/// `links`, among the `others`.
+pub fn param_field(
+    links: &[&syn::Field],
+    others: &[&syn::Field],
+    name: &str,
+) -> Result<(), String> {
+    if links
+        .iter()
+        .any(|f| f.ident.as_ref().is_some_and(|i| i == name))
+    {
+        return Err(format!(
+            "`self.{name}` is a link, not a run-time parameter; a parameter is an `f64` field of this struct"
+        ));
+    }
+    match others.iter().find(|f| f.ident.as_ref().is_some_and(|i| i == name)) {
+        Some(f) if is_f64(&f.ty) => Ok(()),
+        Some(_) => Err(format!(
+            "`self.{name}` must be an `f64` field to serve as a run-time parameter; change its type to `f64`"
+        )),
+        None => {
+            let names: Vec<String> = others
+                .iter()
+                .filter(|f| is_f64(&f.ty))
+                .filter_map(|f| f.ident.as_ref().map(ToString::to_string))
+                .collect();
+            Err(if names.is_empty() {
+                format!("no field `{name}`: a run-time parameter is an `f64` field of this struct; add `{name}: f64`")
+            } else {
+                format!(
+                    "no field `{name}`: a run-time parameter is an `f64` field of this struct (it has {}); or add `{name}: f64`",
+                    names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
+                )
+            })
+        }
+    }
+}
+
 /// Whether the type is a primitive's bare name (`f64`), which no alias of `Revolute` takes.
-fn is_primitive(ty: &syn::Type) -> bool {
+pub(crate) fn is_primitive(ty: &syn::Type) -> bool {
     const PRIMITIVES: &[&str] = &[
         "f64", "f32", "i8", "i16", "i32", "i64", "i128", "isize", "u8", "u16", "u32", "u64",
         "u128", "usize", "bool", "char", "str",
@@ -249,7 +254,7 @@ fn is_primitive(ty: &syn::Type) -> bool {
 }
 
 /// The type inside invisible groups and parentheses.
-fn strip(ty: &syn::Type) -> &syn::Type {
+pub(crate) fn strip(ty: &syn::Type) -> &syn::Type {
     match ty {
         syn::Type::Group(g) => strip(&g.elem),
         syn::Type::Paren(p) => strip(&p.elem),

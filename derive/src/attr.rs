@@ -36,6 +36,8 @@ pub const FIELD_KEYS: &[&str] = &[
     FRICTIONLOSS,
     RANGE,
 ];
+/// Keys of `#[derive(SpatialArm)]`, which a planar arm writes otherwise.
+const SPATIAL_KEYS: &[&str] = &["dh", "mdh", "origin", "axis", "tool"];
 /// Keys whose value may be a pair `(x, y)`.
 const PAIR_KEYS: &[&str] = &[COM, PAYLOAD_COM];
 
@@ -153,7 +155,7 @@ fn expected_syntax(place: Place) -> &'static str {
 }
 
 /// Skips the rest of a malformed `key = value` so parsing goes on with the next key.
-fn skip_to_comma(input: ParseStream<'_>) {
+pub(crate) fn skip_to_comma(input: ParseStream<'_>) {
     while !input.is_empty() && !input.peek(Token![,]) {
         if input.parse::<proc_macro2::TokenTree>().is_err() {
             break;
@@ -161,7 +163,7 @@ fn skip_to_comma(input: ParseStream<'_>) {
     }
 }
 
-fn path_text(path: &syn::Path) -> String {
+pub(crate) fn path_text(path: &syn::Path) -> String {
     path.segments
         .iter()
         .map(|s| s.ident.to_string())
@@ -204,6 +206,12 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
                     "`{key}` is a property of the whole arm; it belongs in #[arm({key} = ...)] on the struct, not on a link field"
                 ),
             }
+        } else if SPATIAL_KEYS.contains(&key.as_str()) {
+            // #[arm(dh(a = 0.4))] on a planar arm
+            format!(
+                "`{key}` describes a joint of a spatial arm: derive `SpatialArm` for that; a planar \
+                 arm's link takes `length`, `mass`, `inertia`, `com` and the joint keys"
+            )
         } else if let Some(&lower) = own.iter().find(|k| k.eq_ignore_ascii_case(&key)) {
             // #[arm(MASS = 1)]
             out.mentioned.push(lower);
@@ -276,7 +284,7 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
 
 /// The tokens from `start` up to `end`, as written: printing the parsed expression instead
 /// recurses once per operator, which a value of 20 000 terms turns into a stack overflow.
-fn tokens_between(
+pub(crate) fn tokens_between(
     mut cursor: syn::buffer::Cursor<'_>,
     end: syn::buffer::Cursor<'_>,
 ) -> TokenStream {
@@ -319,7 +327,7 @@ fn parse_crate(cx: &Ctxt, meta: &ParseNestedMeta<'_>, out: &mut Attrs) {
 }
 
 /// The known key closest to `key` by edit distance, if it is close enough to be a typo.
-fn nearest(key: &str, known: &[&'static str]) -> Option<&'static str> {
+pub(crate) fn nearest(key: &str, known: &[&'static str]) -> Option<&'static str> {
     known
         .iter()
         .map(|k| (levenshtein(key, k), *k))
@@ -328,7 +336,7 @@ fn nearest(key: &str, known: &[&'static str]) -> Option<&'static str> {
         .map(|(_, k)| k)
 }
 
-fn levenshtein(a: &str, b: &str) -> usize {
+pub(crate) fn levenshtein(a: &str, b: &str) -> usize {
     let b: Vec<char> = b.chars().collect();
     let mut prev: Vec<usize> = (0..=b.len()).collect();
     for (i, ca) in a.chars().enumerate() {

@@ -37,7 +37,7 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
 /// The path of `planar_arm` when it is not `::planar_arm`: given by `#[arm(crate = "...")]`
 /// (errors in it are reported by the full parse), or else the name the user crate's
 /// Cargo.toml gives the dependency (`arm = { package = "planar_arm" }`).
-fn krate(input: &DeriveInput) -> Option<TokenStream> {
+pub(crate) fn krate(input: &DeriveInput) -> Option<TokenStream> {
     let cx = Ctxt::new();
     let path = crate::attr::parse(&cx, &input.attrs, crate::attr::Place::Struct)
         .and_then(|a| a.krate)
@@ -59,7 +59,7 @@ fn renamed() -> Option<TokenStream> {
     }
 }
 
-fn header(input: &DeriveInput) -> Header {
+pub(crate) fn header(input: &DeriveInput) -> Header {
     let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
     let ident = &input.ident;
     Header {
@@ -110,19 +110,27 @@ fn emit<C: Emit>(
 /// generated method reads it: a field whose type is not the primitive `f64` (a type of the
 /// user's named `f64`) is then one error at its type, not one per read.
 fn param_accessors(arm: &Arm<'_>, header: &Header) -> TokenStream {
-    let mut names: Vec<String> = arm
+    let names = arm
         .values()
         .iter()
         .flat_map(|(_, v)| v.params.iter().map(|p| p.name.clone()))
         .collect();
+    param_accessors_of(names, &arm.others, header)
+}
+
+/// The accessors of [`param_accessors`] for the parameter fields `names` among `others`.
+pub(crate) fn param_accessors_of(
+    mut names: Vec<String>,
+    others: &[&syn::Field],
+    header: &Header,
+) -> TokenStream {
     names.sort();
     names.dedup();
     if names.is_empty() {
         return TokenStream::new();
     }
     let accessors = names.iter().filter_map(|name| {
-        let field = arm
-            .others
+        let field = others
             .iter()
             .find(|f| f.ident.as_ref().is_some_and(|i| i == name))?;
         let ident = field.ident.as_ref()?;

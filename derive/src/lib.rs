@@ -11,6 +11,7 @@ mod attr;
 mod check;
 mod ctxt;
 mod expand;
+mod spatial;
 mod value;
 
 use proc_macro::TokenStream;
@@ -24,4 +25,14 @@ use syn::{parse_macro_input, DeriveInput};
 pub fn derive_planar_arm(input: TokenStream) -> TokenStream {
     let input = parse_macro_input!(input as DeriveInput);
     expand::derive(&input).into()
+}
+
+/// Derives `planar_arm::spatial::SpatialArm<N>` for a struct whose `N` fields are joints
+/// (`#[arm(dh(a = .., alpha = .., d = .., theta = ..))]`, `mdh(...)`, or
+/// `origin(xyz = .., rpy = ..), axis = ..`, type `planar_arm::Revolute` or `Prismatic`). See
+/// the `planar_arm` crate documentation.
+#[proc_macro_derive(SpatialArm, attributes(arm))]
+pub fn derive_spatial_arm(input: TokenStream) -> TokenStream {
+    let input = parse_macro_input!(input as DeriveInput);
+    spatial::expand::derive(&input).into()
 }

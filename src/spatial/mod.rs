@@ -12,3 +12,5 @@ pub use arm::SpatialArm;
 pub use ik::{IkClass, IkSolutions, SpatialIk};
 pub use joint::JointGeometry;
 pub use model::{SpatialJoint, SpatialLink, SpatialModel};
+/// `#[derive(SpatialArm)]`, beside the trait it implements.
+pub use planar_arm_derive::SpatialArm;

@@ -18,19 +18,35 @@ use crate::ring::{show, Rational};
 
 /// A run-time parameter, named after the `f64` field of the arm's struct it is read from.
 #[derive(Clone, PartialEq, Eq, PartialOrd, Ord, Hash, Debug)]
-pub struct Param(Arc<str>);
+///
+/// Or a named constant: a value the derive knows, but not as a rational (the cosine of a twist of
+/// 0.3 rad), kept exact in its symbol (`cos(0.3)`) in the formulas and entering the generated
+/// code as the `f64` it rounds to.
+pub struct Param(Arc<str>, Option<u64>);
 
 impl Param {
     /// The parameter read from field `name`.
     #[must_use]
     pub fn new(name: &str) -> Self {
-        Self(Arc::from(name))
+        Self(Arc::from(name), None)
     }
 
-    /// The field name.
+    /// The named constant `name` of value `value`.
+    #[must_use]
+    pub fn constant(name: &str, value: f64) -> Self {
+        Self(Arc::from(name), Some(value.to_bits()))
+    }
+
+    /// The field name, or the constant's name.
     #[must_use]
     pub fn name(&self) -> &str {
         &self.0
+    }
+
+    /// The value of a named constant; `None` for a run-time parameter.
+    #[must_use]
+    pub fn value(&self) -> Option<f64> {
+        self.1.map(f64::from_bits)
     }
 }
 

@@ -23,7 +23,7 @@ use crate::slp::{Emit, Id, Input, Node, Program};
 pub use super::error::EmitError;
 pub use super::formulas::{check_representable, formula_doc, long_formula_doc, DOC_TERMS};
 pub(crate) use super::tokens::f64_argument_tokens;
-pub use super::tokens::f64_tokens;
+pub use super::tokens::{f64_tokens, f64_value_tokens};
 
 /// Precedence of an emitted expression, to place parentheses.
 #[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]

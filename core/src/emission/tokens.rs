@@ -16,6 +16,51 @@ pub fn f64_tokens(r: &Rational) -> Result<TokenStream, EmitError> {
     Ok(wrapped(constant_inner(r)?).into_iter().collect())
 }
 
+/// `f64` tokens of a value known only as an `f64` (a cosine the derive computed): the shortest
+/// literal that reads back as the same `f64`, negated in parentheses.
+///
+/// # Errors
+/// If the value is not finite.
+pub fn f64_value_tokens(x: f64) -> Result<TokenStream, EmitError> {
+    if !x.is_finite() {
+        return Err(EmitError {
+            message: format!("the constant {x} is not a finite f64"),
+        });
+    }
+    let literal: TokenStream = match named_constant(x.abs()) {
+        Some(name) => quote::quote!(::core::f64::consts::#name),
+        None => TokenTree::from(Literal::f64_unsuffixed(x.abs())).into(),
+    };
+    Ok(if x.is_sign_negative() && x != 0.0 {
+        let inner: TokenStream = core::iter::once(punct('-')).chain(literal).collect();
+        TokenStream::from(TokenTree::from(Group::new(Delimiter::Parenthesis, inner)))
+    } else {
+        literal
+    })
+}
+
+/// The `core::f64::consts` name of a twist or joint offset such as π/2 or π/4, so the
+/// generated code reads as the angle it is (and clippy does not mistake a digit string for a
+/// mistyped constant).
+fn named_constant(x: f64) -> Option<Ident> {
+    use core::f64::consts as c;
+    let named = [
+        (c::PI, "PI"),
+        (c::TAU, "TAU"),
+        (c::FRAC_PI_2, "FRAC_PI_2"),
+        (c::FRAC_PI_3, "FRAC_PI_3"),
+        (c::FRAC_PI_4, "FRAC_PI_4"),
+        (c::FRAC_PI_6, "FRAC_PI_6"),
+        (c::FRAC_PI_8, "FRAC_PI_8"),
+        (c::SQRT_2, "SQRT_2"),
+        (c::FRAC_1_SQRT_2, "FRAC_1_SQRT_2"),
+    ];
+    named
+        .iter()
+        .find(|(v, _)| v.to_bits() == x.to_bits())
+        .map(|(_, name)| Ident::new(name, Span::call_site()))
+}
+
 /// An `f64` constant as an expression in its own right, as a function's argument is:
 /// `2.0`, `10.0 / 3.0`, `-(10.0 / 3.0)`.
 pub(crate) fn f64_argument_tokens(r: &Rational) -> Result<TokenStream, EmitError> {

@@ -43,7 +43,9 @@ fn eval_at(expr: &Expr, depth: usize) -> syn::Result<Angle> {
             let digits = match &lit.lit {
                 Lit::Int(i) => i.base10_digits().to_string(),
                 Lit::Float(f) => f.base10_digits().to_string(),
-                _ => return bad("expected an angle: a number of radians, or a multiple of `pi` such as `pi/2`"),
+                _ => return bad(
+                    "expected an angle: a number of radians, or a multiple of `pi` such as `pi/2`",
+                ),
             };
             parse_decimal(&digits)
                 .map(Angle::number)

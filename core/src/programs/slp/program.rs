@@ -141,6 +141,12 @@ impl Program {
 
     /// A run-time parameter.
     pub fn param(&mut self, param: &Param) -> Id {
+        // A named constant is its value, which is a rational (every finite f64 is).
+        if let Some(value) = param.value() {
+            if let Some(r) = Rational::from_float(value) {
+                return self.constant(r);
+            }
+        }
         let k = match self.params.iter().position(|p| p == param) {
             Some(k) => k,
             None => {

@@ -1,0 +1,422 @@
+//! The `impl ::planar_arm::spatial::SpatialArm<N>` that `#[derive(SpatialArm)]` emits: the tool
+//! and link poses, the Jacobian, gravity and potential energy as straight-line code (each the
+//! cheaper of the product of transformations and the expanded formulas), `EXACT`, `model()`
+//! and the closed-form inverse kinematics where the geometry allows one.
+
+use proc_macro2::{Literal, TokenStream};
+use quote::quote;
+
+use crate::emission::function::{emit_fn, matrix, vector, Fn, Param};
+use crate::emission::header::Header;
+use crate::emit::{coefficient_tokens, f64_tokens, formula_doc, local, EmitError};
+use crate::expr::Expr;
+use crate::mechanics::spatial::{
+    decouple, Decoupling, FixedAngle, SpatialArmSpec, SpatialGeometry,
+};
+use crate::mechanics::JointKind;
+use crate::methods::spatial::SpatialDerived;
+use crate::paths::{F64, STR};
+use crate::poly::Poly;
+use crate::slp::Input;
+
+/// The complete impl.
+///
+/// # Errors
+/// If a constant does not fit in `f64`, or an exact coefficient in the `i128` of `EXACT`.
+pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenStream, EmitError> {
+    let d = SpatialDerived::new(arm);
+    let n = arm.joints.len();
+    let nn = Literal::usize_unsuffixed(n);
+    let q = Param::Joints("q", Input::Q);
+    let mut fns = Vec::new();
+    let pose_doc = |title: &str| {
+        let rows: Vec<(String, &Expr<Poly>)> = (0..3)
+            .flat_map(|i| (0..4).map(move |j| (i, j)))
+            .map(|(i, j)| {
+                let e = if j < 3 {
+                    &d.kinematics.tool.r[i][j]
+                } else {
+                    &d.kinematics.tool.p[i]
+                };
+                (
+                    if j < 3 {
+                        format!("R{}{}", i + 1, j + 1)
+                    } else {
+                        format!("p{}", i + 1)
+                    },
+                    e,
+                )
+            })
+            .collect();
+        formula_doc(title, &rows)
+    };
+    // The joint fields hold nothing: read them once so that a user's crate is not told they
+    // are never read.
+    let fields = &header.fields;
+    let touch = if fields.is_empty() {
+        TokenStream::new()
+    } else {
+        quote!(let _ = (#(&self.#fields),*);)
+    };
+    fns.push(
+        Fn::new(
+            "tip_pose",
+            vec![q],
+            quote!(::planar_arm::nalgebra::Isometry3<#F64>),
+            pose_doc("The tool frame in the base frame: rotation R and position p."),
+            d.tip_pose.clone(),
+            Box::new(isometry),
+        )
+        .in_f64()
+        .touching(touch),
+    );
+    fns.push(
+        Fn::new(
+            "link_poses",
+            vec![q],
+            quote!([::planar_arm::nalgebra::Isometry3<#F64>; #nn]),
+            "Each link's frame in the base frame, base first.".to_string(),
+            d.link_poses.clone(),
+            Box::new(|ids| {
+                let poses = ids.chunks(12).map(isometry);
+                quote!([#(#poses),*])
+            }),
+        )
+        .in_f64(),
+    );
+    fns.push(Fn::new(
+        "jacobian",
+        vec![q],
+        quote!(::planar_arm::nalgebra::SMatrix<__T, 6, #nn>),
+        "The geometric Jacobian of the tool frame: rows 0-2 the linear velocity of its origin, \
+         rows 3-5 the angular velocity, both in base coordinates (Pinocchio's \
+         `LOCAL_WORLD_ALIGNED`)."
+            .to_string(),
+        d.jacobian.clone(),
+        Box::new(move |ids| matrix(6, n, ids)),
+    ));
+    let g_rows: Vec<(String, &Expr<Poly>)> = d
+        .kinematics
+        .gravity
+        .iter()
+        .enumerate()
+        .map(|(i, e)| (format!("g{}", i + 1), e))
+        .collect();
+    fns.push(Fn::new(
+        "gravity",
+        vec![q],
+        quote!(::planar_arm::nalgebra::SVector<__T, #nn>),
+        formula_doc(
+            "The gravity torques g = dV/dq (forces for slides) that hold the arm.",
+            &g_rows,
+        ),
+        d.gravity.clone(),
+        Box::new(vector),
+    ));
+    fns.push(Fn::new(
+        "potential_energy",
+        vec![q],
+        quote!(__T),
+        formula_doc(
+            "The potential energy, zero at the base origin.",
+            &[("V".to_string(), &d.kinematics.potential_energy)],
+        ),
+        d.potential_energy.clone(),
+        Box::new(|ids| {
+            let v = &ids[0];
+            quote!(#v)
+        }),
+    ));
+    let mut body = Vec::with_capacity(fns.len() + 3);
+    for f in &fns {
+        body.push(emit_fn(n, f, None)?);
+    }
+    body.push(exact(&d)?);
+    body.push(model(arm)?);
+    body.push(inverse_kinematics(arm, &d)?);
+    let Header {
+        impl_generics,
+        ty,
+        where_clause,
+        ..
+    } = header;
+    Ok(quote! {
+        #[automatically_derived]
+        #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
+        impl #impl_generics ::planar_arm::spatial::SpatialArm<#nn> for #ty #where_clause {
+            #(#body)*
+        }
+    })
+}
+
+/// `__private::isometry3` of twelve outputs: the rotation row-major, then the position.
+fn isometry(ids: &[proc_macro2::Ident]) -> TokenStream {
+    let r = ids[..9].chunks(3).map(|row| quote!([#(#row),*]));
+    let p = &ids[9..12];
+    quote!(::planar_arm::__private::isometry3([#(#r),*], [#(#p),*]))
+}
+
+/// `const EXACT`: the tool pose's entries, V and g.
+fn exact(d: &SpatialDerived) -> Result<TokenStream, EmitError> {
+    let n = Literal::usize_unsuffixed(d.kinematics.gravity.len());
+    let mut names = Vec::new();
+    let mut terms = |e: &Expr<Poly>| -> Result<TokenStream, EmitError> {
+        let code = Literal::byte_string(&crate::compact::encode(e, &mut names)?);
+        let table = local("NAMES");
+        Ok(quote!(::planar_arm::__private::terms(#code, #table)))
+    };
+    let k = &d.kinematics;
+    let mut rows = Vec::new();
+    for i in 0..3 {
+        let mut row = Vec::new();
+        for j in 0..3 {
+            row.push(terms(&k.tool.r[i][j])?);
+        }
+        row.push(terms(&k.tool.p[i])?);
+        rows.push(quote!([#(#row),*]));
+    }
+    let v = terms(&k.potential_energy)?;
+    let g = k
+        .gravity
+        .iter()
+        .map(&mut terms)
+        .collect::<Result<Vec<_>, _>>()?;
+    let table = local("NAMES");
+    let names = names.iter().map(|n| n.trim_start_matches("r#"));
+    Ok(quote! {
+        const EXACT: ::planar_arm::exact::SpatialDerivation<#n> = {
+            const #table: &[&#STR] = &[#(#names),*];
+            ::planar_arm::exact::SpatialDerivation {
+                tip: [#(#rows),*],
+                potential_energy: #v,
+                gravity: [#(#g),*],
+            }
+        };
+    })
+}
+
+fn angle_tokens(a: &FixedAngle) -> Result<TokenStream, EmitError> {
+    crate::emit::f64_value_tokens(a.value())
+}
+
+fn triple(v: &[Poly; 3]) -> Result<TokenStream, EmitError> {
+    let [x, y, z] = [
+        coefficient_tokens(&v[0])?,
+        coefficient_tokens(&v[1])?,
+        coefficient_tokens(&v[2])?,
+    ];
+    Ok(quote!(::planar_arm::nalgebra::Vector3::new(#x, #y, #z)))
+}
+
+/// `fn model()`: the numeric description, run-time parameters read from `self`.
+fn model(arm: &SpatialArmSpec) -> Result<TokenStream, EmitError> {
+    let n = Literal::usize_unsuffixed(arm.joints.len());
+    let mut joints = Vec::new();
+    let mut links = Vec::new();
+    for j in &arm.joints {
+        let geometry = match &j.geometry {
+            SpatialGeometry::Dh { a, alpha, d, theta }
+            | SpatialGeometry::Mdh { a, alpha, d, theta } => {
+                let variant = if matches!(j.geometry, SpatialGeometry::Dh { .. }) {
+                    quote!(Dh)
+                } else {
+                    quote!(Mdh)
+                };
+                let (a, d) = (coefficient_tokens(a)?, coefficient_tokens(d)?);
+                let (alpha, theta) = (angle_tokens(alpha)?, angle_tokens(theta)?);
+                quote!(::planar_arm::spatial::JointGeometry::#variant { a: #a, alpha: #alpha, d: #d, theta: #theta })
+            }
+            SpatialGeometry::Urdf { xyz, rpy, axis } => {
+                let xyz = triple(xyz)?;
+                let [r, p, y] = [
+                    angle_tokens(&rpy[0])?,
+                    angle_tokens(&rpy[1])?,
+                    angle_tokens(&rpy[2])?,
+                ];
+                let axis = triple(axis)?;
+                quote!(::planar_arm::spatial::JointGeometry::Urdf {
+                    xyz: #xyz,
+                    rpy: ::planar_arm::nalgebra::Vector3::new(#r, #p, #y),
+                    axis: #axis,
+                })
+            }
+        };
+        let kind = match j.kind {
+            JointKind::Revolute => quote!(::planar_arm::Joint::Revolute),
+            JointKind::Prismatic => quote!(::planar_arm::Joint::Prismatic),
+        };
+        let range = match &j.range {
+            Some((lo, hi)) => {
+                let (lo, hi) = (f64_tokens(lo)?, f64_tokens(hi)?);
+                quote!(::core::option::Option::Some((#lo, #hi)))
+            }
+            None => quote!(::core::option::Option::None),
+        };
+        let (armature, damping, frictionloss) = (
+            coefficient_tokens(&j.armature)?,
+            coefficient_tokens(&j.damping)?,
+            coefficient_tokens(&j.frictionloss)?,
+        );
+        joints.push(quote!(::planar_arm::spatial::SpatialJoint {
+            geometry: #geometry,
+            kind: #kind,
+            range: #range,
+            armature: #armature,
+            damping: #damping,
+            frictionloss: #frictionloss,
+        }));
+        let mass = coefficient_tokens(&j.mass)?;
+        let com = triple(&j.com)?;
+        let i = j
+            .inertia
+            .iter()
+            .map(coefficient_tokens)
+            .collect::<Result<Vec<_>, _>>()?;
+        let (xx, yy, zz, xy, xz, yz) = (&i[0], &i[1], &i[2], &i[3], &i[4], &i[5]);
+        links.push(quote!(::planar_arm::spatial::SpatialLink {
+            mass: #mass,
+            com: #com,
+            inertia: ::planar_arm::nalgebra::Matrix3::new(#xx, #xy, #xz, #xy, #yy, #yz, #xz, #yz, #zz),
+        }));
+    }
+    let gravity = triple(&arm.gravity)?;
+    let tool_xyz = triple(&arm.tool_xyz)?;
+    let [r, p, y] = [
+        angle_tokens(&arm.tool_rpy[0])?,
+        angle_tokens(&arm.tool_rpy[1])?,
+        angle_tokens(&arm.tool_rpy[2])?,
+    ];
+    Ok(quote! {
+        #[inline]
+        fn model(&self) -> ::planar_arm::spatial::SpatialModel<#n> {
+            ::planar_arm::spatial::SpatialModel {
+                joints: [#(#joints),*],
+                links: [#(#links),*],
+                gravity: #gravity,
+                tool: ::planar_arm::nalgebra::Isometry3::from_parts(
+                    ::planar_arm::nalgebra::Translation3::from(#tool_xyz),
+                    ::planar_arm::nalgebra::UnitQuaternion::from_euler_angles(#r, #p, #y),
+                ),
+            }
+        }
+    })
+}
+
+/// `fn inverse_kinematics`: the closed form the geometry allows, decided here for arms whose
+/// values are known; at run time from `model()` for arms with run-time lengths; otherwise
+/// `NoClosedForm`.
+fn inverse_kinematics(arm: &SpatialArmSpec, d: &SpatialDerived) -> Result<TokenStream, EmitError> {
+    let n = arm.joints.len();
+    let nn = Literal::usize_unsuffixed(n);
+    let target = local("target");
+    let ranges = arm
+        .joints
+        .iter()
+        .map(|j| match &j.range {
+            Some((lo, hi)) => {
+                let (lo, hi) = (f64_tokens(lo)?, f64_tokens(hi)?);
+                Ok(quote!(::core::option::Option::Some((#lo, #hi))))
+            }
+            None => Ok(quote!(::core::option::Option::None)),
+        })
+        .collect::<Result<Vec<_>, EmitError>>()?;
+    let sig = quote!(fn inverse_kinematics(&self, #target: &::planar_arm::nalgebra::Isometry3<#F64>)
+        -> ::core::result::Result<::planar_arm::spatial::IkSolutions<#nn>, ::planar_arm::ArmError>);
+    let none = |what: &str| {
+        quote! {
+            /// No closed form for this arm's geometry: see `SpatialIk` for the classes that
+            /// have one, and `inverse_kinematics_near` for any arm.
+            #[inline]
+            #sig {
+                let _ = #target;
+                ::core::result::Result::Err(::planar_arm::ArmError::NoClosedForm { what: #what })
+            }
+        }
+    };
+    if n != 6 {
+        return Ok(none(
+            "closed-form inverse kinematics needs six joints; use inverse_kinematics_near",
+        ));
+    }
+    if let Some(g) = decouple(arm, &d.kinematics) {
+        let class = match g.class {
+            Decoupling::SphericalWrist => quote!(SphericalWrist),
+            Decoupling::SlidingWrist => quote!(SlidingWrist),
+            Decoupling::ParallelTriple => quote!(ParallelTriple),
+        };
+        let v3 = |v: &[f64; 3]| -> Result<TokenStream, EmitError> {
+            let [x, y, z] = [
+                crate::emit::f64_value_tokens(v[0])?,
+                crate::emit::f64_value_tokens(v[1])?,
+                crate::emit::f64_value_tokens(v[2])?,
+            ];
+            Ok(quote!(::planar_arm::nalgebra::Vector3::new(#x, #y, #z)))
+        };
+        let points = g.points.iter().map(v3).collect::<Result<Vec<_>, _>>()?;
+        let axes = g.axes.iter().map(v3).collect::<Result<Vec<_>, _>>()?;
+        let (r, p) = &g.home;
+        let rows = r
+            .iter()
+            .map(|row| {
+                let row = row
+                    .iter()
+                    .map(|x| crate::emit::f64_value_tokens(*x))
+                    .collect::<Result<Vec<_>, _>>()?;
+                Ok(quote!([#(#row),*]))
+            })
+            .collect::<Result<Vec<_>, EmitError>>()?;
+        let p = p
+            .iter()
+            .map(|x| crate::emit::f64_value_tokens(*x))
+            .collect::<Result<Vec<_>, _>>()?;
+        let centre = v3(&g.centre)?;
+        let scale = crate::emit::f64_value_tokens(g.scale)?;
+        let doc = format!(
+            "Every solution in closed form ({}: decided at compile time from the exact geometry); \
+             see `planar_arm::spatial::SpatialIk`.",
+            match g.class {
+                Decoupling::SphericalWrist => "a spherical wrist, axes 2 and 3 parallel",
+                Decoupling::SlidingWrist => "a spherical wrist, a sliding third joint",
+                Decoupling::ParallelTriple => "axes 2, 3 and 4 parallel, axes 5 and 6 meeting",
+            }
+        );
+        return Ok(quote! {
+            #[doc = #doc]
+            #[inline]
+            #sig {
+                let ik = ::planar_arm::spatial::SpatialIk {
+                    class: ::planar_arm::spatial::IkClass::#class,
+                    points: [#(#points),*],
+                    axes: [#(#axes),*],
+                    home: ::planar_arm::__private::isometry3([#(#rows),*], [#(#p),*]),
+                    centre: #centre,
+                    scale: #scale,
+                };
+                ik.solve(#target, &[#(#ranges),*])
+            }
+        });
+    }
+    let literal = arm.joints.iter().all(|j| {
+        matches!(&j.geometry, SpatialGeometry::Dh { a, d, .. } | SpatialGeometry::Mdh { a, d, .. }
+            if a.params().iter().all(|p| p.value().is_some()) && d.params().iter().all(|p| p.value().is_some()))
+            || matches!(&j.geometry, SpatialGeometry::Urdf { xyz, .. } if xyz.iter().all(|c| c.params().iter().all(|p| p.value().is_some())))
+    });
+    if literal {
+        return Ok(none(
+            "this arm's axes are not of a closed-form class; use inverse_kinematics_near",
+        ));
+    }
+    Ok(quote! {
+        /// Every solution in closed form, the class decided at run time from `model()` (the
+        /// arm's lengths are run-time parameters); `NoClosedForm` if the geometry has none.
+        #[inline]
+        #sig {
+            match ::planar_arm::spatial::SpatialIk::of_model(&self.model()) {
+                ::core::option::Option::Some(ik) => ik.solve(#target, &[#(#ranges),*]),
+                ::core::option::Option::None => ::core::result::Result::Err(::planar_arm::ArmError::NoClosedForm {
+                    what: "this arm's axes, with the lengths it has now, are not of a closed-form class; use inverse_kinematics_near",
+                }),
+            }
+        }
+    })
+}

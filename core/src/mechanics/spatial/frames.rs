@@ -1,0 +1,283 @@
+//! Exact kinematics of a spatial arm: each link's frame as a rotation and a position whose
+//! entries are trigonometric polynomials in the joint angles (and polynomials in the slides),
+//! multiplied out base to tip; the centres of mass, the potential energy and its gradient, the
+//! gravity torques.
+
+use super::spec::{FixedAngle, SpatialArmSpec, SpatialGeometry, SpatialJointSpec};
+use crate::algebra::expr::{Expr, Var};
+use crate::algebra::poly::Poly;
+use crate::algebra::ring::int;
+use crate::algebra::trig::{Angle, Trig};
+use crate::mechanics::planar::JointKind;
+
+type E = Expr<Poly>;
+
+/// A rigid transformation with exact entries: `x -> r x + p`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Frame {
+    /// Rotation, row-major.
+    pub r: [[E; 3]; 3],
+    /// Translation.
+    pub p: [E; 3],
+}
+
+fn constant(c: &Poly) -> E {
+    E::constant(c.clone())
+}
+
+fn one() -> Poly {
+    Poly::constant(int(1))
+}
+
+impl Frame {
+    /// The identity.
+    #[must_use]
+    pub fn identity() -> Self {
+        Self::from_rotation(&[
+            [one(), Poly::default(), Poly::default()],
+            [Poly::default(), one(), Poly::default()],
+            [Poly::default(), Poly::default(), one()],
+        ])
+    }
+
+    /// A constant rotation.
+    #[must_use]
+    pub fn from_rotation(r: &[[Poly; 3]; 3]) -> Self {
+        Self {
+            r: core::array::from_fn(|i| core::array::from_fn(|j| constant(&r[i][j]))),
+            p: core::array::from_fn(|_| E::zero()),
+        }
+    }
+
+    /// A translation by exact expressions.
+    #[must_use]
+    pub fn translation(p: [E; 3]) -> Self {
+        Self {
+            p,
+            ..Self::identity()
+        }
+    }
+
+    /// `self * other`: `r = r1 r2`, `p = r1 p2 + p1`.
+    #[must_use]
+    pub fn mul(&self, other: &Self) -> Self {
+        let r = core::array::from_fn(|i| {
+            core::array::from_fn(|j| {
+                let mut e = E::zero();
+                for k in 0..3 {
+                    e.add_product(&self.r[i][k], &other.r[k][j]);
+                }
+                e
+            })
+        });
+        let p = self.apply(&other.p);
+        Self { r, p }
+    }
+
+    /// `r v`.
+    #[must_use]
+    pub fn rotate(&self, v: &[E; 3]) -> [E; 3] {
+        core::array::from_fn(|i| {
+            let mut e = E::zero();
+            for (r, x) in self.r[i].iter().zip(v) {
+                e.add_product(r, x);
+            }
+            e
+        })
+    }
+
+    /// `r v + p`.
+    #[must_use]
+    pub fn apply(&self, v: &[E; 3]) -> [E; 3] {
+        let mut out = self.rotate(v);
+        for (o, p) in out.iter_mut().zip(&self.p) {
+            o.add_assign(p);
+        }
+        out
+    }
+}
+
+/// `Rx(angle)`, `Ry(angle)`, `Rz(angle)` for a constant angle.
+fn elementary(axis: usize, angle: &FixedAngle) -> Frame {
+    let (c, s) = angle.cos_sin();
+    let z = Poly::default;
+    let r = match axis {
+        0 => [[one(), z(), z()], [z(), c.clone(), -s.clone()], [z(), s, c]],
+        1 => [[c.clone(), z(), s.clone()], [z(), one(), z()], [-s, z(), c]],
+        _ => [[c.clone(), -s.clone(), z()], [s, c, z()], [z(), z(), one()]],
+    };
+    Frame::from_rotation(&r)
+}
+
+fn shift(x: &Poly, y: &Poly, z: &Poly) -> Frame {
+    Frame::translation([constant(x), constant(y), constant(z)])
+}
+
+fn rpy(a: &[FixedAngle; 3]) -> Frame {
+    elementary(2, &a[2])
+        .mul(&elementary(1, &a[1]))
+        .mul(&elementary(0, &a[0]))
+}
+
+/// The rotation by `q_j` about the unit axis `u` (exact entries): `c I + s [u]x + (1 - c) u u^T`.
+fn turn(u: &[Poly; 3], j: usize) -> Frame {
+    let mut k = vec![0; j + 1];
+    k[j] = 1;
+    let angle = Angle::new(k);
+    let c = E::cos(one(), angle.clone());
+    let s = E::sin(one(), angle);
+    let one_minus_c = constant(&one()).sub(&c);
+    let cross = [
+        [Poly::default(), -u[2].clone(), u[1].clone()],
+        [u[2].clone(), Poly::default(), -u[0].clone()],
+        [-u[1].clone(), u[0].clone(), Poly::default()],
+    ];
+    let r = core::array::from_fn(|a| {
+        core::array::from_fn(|b| {
+            let mut e = one_minus_c.scale_by(&(u[a].clone() * u[b].clone()));
+            e.add_assign(&s.scale_by(&cross[a][b]));
+            if a == b {
+                e.add_assign(&c);
+            }
+            e
+        })
+    });
+    Frame {
+        r,
+        p: core::array::from_fn(|_| E::zero()),
+    }
+}
+
+/// The slide by `q_j` along the unit axis `u`.
+fn slide(u: &[Poly; 3], j: usize) -> Frame {
+    let q = E::var(Var::Q(j));
+    Frame::translation(core::array::from_fn(|i| q.scale_by(&u[i])))
+}
+
+/// The three parts of joint `j`'s transformation `pre * motion(q_j) * post`: where the axis is
+/// (`pre`), the motion about or along the axis `u` in `pre`'s frame, and what follows it.
+#[must_use]
+pub fn joint_parts(joint: &SpatialJointSpec) -> (Frame, [Poly; 3], Frame) {
+    let zero = Poly::default;
+    let z_axis = [zero(), zero(), one()];
+    let revolute = joint.kind == JointKind::Revolute;
+    match &joint.geometry {
+        SpatialGeometry::Dh { a, alpha, d, theta } => {
+            let twist = shift(a, &zero(), &zero()).mul(&elementary(0, alpha));
+            if revolute {
+                (
+                    elementary(2, theta),
+                    z_axis,
+                    shift(&zero(), &zero(), d).mul(&twist),
+                )
+            } else {
+                (
+                    elementary(2, theta).mul(&shift(&zero(), &zero(), d)),
+                    z_axis,
+                    twist,
+                )
+            }
+        }
+        SpatialGeometry::Mdh { a, alpha, d, theta } => {
+            let pre = elementary(0, alpha)
+                .mul(&shift(a, &zero(), &zero()))
+                .mul(&elementary(2, theta));
+            if revolute {
+                (pre, z_axis, shift(&zero(), &zero(), d))
+            } else {
+                (
+                    pre.mul(&shift(&zero(), &zero(), d)),
+                    z_axis,
+                    Frame::identity(),
+                )
+            }
+        }
+        SpatialGeometry::Urdf {
+            xyz,
+            rpy: angles,
+            axis,
+        } => (
+            shift(&xyz[0], &xyz[1], &xyz[2]).mul(&rpy(angles)),
+            axis.clone(),
+            Frame::identity(),
+        ),
+    }
+}
+
+/// The motion of joint `j` about or along `u`.
+#[must_use]
+pub fn motion(kind: JointKind, u: &[Poly; 3], j: usize) -> Frame {
+    match kind {
+        JointKind::Revolute => turn(u, j),
+        JointKind::Prismatic => slide(u, j),
+    }
+}
+
+/// The tool frame in the last link's frame.
+#[must_use]
+pub fn tool_frame(arm: &SpatialArmSpec) -> Frame {
+    shift(&arm.tool_xyz[0], &arm.tool_xyz[1], &arm.tool_xyz[2]).mul(&rpy(&arm.tool_rpy))
+}
+
+/// The exact kinematics of an arm.
+#[derive(Clone, Debug)]
+pub struct SpatialKinematics {
+    /// Each link's frame in the base frame.
+    pub links: Vec<Frame>,
+    /// The tool frame.
+    pub tool: Frame,
+    /// Each joint's axis in the base frame: a point on it and its unit direction.
+    pub axes: Vec<([E; 3], [E; 3])>,
+    /// Each link's centre of mass in the base frame.
+    pub centres: Vec<[E; 3]>,
+    /// The potential energy `-sum m g . c`.
+    pub potential_energy: E,
+    /// The gravity torques `dV/dq`.
+    pub gravity: Vec<E>,
+}
+
+impl SpatialKinematics {
+    /// Multiplies the arm out.
+    #[must_use]
+    pub fn derive(arm: &SpatialArmSpec) -> Self {
+        let mut frame = Frame::identity();
+        let (mut links, mut axes, mut centres) = (Vec::new(), Vec::new(), Vec::new());
+        let mut potential = E::zero();
+        for (j, joint) in arm.joints.iter().enumerate() {
+            let (pre, u, post) = joint_parts(joint);
+            let at_axis = frame.mul(&pre);
+            let u_expr: [E; 3] = core::array::from_fn(|i| constant(&u[i]));
+            axes.push((at_axis.p.clone(), at_axis.rotate(&u_expr)));
+            frame = at_axis.mul(&motion(joint.kind, &u, j)).mul(&post);
+            let com: [E; 3] = core::array::from_fn(|i| constant(&joint.com[i]));
+            let c = frame.apply(&com);
+            for (g, ci) in arm.gravity.iter().zip(&c) {
+                potential.sub_assign(&ci.scale_by(&(joint.mass.clone() * g.clone())));
+            }
+            centres.push(c);
+            links.push(frame.clone());
+        }
+        let tool = frame.mul(&tool_frame(arm));
+        let gravity = (0..arm.joints.len()).map(|i| potential.diff_q(i)).collect();
+        Self {
+            links,
+            tool,
+            axes,
+            centres,
+            potential_energy: potential,
+            gravity,
+        }
+    }
+}
+
+/// The value of `e` at `q = 0`: cosines 1, sines 0, slides 0.
+#[must_use]
+pub fn at_zero(e: &E) -> Poly {
+    let mut out = Poly::default();
+    for (m, t, c) in e.terms() {
+        if m.degree() == 0 && !matches!(t, Trig::Sin(_)) {
+            out = out + c.clone();
+        }
+    }
+    out
+}

@@ -1,0 +1,267 @@
+//! What well-formed spatial attributes can still get wrong, and the engine's exact
+//! `SpatialArmSpec` when nothing is.
+
+use num_traits::{Signed, Zero};
+use planar_arm_core::mechanics::spatial::{
+    unit_axis, FixedAngle, SpatialArmSpec, SpatialGeometry, SpatialJointSpec,
+};
+use planar_arm_core::ring::{parse_decimal, to_f64, Rational};
+use planar_arm_core::Poly;
+
+use super::angle::Angle;
+use super::ast::{SpatialArm, SpatialJoint};
+use super::attr::{Convention, Scalar, Spanned, INERTIA_KEYS};
+use crate::ctxt::Ctxt;
+
+fn fixed(a: &Option<Spanned<Angle>>) -> FixedAngle {
+    a.as_ref().map_or_else(FixedAngle::zero, |a| FixedAngle {
+        radians: a.value.radians.clone(),
+        pi_multiple: a.value.pi_multiple.clone(),
+    })
+}
+
+fn or_zero(v: &Option<Scalar>) -> Poly {
+    v.as_ref().map_or_else(Poly::default, |v| v.value.clone())
+}
+
+/// A literal value that must not be negative.
+fn not_negative(cx: &Ctxt, v: &Option<Scalar>, message: &str) -> bool {
+    match v
+        .as_ref()
+        .and_then(|v| v.value.as_rational().map(|r| (r, &v.tokens)))
+    {
+        Some((r, tokens)) if r.is_negative() => {
+            cx.error_spanned_by(tokens, message);
+            false
+        }
+        _ => true,
+    }
+}
+
+/// Validates the parsed arm; `None` after recording errors in `cx`.
+pub fn check(cx: &Ctxt, arm: &SpatialArm<'_>) -> Option<SpatialArmSpec> {
+    let mut ok = true;
+    for p in &arm.attrs.params {
+        if let Err(msg) = arm.f64_field(&p.name) {
+            cx.error_spanned_by(&p.tokens, msg);
+            ok = false;
+        }
+    }
+    let first = arm
+        .joints
+        .iter()
+        .find_map(|j| j.attrs.geometry.as_ref().map(|g| (g.convention, j.name())));
+    let mut joints = Vec::new();
+    for joint in &arm.joints {
+        for p in &joint.attrs.params {
+            if let Err(msg) = arm.f64_field(&p.name) {
+                cx.error_spanned_by(&p.tokens, msg);
+                ok = false;
+            }
+        }
+        match check_joint(cx, joint, first.as_ref()) {
+            Some(spec) => joints.push(spec),
+            None => ok = false,
+        }
+    }
+    let a = &arm.attrs;
+    let triple = |t: &Option<Spanned<[Poly; 3]>>, default: [Poly; 3]| {
+        t.as_ref().map_or(default, |t| t.value.clone())
+    };
+    let standard = || parse_decimal("-9.81").map_or_else(Poly::default, Poly::constant);
+    let gravity = triple(&a.gravity, [Poly::default(), Poly::default(), standard()]);
+    let tool_xyz = triple(
+        &a.tool_xyz,
+        [Poly::default(), Poly::default(), Poly::default()],
+    );
+    let tool_rpy = a.tool_rpy.as_ref().map_or_else(
+        || [FixedAngle::zero(), FixedAngle::zero(), FixedAngle::zero()],
+        |r| {
+            r.value.clone().map(|x| FixedAngle {
+                radians: x.radians,
+                pi_multiple: x.pi_multiple,
+            })
+        },
+    );
+    (ok && joints.len() == arm.joints.len()).then_some(SpatialArmSpec {
+        joints,
+        gravity,
+        tool_xyz,
+        tool_rpy,
+    })
+}
+
+fn check_joint(
+    cx: &Ctxt,
+    joint: &SpatialJoint<'_>,
+    first: Option<&(Convention, String)>,
+) -> Option<SpatialJointSpec> {
+    let name = joint.name();
+    let a = &joint.attrs;
+    let mut ok = true;
+    let Some(g) = &a.geometry else {
+        cx.error_spanned_by(
+            if a.tokens.is_empty() { quote::quote!(#name) } else { a.tokens.clone() },
+            format!(
+                "joint `{name}` has no geometry: write `dh(a = .., alpha = .., d = .., theta = ..)`, \
+                 `mdh(...)`, or `origin(xyz = (..), rpy = (..)), axis = (..)`"
+            ),
+        );
+        return None;
+    };
+    if let Some((convention, first_name)) = first {
+        if *convention != g.convention {
+            cx.error_spanned_by(
+                &g.tokens,
+                format!(
+                    "joint `{name}` is written with `{}` but `{first_name}` with `{}`; write every joint of \
+                     an arm in one convention",
+                    g.convention.key(),
+                    convention.key()
+                ),
+            );
+            ok = false;
+        }
+    }
+    let geometry = match g.convention {
+        Convention::Dh | Convention::Mdh => {
+            if let Some(axis) = &a.axis {
+                cx.error_spanned_by(
+                    &axis.tokens,
+                    format!("`axis` goes with `origin(...)`; a `{}` joint moves about or along its z axis", g.convention.key()),
+                );
+                ok = false;
+            }
+            let (a_, alpha, d, theta) = (
+                or_zero(&g.a),
+                fixed(&g.alpha),
+                or_zero(&g.d),
+                fixed(&g.theta),
+            );
+            if g.convention == Convention::Dh {
+                SpatialGeometry::Dh {
+                    a: a_,
+                    alpha,
+                    d,
+                    theta,
+                }
+            } else {
+                SpatialGeometry::Mdh {
+                    a: a_,
+                    alpha,
+                    d,
+                    theta,
+                }
+            }
+        }
+        Convention::Origin => {
+            let axis = a.axis.as_ref().map_or_else(
+                || {
+                    [
+                        Rational::zero(),
+                        Rational::zero(),
+                        Rational::from_integer(1.into()),
+                    ]
+                },
+                |x| x.value.clone(),
+            );
+            if axis.iter().all(Zero::is_zero) {
+                let tokens = a
+                    .axis
+                    .as_ref()
+                    .map(|x| x.tokens.clone())
+                    .unwrap_or_default();
+                cx.error_spanned_by(tokens, format!("joint `{name}`: a zero axis moves nothing; give its direction, e.g. `axis = (0, 0, 1)`"));
+                ok = false;
+            }
+            let xyz = g.xyz.as_ref().map_or_else(
+                || [Poly::default(), Poly::default(), Poly::default()],
+                |t| t.value.clone(),
+            );
+            let rpy = g.rpy.as_ref().map_or_else(
+                || [FixedAngle::zero(), FixedAngle::zero(), FixedAngle::zero()],
+                |r| {
+                    r.value.clone().map(|x| FixedAngle {
+                        radians: x.radians,
+                        pi_multiple: x.pi_multiple,
+                    })
+                },
+            );
+            SpatialGeometry::Urdf {
+                xyz,
+                rpy,
+                axis: unit_axis(&axis),
+            }
+        }
+    };
+    ok &= not_negative(
+        cx,
+        &a.mass,
+        &format!("joint `{name}`: a mass cannot be negative"),
+    );
+    ok &= not_negative(
+        cx,
+        &a.armature,
+        &format!("joint `{name}`: armature cannot be negative"),
+    );
+    ok &= not_negative(
+        cx,
+        &a.damping,
+        &format!("joint `{name}`: damping cannot be negative (it would feed energy in)"),
+    );
+    ok &= not_negative(
+        cx,
+        &a.frictionloss,
+        &format!("joint `{name}`: frictionloss cannot be negative (it would feed energy in)"),
+    );
+    ok &= check_inertia(cx, &name, a);
+    let range = a.range.as_ref().and_then(|r| {
+        let (lo, hi) = &r.value;
+        if to_f64(lo) >= to_f64(hi) {
+            cx.error_spanned_by(
+                &r.tokens,
+                format!("joint `{name}`: a range needs lower < upper as f64 values"),
+            );
+            ok = false;
+            return None;
+        }
+        Some((lo.clone(), hi.clone()))
+    });
+    let inertia: [Poly; 6] = core::array::from_fn(|i| or_zero(&a.inertia[i]));
+    ok.then(|| SpatialJointSpec {
+        geometry,
+        kind: joint.kind,
+        mass: or_zero(&a.mass),
+        com: a.com.as_ref().map_or_else(
+            || [Poly::default(), Poly::default(), Poly::default()],
+            |c| c.value.clone(),
+        ),
+        inertia,
+        range,
+        armature: or_zero(&a.armature),
+        damping: or_zero(&a.damping),
+        frictionloss: or_zero(&a.frictionloss),
+    })
+}
+
+/// Literal inertia tensors must have no negative moment on the diagonal. The triangle
+/// inequality is not required: published models break it (Corke's PUMA 560 gives the waist only
+/// `Iyy`), and kinematics and gravity do not depend on the tensor.
+fn check_inertia(cx: &Ctxt, name: &str, a: &super::attr::SpatialAttrs) -> bool {
+    let mut ok = true;
+    for (i, v) in a.inertia.iter().enumerate().take(3) {
+        if let Some(v) = v {
+            if v.value.as_rational().is_some_and(|r| r.is_negative()) {
+                cx.error_spanned_by(
+                    &v.tokens,
+                    format!(
+                        "joint `{name}`: inertia `{}` cannot be negative",
+                        INERTIA_KEYS[i]
+                    ),
+                );
+                ok = false;
+            }
+        }
+    }
+    ok
+}

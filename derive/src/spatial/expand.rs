@@ -1,0 +1,113 @@
+//! Expansion of `#[derive(SpatialArm)]`: a valid arm goes to the engine; an invalid one gets
+//! its errors and a stub impl, so that uses of the trait elsewhere add no cascade.
+
+use proc_macro2::TokenStream;
+use quote::{quote, ToTokens};
+use syn::DeriveInput;
+
+use planar_arm_core::generate::Header;
+use planar_arm_core::paths::F64;
+
+use super::ast::SpatialArm;
+use super::check::check;
+use crate::ctxt::Ctxt;
+
+pub fn derive(input: &DeriveInput) -> TokenStream {
+    let tokens = match try_derive(input) {
+        Ok(tokens) => tokens,
+        Err(errors) => {
+            let stub = stub(input);
+            quote!(#errors #stub)
+        }
+    };
+    match crate::expand::krate(input) {
+        Some(path) => planar_arm_core::paths::qualify(tokens, Some(&path)),
+        None => tokens,
+    }
+}
+
+fn try_derive(input: &DeriveInput) -> Result<TokenStream, TokenStream> {
+    let cx = Ctxt::new();
+    let arm = SpatialArm::from_ast(&cx, input);
+    let spec = arm.as_ref().and_then(|arm| check(&cx, arm));
+    cx.check()?;
+    let (Some(arm), Some(spec)) = (arm, spec) else {
+        return Err(syn::Error::new_spanned(&input.ident, "invalid arm").to_compile_error());
+    };
+    let header = crate::expand::header(input);
+    let mut tokens = planar_arm_core::spatial::generate_spatial(&spec, &header)
+        .map_err(|e| syn::Error::new_spanned(&input.ident, e.to_string()).to_compile_error())?;
+    tokens.extend(joint_types(&arm));
+    tokens.extend(crate::expand::param_accessors_of(
+        arm.attrs
+            .params
+            .iter()
+            .chain(arm.joints.iter().flat_map(|j| j.attrs.params.iter()))
+            .map(|p| p.name.clone())
+            .collect(),
+        &arm.others,
+        &header,
+    ));
+    Ok(tokens)
+}
+
+/// The check that every joint field is `planar_arm::Revolute` or `Prismatic`.
+fn joint_types(arm: &SpatialArm<'_>) -> TokenStream {
+    let checks = arm.joints.iter().map(|j| {
+        let ty = &j.field.ty;
+        let check = match j.kind {
+            planar_arm_core::JointKind::Revolute => quote!(link_field),
+            planar_arm_core::JointKind::Prismatic => quote!(prismatic_field),
+        };
+        quote::quote_spanned!(syn::spanned::Spanned::span(ty)=> ::planar_arm::__private::#check::<#ty>();)
+    });
+    quote!(const _: () = { #(#checks)* };)
+}
+
+/// A stub impl whose methods are unreachable, emitted next to a compile error.
+fn stub(input: &DeriveInput) -> TokenStream {
+    if input.generics.type_params().any(|p| p.ident == "__T") {
+        return TokenStream::new();
+    }
+    let n = match &input.data {
+        syn::Data::Struct(s) => s
+            .fields
+            .iter()
+            .filter(|f| crate::ast::joint_kind(&f.ty).is_some())
+            .count(),
+        _ => 0,
+    };
+    if n == 0 {
+        return TokenStream::new();
+    }
+    let Header {
+        impl_generics,
+        ty,
+        where_clause,
+        ..
+    } = crate::expand::header(input);
+    let nn = proc_macro2::Literal::usize_unsuffixed(n);
+    let v = quote!(&::planar_arm::nalgebra::SVector<#F64, #nn>);
+    let vt = quote!(&::planar_arm::nalgebra::SVector<__T, #nn>);
+    let body = quote!({ ::core::unreachable!() });
+    let terms = quote!(::planar_arm::__private::terms(b"", &[]));
+    let _ = ToTokens::to_token_stream(&input.ident);
+    quote! {
+        #[automatically_derived]
+        impl #impl_generics ::planar_arm::spatial::SpatialArm<#nn> for #ty #where_clause {
+            const EXACT: ::planar_arm::exact::SpatialDerivation<#nn> = ::planar_arm::exact::SpatialDerivation {
+                tip: [[#terms; 4]; 3],
+                potential_energy: #terms,
+                gravity: [#terms; #nn],
+            };
+            fn tip_pose(&self, _: #v) -> ::planar_arm::nalgebra::Isometry3<#F64> #body
+            fn link_poses(&self, _: #v) -> [::planar_arm::nalgebra::Isometry3<#F64>; #nn] #body
+            fn jacobian<__T: ::planar_arm::Real>(&self, _: #vt) -> ::planar_arm::nalgebra::SMatrix<__T, 6, #nn> #body
+            fn gravity<__T: ::planar_arm::Real>(&self, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
+            fn potential_energy<__T: ::planar_arm::Real>(&self, _: #vt) -> __T #body
+            fn model(&self) -> ::planar_arm::spatial::SpatialModel<#nn> #body
+            fn inverse_kinematics(&self, _: &::planar_arm::nalgebra::Isometry3<#F64>)
+                -> ::core::result::Result<::planar_arm::spatial::IkSolutions<#nn>, ::planar_arm::ArmError> #body
+        }
+    }
+}
