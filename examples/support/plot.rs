@@ -59,6 +59,7 @@ where
 }
 
 /// The sample drawn beside an entry of a side key.
+#[derive(Clone, Copy)]
 pub enum Sample {
     Line(ShapeStyle),
     Dashed(ShapeStyle),
