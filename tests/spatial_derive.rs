@@ -1,12 +1,18 @@
-//! `#[derive(SpatialArm)]` against the numeric reference: the PUMA 560 written in each of the
-//! three conventions, the Stanford arm and the UR5.
+//! `#[derive(SpatialArm)]` against the numeric reference (a product of 4x4 transformations
+//! built at run time from hand-written models, not from the derive's): the PUMA 560 in each of
+//! the three conventions, the Stanford arm, the UR5, the Panda, and arms with arbitrary twists,
+//! slides and run-time parameters; the Jacobian and gravity against finite differences; the
+//! closed-form inverse kinematics of the six-joint arms.
 
-use core::f64::consts::PI;
+use core::f64::consts::{FRAC_PI_2, FRAC_PI_3, FRAC_PI_4, FRAC_PI_6, PI};
 
-use planar_arm::nalgebra::{Isometry3, SVector};
+use planar_arm::nalgebra::{Isometry3, Matrix3, SVector, Translation3, UnitQuaternion, Vector3};
 use planar_arm::prelude::*;
 use planar_arm::reference::spatial as reference;
-use planar_arm::spatial::SpatialArm;
+use planar_arm::spatial::{
+    JointGeometry, SpatialArm, SpatialIk, SpatialJoint, SpatialLink, SpatialModel,
+};
+use planar_arm::{ArmError, Joint};
 
 /// PUMA 560, standard Denavit-Hartenberg parameters (Corke's model).
 #[derive(SpatialArm, Default)]
@@ -30,6 +36,154 @@ struct Puma560 {
     wrist3: Revolute,
 }
 
+/// The same PUMA in modified (Craig) parameters: joint i carries link i-1's `a` and `alpha`
+/// (`Rx(alpha) Tx(a)` commutes into `Tx(a) Rx(alpha)`), so the tool pose is the same product.
+#[derive(SpatialArm, Default)]
+struct PumaMdh {
+    #[arm(mdh(a = 0, alpha = 0, d = 0))]
+    waist: Revolute,
+    #[arm(mdh(a = 0, alpha = pi/2, d = 0))]
+    shoulder: Revolute,
+    #[arm(mdh(a = 0.4318, alpha = 0, d = 0.15005))]
+    elbow: Revolute,
+    #[arm(mdh(a = 0.0203, alpha = -pi/2, d = 0.4318))]
+    wrist1: Revolute,
+    #[arm(mdh(a = 0, alpha = pi/2, d = 0))]
+    wrist2: Revolute,
+    #[arm(mdh(a = 0, alpha = -pi/2, d = 0))]
+    wrist3: Revolute,
+}
+
+/// The same PUMA as URDF joints: `Rx(alpha) Tx(a) Tz(d) = T(a, -d sin alpha, d cos alpha)
+/// Rx(alpha)`, the rotation as a roll.
+#[derive(SpatialArm, Default)]
+struct PumaUrdf {
+    #[arm(origin(xyz = (0, 0, 0)))]
+    waist: Revolute,
+    #[arm(origin(rpy = (pi/2, 0, 0)), axis = (0, 0, 1))]
+    shoulder: Revolute,
+    #[arm(origin(xyz = (0.4318, 0, 0.15005)))]
+    elbow: Revolute,
+    #[arm(origin(xyz = (0.0203, 0.4318, 0), rpy = (-pi/2, 0, 0)))]
+    wrist1: Revolute,
+    #[arm(origin(rpy = (pi/2, 0, 0)))]
+    wrist2: Revolute,
+    #[arm(origin(rpy = (-pi/2, 0, 0)))]
+    wrist3: Revolute,
+}
+
+/// The Stanford arm (Corke's geometry): the third joint slides 0.3048 to 1.27 m. Masses are
+/// made up, off every axis, to exercise gravity through the slide.
+#[derive(SpatialArm, Default)]
+struct Stanford {
+    #[arm(dh(a = 0, alpha = -pi/2, d = 0.412), mass = 9.29, com = (0, 0.0175, -0.1105))]
+    j1: Revolute,
+    #[arm(dh(a = 0, alpha = pi/2, d = 0.154), mass = 5.01, com = (0.01, -0.1054, 0))]
+    j2: Revolute,
+    #[arm(dh(a = 0.0203, alpha = 0, theta = -pi/2), mass = 4.25, com = (0, 0.02, -0.6447),
+          range = (0.3048, 1.27))]
+    slide: Prismatic,
+    #[arm(dh(a = 0, alpha = -pi/2, d = 0), mass = 1.08, com = (0, 0.092, -0.054))]
+    j4: Revolute,
+    #[arm(dh(a = 0, alpha = pi/2, d = 0), mass = 0.63, com = (0, 0.0566, 0.003))]
+    j5: Revolute,
+    #[arm(dh(a = 0, alpha = 0, d = 0.263), mass = 0.51, com = (0, 0, 0.1554))]
+    j6: Revolute,
+}
+
+/// The UR5 (Universal Robots' DH parameters and published masses and centres of mass).
+#[derive(SpatialArm, Default)]
+struct Ur5 {
+    #[arm(dh(alpha = pi/2, d = 0.089159), mass = 3.7, com = (0, -0.02561, 0.00193))]
+    shoulder_pan: Revolute,
+    #[arm(dh(a = -0.425), mass = 8.393, com = (0.2125, 0, 0.11336))]
+    shoulder_lift: Revolute,
+    #[arm(dh(a = -0.39225), mass = 2.275, com = (0.15, 0, 0.0265))]
+    elbow: Revolute,
+    #[arm(dh(alpha = pi/2, d = 0.10915), mass = 1.219, com = (0, -0.0018, 0.01634))]
+    wrist1: Revolute,
+    #[arm(dh(alpha = -pi/2, d = 0.09465), mass = 1.219, com = (0, 0.0018, 0.01634))]
+    wrist2: Revolute,
+    #[arm(dh(d = 0.0823), mass = 0.1879, com = (0, 0, -0.001159))]
+    wrist3: Revolute,
+}
+
+/// The Franka Emika Panda (Franka's modified DH parameters, the flange 0.107 m along the last
+/// axis); seven joints, so no closed form.
+#[derive(SpatialArm, Default)]
+#[arm(tool(xyz = (0, 0, 0.107)))]
+struct Panda {
+    #[arm(mdh(d = 0.333), mass = 4.97, com = (0.0039, 0.0021, -0.0476))]
+    j1: Revolute,
+    #[arm(mdh(alpha = -pi/2), mass = 0.646, com = (-0.0031, -0.0287, 0.0034))]
+    j2: Revolute,
+    #[arm(mdh(alpha = pi/2, d = 0.316), mass = 3.228, com = (0.0275, 0.0392, -0.0665))]
+    j3: Revolute,
+    #[arm(mdh(a = 0.0825, alpha = pi/2), mass = 3.587, com = (-0.0532, 0.1044, 0.0274))]
+    j4: Revolute,
+    #[arm(mdh(a = -0.0825, alpha = -pi/2, d = 0.384), mass = 1.226, com = (-0.0118, 0.0414, -0.0384))]
+    j5: Revolute,
+    #[arm(mdh(alpha = pi/2), mass = 1.666, com = (0.0601, -0.0141, -0.0105))]
+    j6: Revolute,
+    #[arm(mdh(a = 0.088, alpha = pi/2), mass = 0.735, com = (0.0105, 0.0043, 0.0617))]
+    j7: Revolute,
+}
+
+/// Standard parameters with twists that are not multiples of pi/2 (their cosines and sines
+/// enter as constants), angle offsets, a slide, and lengths and masses read at run time.
+#[derive(SpatialArm)]
+#[arm(gravity = (0.5, -1, -9.81), tool(xyz = (0.05, 0, self.flange), rpy = (0.1, -0.2, 0.3)))]
+struct OddDh {
+    reach: f64,
+    flange: f64,
+    load: f64,
+    #[arm(dh(a = self.reach, alpha = 0.3, d = 0.2, theta = pi/6), mass = 2, com = (-0.1, 0.02, 0.03))]
+    j1: Revolute,
+    #[arm(dh(a = 0.25, alpha = pi/3, d = -0.05, theta = 0.2), mass = self.load, com = (0.01, self.reach, 0))]
+    j2: Prismatic,
+    #[arm(dh(a = 2 * self.reach - 0.1, alpha = -2*pi/5), mass = 1.5, com = (0.1, 0, -0.02))]
+    j3: Revolute,
+    #[arm(dh(a = 0.1, alpha = pi/4, d = 0.07), mass = 0.5, com = (0, 0.03, 0.05))]
+    j4: Revolute,
+}
+
+/// Modified parameters, a slide first and a twist of 0.7 rad.
+#[derive(SpatialArm, Default)]
+struct OddMdh {
+    #[arm(mdh(a = 0.1, alpha = 0.7, d = 0.3), mass = 1, com = (0, 0.1, 0))]
+    j1: Prismatic,
+    #[arm(mdh(a = 0.4, alpha = -pi/2, theta = -pi/4), mass = 2, com = (0.2, 0, 0.01))]
+    j2: Revolute,
+    #[arm(mdh(a = 0.3, alpha = pi/6, d = 0.05), mass = 0.7, com = (0.1, 0.01, 0))]
+    j3: Revolute,
+}
+
+/// URDF joints with rotated origins and axes that are not coordinate axes: (1, 2, 2) has an
+/// exact unit vector, (1, 1, 0) does not.
+#[derive(SpatialArm, Default)]
+#[arm(tool(rpy = (0, pi/2, 0)))]
+struct OddUrdf {
+    #[arm(origin(xyz = (0, 0, 0.3), rpy = (0.1, -0.2, 0.3)), axis = (1, 1, 0), mass = 1,
+          com = (0.05, 0, 0.1))]
+    j1: Revolute,
+    #[arm(origin(xyz = (0.2, 0.05, 0)), axis = (0, 1, 0), mass = 2, com = (0.1, 0, 0))]
+    j2: Revolute,
+    #[arm(origin(xyz = (0.3, 0, 0.02), rpy = (0, 0, pi/2)), axis = (1, 2, 2), mass = 0.8,
+          com = (0, 0.1, 0.1))]
+    j3: Revolute,
+    #[arm(origin(xyz = (0, 0.1, 0)), axis = (0, 0, -1), mass = 0.5, com = (0.02, 0, -0.05))]
+    j4: Prismatic,
+    #[arm(origin(rpy = (pi, 0, -pi/3)), mass = 0.2, com = (0, 0, 0.04))]
+    j5: Revolute,
+}
+
+/// One joint about the base's z axis.
+#[derive(SpatialArm, Default)]
+struct Single {
+    #[arm(dh(a = 0.5, alpha = pi/2), mass = 1, com = (-0.25, 0, 0))]
+    j1: Revolute,
+}
+
 struct Rng(u64);
 
 impl Rng {
@@ -50,53 +204,639 @@ fn pose_gap(a: &Isometry3<f64>, b: &Isometry3<f64>) -> f64 {
     d.translation.vector.norm().max(d.rotation.angle())
 }
 
-fn against_reference<A: SpatialArm<N>, const N: usize>(arm: &A, rng: &mut Rng) {
-    let model = arm.model();
+// Hand-written models of the arms above, for the reference: the derive's own `model()` is
+// compared with them, not trusted.
+
+const R: Joint = Joint::Revolute;
+const P: Joint = Joint::Prismatic;
+
+fn dh(a: f64, alpha: f64, d: f64, theta: f64, kind: Joint) -> SpatialJoint {
+    SpatialJoint::new(JointGeometry::Dh { a, alpha, d, theta }, kind)
+}
+
+fn mdh(a: f64, alpha: f64, d: f64, theta: f64, kind: Joint) -> SpatialJoint {
+    SpatialJoint::new(JointGeometry::Mdh { a, alpha, d, theta }, kind)
+}
+
+fn urdf(xyz: [f64; 3], rpy: [f64; 3], axis: [f64; 3], kind: Joint) -> SpatialJoint {
+    let v = |a: [f64; 3]| Vector3::new(a[0], a[1], a[2]);
+    let geometry = JointGeometry::Urdf {
+        xyz: v(xyz),
+        rpy: v(rpy),
+        axis: v(axis),
+    };
+    SpatialJoint::new(geometry, kind)
+}
+
+fn link(mass: f64, com: [f64; 3], inertia: [f64; 3]) -> SpatialLink {
+    SpatialLink {
+        mass,
+        com: Vector3::new(com[0], com[1], com[2]),
+        inertia: Matrix3::from_diagonal(&Vector3::new(inertia[0], inertia[1], inertia[2])),
+    }
+}
+
+fn massless<const N: usize>() -> [SpatialLink; N] {
+    [SpatialLink::MASSLESS; N]
+}
+
+fn model<const N: usize>(joints: [SpatialJoint; N], links: [SpatialLink; N]) -> SpatialModel<N> {
+    SpatialModel {
+        joints,
+        links,
+        gravity: Vector3::new(0.0, 0.0, -9.81),
+        tool: Isometry3::identity(),
+    }
+}
+
+fn tool(xyz: [f64; 3], rpy: [f64; 3]) -> Isometry3<f64> {
+    Isometry3::from_parts(
+        Translation3::new(xyz[0], xyz[1], xyz[2]),
+        UnitQuaternion::from_euler_angles(rpy[0], rpy[1], rpy[2]),
+    )
+}
+
+fn puma_model() -> SpatialModel<6> {
+    let h = FRAC_PI_2;
+    model(
+        [
+            dh(0.0, h, 0.0, 0.0, R),
+            dh(0.4318, 0.0, 0.0, 0.0, R),
+            dh(0.0203, -h, 0.15005, 0.0, R),
+            dh(0.0, h, 0.4318, 0.0, R),
+            dh(0.0, -h, 0.0, 0.0, R),
+            dh(0.0, 0.0, 0.0, 0.0, R),
+        ],
+        [
+            link(0.0, [0.0; 3], [0.0, 0.35, 0.0]),
+            link(17.4, [-0.3638, 0.006, 0.2275], [0.13, 0.524, 0.539]),
+            link(4.8, [-0.0203, -0.0141, 0.07], [0.066, 0.086, 0.0125]),
+            link(0.82, [0.0, 0.019, 0.0], [1.8e-3, 1.3e-3, 1.8e-3]),
+            link(0.34, [0.0; 3], [0.3e-3, 0.4e-3, 0.3e-3]),
+            link(0.09, [0.0, 0.0, 0.032], [0.15e-3, 0.15e-3, 0.04e-3]),
+        ],
+    )
+}
+
+fn puma_mdh_model() -> SpatialModel<6> {
+    let h = FRAC_PI_2;
+    model(
+        [
+            mdh(0.0, 0.0, 0.0, 0.0, R),
+            mdh(0.0, h, 0.0, 0.0, R),
+            mdh(0.4318, 0.0, 0.15005, 0.0, R),
+            mdh(0.0203, -h, 0.4318, 0.0, R),
+            mdh(0.0, h, 0.0, 0.0, R),
+            mdh(0.0, -h, 0.0, 0.0, R),
+        ],
+        massless(),
+    )
+}
+
+fn puma_urdf_model() -> SpatialModel<6> {
+    let (h, z) = (FRAC_PI_2, [0.0, 0.0, 1.0]);
+    model(
+        [
+            urdf([0.0; 3], [0.0; 3], z, R),
+            urdf([0.0; 3], [h, 0.0, 0.0], z, R),
+            urdf([0.4318, 0.0, 0.15005], [0.0; 3], z, R),
+            urdf([0.0203, 0.4318, 0.0], [-h, 0.0, 0.0], z, R),
+            urdf([0.0; 3], [h, 0.0, 0.0], z, R),
+            urdf([0.0; 3], [-h, 0.0, 0.0], z, R),
+        ],
+        massless(),
+    )
+}
+
+fn stanford_model() -> SpatialModel<6> {
+    let h = FRAC_PI_2;
+    let mut slide = dh(0.0203, 0.0, 0.0, -h, P);
+    slide.range = Some((0.3048, 1.27));
+    model(
+        [
+            dh(0.0, -h, 0.412, 0.0, R),
+            dh(0.0, h, 0.154, 0.0, R),
+            slide,
+            dh(0.0, -h, 0.0, 0.0, R),
+            dh(0.0, h, 0.0, 0.0, R),
+            dh(0.0, 0.0, 0.263, 0.0, R),
+        ],
+        [
+            link(9.29, [0.0, 0.0175, -0.1105], [0.0; 3]),
+            link(5.01, [0.01, -0.1054, 0.0], [0.0; 3]),
+            link(4.25, [0.0, 0.02, -0.6447], [0.0; 3]),
+            link(1.08, [0.0, 0.092, -0.054], [0.0; 3]),
+            link(0.63, [0.0, 0.0566, 0.003], [0.0; 3]),
+            link(0.51, [0.0, 0.0, 0.1554], [0.0; 3]),
+        ],
+    )
+}
+
+fn ur5_model() -> SpatialModel<6> {
+    let h = FRAC_PI_2;
+    model(
+        [
+            dh(0.0, h, 0.089159, 0.0, R),
+            dh(-0.425, 0.0, 0.0, 0.0, R),
+            dh(-0.39225, 0.0, 0.0, 0.0, R),
+            dh(0.0, h, 0.10915, 0.0, R),
+            dh(0.0, -h, 0.09465, 0.0, R),
+            dh(0.0, 0.0, 0.0823, 0.0, R),
+        ],
+        [
+            link(3.7, [0.0, -0.02561, 0.00193], [0.0; 3]),
+            link(8.393, [0.2125, 0.0, 0.11336], [0.0; 3]),
+            link(2.275, [0.15, 0.0, 0.0265], [0.0; 3]),
+            link(1.219, [0.0, -0.0018, 0.01634], [0.0; 3]),
+            link(1.219, [0.0, 0.0018, 0.01634], [0.0; 3]),
+            link(0.1879, [0.0, 0.0, -0.001159], [0.0; 3]),
+        ],
+    )
+}
+
+fn panda_model() -> SpatialModel<7> {
+    let h = FRAC_PI_2;
+    let mut m = model(
+        [
+            mdh(0.0, 0.0, 0.333, 0.0, R),
+            mdh(0.0, -h, 0.0, 0.0, R),
+            mdh(0.0, h, 0.316, 0.0, R),
+            mdh(0.0825, h, 0.0, 0.0, R),
+            mdh(-0.0825, -h, 0.384, 0.0, R),
+            mdh(0.0, h, 0.0, 0.0, R),
+            mdh(0.088, h, 0.0, 0.0, R),
+        ],
+        [
+            link(4.97, [0.0039, 0.0021, -0.0476], [0.0; 3]),
+            link(0.646, [-0.0031, -0.0287, 0.0034], [0.0; 3]),
+            link(3.228, [0.0275, 0.0392, -0.0665], [0.0; 3]),
+            link(3.587, [-0.0532, 0.1044, 0.0274], [0.0; 3]),
+            link(1.226, [-0.0118, 0.0414, -0.0384], [0.0; 3]),
+            link(1.666, [0.0601, -0.0141, -0.0105], [0.0; 3]),
+            link(0.735, [0.0105, 0.0043, 0.0617], [0.0; 3]),
+        ],
+    );
+    m.tool = tool([0.0, 0.0, 0.107], [0.0; 3]);
+    m
+}
+
+fn odd_dh() -> OddDh {
+    OddDh {
+        reach: 0.35,
+        flange: 0.12,
+        load: 0.8,
+        j1: Revolute,
+        j2: Prismatic,
+        j3: Revolute,
+        j4: Revolute,
+    }
+}
+
+fn odd_dh_model() -> SpatialModel<4> {
+    let mut m = model(
+        [
+            dh(0.35, 0.3, 0.2, FRAC_PI_6, R),
+            dh(0.25, FRAC_PI_3, -0.05, 0.2, P),
+            dh(0.6, -2.0 * PI / 5.0, 0.0, 0.0, R),
+            dh(0.1, FRAC_PI_4, 0.07, 0.0, R),
+        ],
+        [
+            link(2.0, [-0.1, 0.02, 0.03], [0.0; 3]),
+            link(0.8, [0.01, 0.35, 0.0], [0.0; 3]),
+            link(1.5, [0.1, 0.0, -0.02], [0.0; 3]),
+            link(0.5, [0.0, 0.03, 0.05], [0.0; 3]),
+        ],
+    );
+    m.gravity = Vector3::new(0.5, -1.0, -9.81);
+    m.tool = tool([0.05, 0.0, 0.12], [0.1, -0.2, 0.3]);
+    m
+}
+
+fn odd_mdh_model() -> SpatialModel<3> {
+    model(
+        [
+            mdh(0.1, 0.7, 0.3, 0.0, P),
+            mdh(0.4, -FRAC_PI_2, 0.0, -FRAC_PI_4, R),
+            mdh(0.3, FRAC_PI_6, 0.05, 0.0, R),
+        ],
+        [
+            link(1.0, [0.0, 0.1, 0.0], [0.0; 3]),
+            link(2.0, [0.2, 0.0, 0.01], [0.0; 3]),
+            link(0.7, [0.1, 0.01, 0.0], [0.0; 3]),
+        ],
+    )
+}
+
+fn odd_urdf_model() -> SpatialModel<5> {
+    let mut m = model(
+        [
+            urdf([0.0, 0.0, 0.3], [0.1, -0.2, 0.3], [1.0, 1.0, 0.0], R),
+            urdf([0.2, 0.05, 0.0], [0.0; 3], [0.0, 1.0, 0.0], R),
+            urdf([0.3, 0.0, 0.02], [0.0, 0.0, FRAC_PI_2], [1.0, 2.0, 2.0], R),
+            urdf([0.0, 0.1, 0.0], [0.0; 3], [0.0, 0.0, -1.0], P),
+            urdf([0.0; 3], [PI, 0.0, -FRAC_PI_3], [0.0, 0.0, 1.0], R),
+        ],
+        [
+            link(1.0, [0.05, 0.0, 0.1], [0.0; 3]),
+            link(2.0, [0.1, 0.0, 0.0], [0.0; 3]),
+            link(0.8, [0.0, 0.1, 0.1], [0.0; 3]),
+            link(0.5, [0.02, 0.0, -0.05], [0.0; 3]),
+            link(0.2, [0.0, 0.0, 0.04], [0.0; 3]),
+        ],
+    );
+    m.tool = tool([0.0; 3], [0.0, FRAC_PI_2, 0.0]);
+    m
+}
+
+fn single_model() -> SpatialModel<1> {
+    model(
+        [dh(0.5, FRAC_PI_2, 0.0, 0.0, R)],
+        [link(1.0, [-0.25, 0.0, 0.0], [0.0; 3])],
+    )
+}
+
+/// The derive's `model()` describes the arm it was given: same geometry (URDF axes compared
+/// after normalising), links, gravity and tool.
+fn same_model<const N: usize>(derived: &SpatialModel<N>, hand: &SpatialModel<N>) {
+    let close = |a: f64, b: f64| (a - b).abs() < 1e-15;
+    for (i, (a, b)) in derived.joints.iter().zip(hand.joints.iter()).enumerate() {
+        assert_eq!(a.kind, b.kind, "joint {i}");
+        assert_eq!(a.range, b.range, "joint {i}");
+        let pose = |j: &SpatialJoint| j.geometry.transform(j.kind, 0.37);
+        assert!(pose_gap(&pose(a), &pose(b)) < 1e-15, "joint {i}");
+        let (ga, gb) = (&a.geometry, &b.geometry);
+        assert_eq!(
+            core::mem::discriminant(ga),
+            core::mem::discriminant(gb),
+            "joint {i}"
+        );
+    }
+    for (i, (a, b)) in derived.links.iter().zip(hand.links.iter()).enumerate() {
+        assert!(close(a.mass, b.mass), "link {i} mass");
+        assert!((a.com - b.com).amax() < 1e-15, "link {i} com");
+        assert!((a.inertia - b.inertia).amax() < 1e-15, "link {i} inertia");
+    }
+    assert!(
+        (derived.gravity - hand.gravity).amax() < 1e-15,
+        "{} vs {}",
+        derived.gravity,
+        hand.gravity
+    );
+    assert!(pose_gap(&derived.tool, &hand.tool) < 1e-15);
+}
+
+fn random_q<const N: usize>(rng: &mut Rng, model: &SpatialModel<N>) -> SVector<f64, N> {
+    SVector::from_fn(|i, _| match model.joints[i].range {
+        Some((lo, hi)) => lo + (hi - lo) * rng.unit(),
+        None if model.joints[i].kind == P => -0.5 + rng.unit(),
+        None => -PI + 2.0 * PI * rng.unit(),
+    })
+}
+
+/// Tool and link poses, Jacobian, gravity and potential energy against the reference's, at
+/// 200 random configurations.
+fn against_reference<A: SpatialArm<N>, const N: usize>(
+    arm: &A,
+    hand: &SpatialModel<N>,
+    rng: &mut Rng,
+) {
+    same_model(&arm.model(), hand);
     for _ in 0..200 {
-        let q: SVector<f64, N> = rng.q();
+        let q = random_q(rng, hand);
+        let tip = arm.tip_pose(&q);
         assert!(
-            pose_gap(&arm.tip_pose(&q), &reference::tip_pose(&model, &q)) < 1e-12,
+            pose_gap(&tip, &reference::tip_pose(hand, &q)) < 1e-12,
             "{q}"
         );
         for (a, b) in arm
             .link_poses(&q)
             .iter()
-            .zip(reference::link_poses(&model, &q).iter())
+            .zip(reference::link_poses(hand, &q).iter())
         {
             assert!(pose_gap(a, b) < 1e-12, "{q}");
         }
         let j = arm.jacobian(&q);
         assert!(
-            (j - reference::jacobian(&model, &q)).amax() < 1e-12,
+            (j - reference::jacobian(hand, &q)).amax() < 1e-12,
             "{q}: {j}"
         );
         let g = arm.gravity(&q);
-        let gr = reference::gravity(&model, &q);
+        let gr = reference::gravity(hand, &q);
         assert!(
             (g - gr).amax() < 1e-12 * (1.0 + gr.amax()),
             "{q}: {g} vs {gr}"
         );
         let v = arm.potential_energy(&q);
-        assert!((v - reference::potential_energy(&model, &q)).abs() < 1e-12 * (1.0 + v.abs()));
+        let vr = reference::potential_energy(hand, &q);
+        assert!((v - vr).abs() < 1e-12 * (1.0 + v.abs()), "{q}");
+    }
+}
+
+/// The Jacobian against central differences of the tool pose (the angular rows from the
+/// rotation between the two displaced poses) and gravity against central differences of the
+/// potential energy: neither goes through the reference.
+fn against_differences<A: SpatialArm<N>, const N: usize>(
+    arm: &A,
+    hand: &SpatialModel<N>,
+    rng: &mut Rng,
+) {
+    let h = 1e-6;
+    for _ in 0..50 {
+        let q = random_q(rng, hand);
+        let j = arm.jacobian(&q);
+        let g = arm.gravity(&q);
+        for i in 0..N {
+            let (mut up, mut down) = (q, q);
+            up[i] += h;
+            down[i] -= h;
+            let (a, b) = (arm.tip_pose(&up), arm.tip_pose(&down));
+            let v = (a.translation.vector - b.translation.vector) / (2.0 * h);
+            let w = (a.rotation * b.rotation.inverse()).scaled_axis() / (2.0 * h);
+            for r in 0..3 {
+                assert!((j[(r, i)] - v[r]).abs() < 1e-7, "{q}: linear {r},{i}");
+                assert!((j[(r + 3, i)] - w[r]).abs() < 1e-7, "{q}: angular {r},{i}");
+            }
+            let dv = (arm.potential_energy(&up) - arm.potential_energy(&down)) / (2.0 * h);
+            assert!(
+                (g[i] - dv).abs() < 1e-6 * (1.0 + dv.abs()),
+                "{q}: gravity {i}"
+            );
+        }
+    }
+}
+
+fn check<A: SpatialArm<N>, const N: usize>(arm: &A, hand: &SpatialModel<N>, seed: u64) {
+    let mut rng = Rng(seed);
+    against_reference(arm, hand, &mut rng);
+    against_differences(arm, hand, &mut rng);
+}
+
+#[test]
+fn the_puma_in_each_convention_matches_the_reference() {
+    check(&Puma560::default(), &puma_model(), 1);
+    check(&PumaMdh::default(), &puma_mdh_model(), 2);
+    check(&PumaUrdf::default(), &puma_urdf_model(), 3);
+}
+
+#[test]
+fn the_three_conventions_describe_one_puma() {
+    let (dh, mdh, urdf) = (Puma560::default(), PumaMdh::default(), PumaUrdf::default());
+    let mut rng = Rng(4);
+    for _ in 0..500 {
+        let q: SVector<f64, 6> = rng.q();
+        let tip = dh.tip_pose(&q);
+        assert!(pose_gap(&tip, &mdh.tip_pose(&q)) < 1e-12, "{q}");
+        assert!(pose_gap(&tip, &urdf.tip_pose(&q)) < 1e-12, "{q}");
+        // Modified frame i is standard frame i-1 moved along and turned about x: same origin
+        // up to `a`, same z axis.
+        assert!((dh.jacobian(&q) - mdh.jacobian(&q)).amax() < 1e-12);
+        assert!((dh.jacobian(&q) - urdf.jacobian(&q)).amax() < 1e-12);
+    }
+}
+
+/// Tool positions Corke's Robotics Toolbox prints for its named PUMA poses (`p560.fkine`).
+#[test]
+fn the_puma_reaches_the_toolbox_poses() {
+    let arm = Puma560::default();
+    let (h, quarter) = (FRAC_PI_2, FRAC_PI_4);
+    for (q, p) in [
+        ([0.0; 6], [0.4521, -0.1500, 0.4318]),
+        ([0.0, h, -h, 0.0, 0.0, 0.0], [0.0203, -0.1500, 0.8636]),
+        (
+            [0.0, quarter, PI, 0.0, quarter, 0.0],
+            [0.5963, -0.1500, -0.0144],
+        ),
+    ] {
+        let t = arm.tip_pose(&SVector::from(q)).translation.vector;
+        for k in 0..3 {
+            assert!((t[k] - p[k]).abs() < 1e-4, "{q:?}: {t}");
+        }
     }
 }
 
 #[test]
-fn the_puma_matches_the_reference() {
-    against_reference(&Puma560::default(), &mut Rng(1));
+fn the_stanford_arm_ur5_and_panda_match_the_reference() {
+    check(&Stanford::default(), &stanford_model(), 5);
+    check(&Ur5::default(), &ur5_model(), 6);
+    check(&Panda::default(), &panda_model(), 7);
+}
+
+/// Zero poses worked by hand from the parameters: the UR5's tool at (a2 + a3, -(d4 + d6),
+/// d1 - d5), the Panda's flange at (a4 + a5 + a7, 0, d1 + d3 + d5 - 0.107) pointing down.
+#[test]
+fn zero_poses_are_the_hand_computed_ones() {
+    let ur5 = Ur5::default().tip_pose(&SVector::zeros());
+    let expected = Vector3::new(-0.425 - 0.39225, -(0.10915 + 0.0823), 0.089159 - 0.09465);
+    assert!((ur5.translation.vector - expected).amax() < 1e-15, "{ur5}");
+    let panda = Panda::default().tip_pose(&SVector::zeros());
+    let expected = Vector3::new(0.088, 0.0, 0.333 + 0.316 + 0.384 - 0.107);
+    assert!(
+        (panda.translation.vector - expected).amax() < 1e-15,
+        "{panda}"
+    );
+    let down = panda.rotation * Vector3::z();
+    assert!((down + Vector3::z()).amax() < 1e-15, "{down}");
+}
+
+#[test]
+fn odd_twists_slides_and_run_time_parameters_match_the_reference() {
+    check(&odd_dh(), &odd_dh_model(), 8);
+    check(&OddMdh::default(), &odd_mdh_model(), 9);
+    check(&OddUrdf::default(), &odd_urdf_model(), 10);
+    check(&Single::default(), &single_model(), 11);
+}
+
+/// A run-time length changes the pose: the parameter is read, not frozen at compile time.
+#[test]
+fn run_time_parameters_are_read_at_each_call() {
+    let mut arm = odd_dh();
+    let mut hand = odd_dh_model();
+    arm.reach = 0.5;
+    arm.flange = 0.2;
+    arm.load = 3.0;
+    hand.joints[0].geometry = JointGeometry::Dh {
+        a: 0.5,
+        alpha: 0.3,
+        d: 0.2,
+        theta: FRAC_PI_6,
+    };
+    hand.joints[2].geometry = JointGeometry::Dh {
+        a: 0.9,
+        alpha: -2.0 * PI / 5.0,
+        d: 0.0,
+        theta: 0.0,
+    };
+    hand.links[1].mass = 3.0;
+    hand.links[1].com.y = 0.5;
+    hand.tool = tool([0.05, 0.0, 0.2], [0.1, -0.2, 0.3]);
+    check(&arm, &hand, 12);
+}
+
+#[test]
+fn every_method_takes_other_scalars() {
+    let arm = Ur5::default();
+    let q = SVector::<f64, 6>::from([0.3, -0.7, 1.1, 0.2, -0.4, 0.9]);
+    let j32 = arm.jacobian(&q.map(|x| x as f32));
+    let g32 = arm.gravity(&q.map(|x| x as f32));
+    assert!((j32.map(f64::from) - arm.jacobian(&q)).amax() < 1e-5);
+    assert!((g32.map(f64::from) - arm.gravity(&q)).amax() < 1e-4);
+}
+
+/// Every closed-form solution reproduces its target, the configuration the target came from is
+/// among them, and the count is what the geometry allows, for targets made by the forward
+/// kinematics of random configurations.
+fn closed_form<A: SpatialArm<6>>(arm: &A, hand: &SpatialModel<6>, seed: u64, counts: &[usize]) {
+    let ranges = hand.joints.map(|j| j.range);
+    let runtime = SpatialIk::of_model(hand).expect("a closed-form class");
+    let mut rng = Rng(seed);
+    for _ in 0..300 {
+        let q = random_q(&mut rng, hand);
+        let target = arm.tip_pose(&q);
+        let solutions = arm.inverse_kinematics(&target).unwrap();
+        assert!(
+            counts.contains(&solutions.len()),
+            "{q}: {}",
+            solutions.len()
+        );
+        assert_eq!(
+            solutions.len(),
+            runtime.solve(&target, &ranges).unwrap().len()
+        );
+        for s in solutions.iter() {
+            assert!(pose_gap(&arm.tip_pose(s), &target) < 1e-9, "{q}: {s}");
+        }
+        let wrapped = |a: f64, b: f64| {
+            let d = (a - b).rem_euclid(2.0 * PI);
+            d.min(2.0 * PI - d)
+        };
+        let found = solutions.iter().any(|s| {
+            (0..6).all(|i| match hand.joints[i].kind {
+                Joint::Prismatic => (s[i] - q[i]).abs() < 1e-7,
+                Joint::Revolute => wrapped(s[i], q[i]) < 1e-7,
+            })
+        });
+        assert!(found, "{q} not among {:?}", &solutions[..]);
+    }
 }
 
 #[test]
 fn the_puma_has_eight_closed_form_solutions() {
+    closed_form(&Puma560::default(), &puma_model(), 20, &[8]);
+}
+
+#[test]
+fn the_stanford_arm_keeps_the_solutions_with_the_slide_in_range() {
+    closed_form(&Stanford::default(), &stanford_model(), 21, &[2, 4]);
+}
+
+#[test]
+fn the_ur5_has_up_to_eight_closed_form_solutions() {
+    closed_form(&Ur5::default(), &ur5_model(), 22, &[2, 4, 6, 8]);
+}
+
+#[test]
+fn bad_targets_give_errors() {
     let arm = Puma560::default();
-    let mut rng = Rng(2);
-    for _ in 0..200 {
-        let q: SVector<f64, 6> = rng.q();
-        let target = arm.tip_pose(&q);
-        let solutions = arm.inverse_kinematics(&target).unwrap();
-        assert_eq!(solutions.len(), 8, "{q}");
+    let far = Isometry3::translation(2.0, 0.0, 0.0);
+    match arm.inverse_kinematics(&far) {
+        Err(ArmError::OutOfReach { distance, .. }) => assert!(distance > 1.0, "{distance}"),
+        other => panic!("{other:?}"),
+    }
+    let nan = Isometry3::translation(f64::NAN, 0.0, 0.0);
+    assert!(matches!(
+        arm.inverse_kinematics(&nan),
+        Err(ArmError::NonFinite { .. })
+    ));
+    // The wrist singularity (q5 = 0): the solutions still reach the target and say they are
+    // representatives.
+    let q = SVector::<f64, 6>::from([0.2, 0.5, -0.3, 0.4, 0.0, 0.1]);
+    let target = arm.tip_pose(&q);
+    let solutions = arm.inverse_kinematics(&target).unwrap();
+    assert!(solutions.singular(), "{:?}", &solutions[..]);
+    assert!(!solutions.is_empty());
+    for s in solutions.iter() {
+        assert!(pose_gap(&arm.tip_pose(s), &target) < 1e-9, "{s}");
+    }
+    // The UR5's wrist singularity (q5 = 0: axes 4 and 6 parallel, with 2 and 3, four in a
+    // family) and its stretched elbow (q3 = 0: the two elbow solutions meet).
+    let ur5 = Ur5::default();
+    for (q, singular) in [
+        ([0.2, -0.9, 0.7, 0.4, 0.0, 0.1], true),
+        ([0.2, -0.9, 0.0, 0.4, 0.8, 0.1], false),
+    ] {
+        let target = ur5.tip_pose(&SVector::from(q));
+        let solutions = ur5.inverse_kinematics(&target).unwrap();
+        assert_eq!(solutions.singular(), singular, "{q:?}");
+        assert!(!solutions.is_empty(), "{q:?}");
         for s in solutions.iter() {
-            assert!(pose_gap(&arm.tip_pose(s), &target) < 1e-9, "{q}: {s}");
+            assert!(pose_gap(&ur5.tip_pose(s), &target) < 1e-9, "{q:?}: {s}");
         }
     }
+}
+
+#[test]
+fn arms_without_a_closed_form_say_so_and_search_instead() {
+    let arm = Panda::default();
+    let q = SVector::<f64, 7>::from([0.1, -0.4, 0.2, -2.0, 0.3, 1.6, 0.7]);
+    let target = arm.tip_pose(&q);
+    assert!(matches!(
+        arm.inverse_kinematics(&target),
+        Err(ArmError::NoClosedForm { .. })
+    ));
+    let seed = q.add_scalar(0.1);
+    let options = DlsOptions {
+        tolerance: 1e-10,
+        ..DlsOptions::default()
+    };
+    let found = arm
+        .inverse_kinematics_near(&target, &seed, &options)
+        .unwrap();
+    assert!(pose_gap(&arm.tip_pose(&found), &target) < 1e-9);
+    assert!(matches!(
+        odd_dh().inverse_kinematics(&Isometry3::identity()),
+        Err(ArmError::NoClosedForm { .. })
+    ));
+}
+
+/// `joint_torques` is the virtual work of the wrench (checked against differences of the tool
+/// pose), and `tip_wrench` inverts it away from singular poses.
+#[test]
+fn statics_balance_the_wrench() {
+    let arm = Ur5::default();
+    let mut rng = Rng(30);
+    let h = 1e-6;
+    for _ in 0..100 {
+        let q: SVector<f64, 6> = rng.q();
+        let f = Vector3::new(rng.unit() - 0.5, rng.unit() - 0.5, rng.unit() - 0.5) * 20.0;
+        let n = Vector3::new(rng.unit() - 0.5, rng.unit() - 0.5, rng.unit() - 0.5) * 5.0;
+        let tau = arm.joint_torques(&q, &f, &n);
+        for i in 0..6 {
+            let (mut up, mut down) = (q, q);
+            up[i] += h;
+            down[i] -= h;
+            let (a, b) = (arm.tip_pose(&up), arm.tip_pose(&down));
+            let dp = a.translation.vector - b.translation.vector;
+            let dtheta = (a.rotation * b.rotation.inverse()).scaled_axis();
+            let work = (f.dot(&dp) + n.dot(&dtheta)) / (2.0 * h);
+            assert!(
+                (tau[i] - work).abs() < 1e-6 * (1.0 + work.abs()),
+                "{q}: {i}"
+            );
+        }
+        match arm.tip_wrench(&q, &tau) {
+            Ok((f2, n2)) => {
+                assert!(
+                    (f2 - f).amax() < 1e-6 * 20.0 && (n2 - n).amax() < 1e-6 * 5.0,
+                    "{q}"
+                );
+            }
+            Err(ArmError::Singular { .. }) => {}
+            Err(e) => panic!("{e}"),
+        }
+    }
+    let stretched = SVector::<f64, 6>::from([0.3, 0.0, 0.0, 0.2, 0.5, 0.1]);
+    assert!(matches!(
+        arm.tip_wrench(&stretched, &SVector::zeros()),
+        Err(ArmError::Singular { .. })
+    ));
 }

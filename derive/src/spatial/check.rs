@@ -5,7 +5,7 @@ use num_traits::{Signed, Zero};
 use planar_arm_core::mechanics::spatial::{
     unit_axis, FixedAngle, SpatialArmSpec, SpatialGeometry, SpatialJointSpec,
 };
-use planar_arm_core::ring::{parse_decimal, to_f64, Rational};
+use planar_arm_core::ring::{ratio, to_f64, Rational};
 use planar_arm_core::Poly;
 
 use super::angle::Angle;
@@ -68,8 +68,9 @@ pub fn check(cx: &Ctxt, arm: &SpatialArm<'_>) -> Option<SpatialArmSpec> {
     let triple = |t: &Option<Spanned<[Poly; 3]>>, default: [Poly; 3]| {
         t.as_ref().map_or(default, |t| t.value.clone())
     };
-    let standard = || parse_decimal("-9.81").map_or_else(Poly::default, Poly::constant);
-    let gravity = triple(&a.gravity, [Poly::default(), Poly::default(), standard()]);
+    // Standard gravity down the base's z axis, as URDF and MuJoCo assume.
+    let down = Poly::constant(ratio(-981, 100));
+    let gravity = triple(&a.gravity, [Poly::default(), Poly::default(), down]);
     let tool_xyz = triple(
         &a.tool_xyz,
         [Poly::default(), Poly::default(), Poly::default()],

@@ -68,11 +68,19 @@ pub(crate) fn two_axes(
 ) -> Result<[Vector3<f64>; 2], f64> {
     let cross = w1.cross(w2);
     let k = w1.dot(w2);
+    let (a, b) = (w1.dot(q), w2.dot(p));
     let denominator = k * k - 1.0;
-    let alpha = (k * w2.dot(p) - w1.dot(q)) / denominator;
-    let beta = (k * w1.dot(q) - w2.dot(p)) / denominator;
-    let gamma2 = (p.norm_squared() - alpha * alpha - beta * beta - 2.0 * alpha * beta * k)
-        / cross.norm_squared();
+    let alpha = (k * b - a) / denominator;
+    let beta = (k * a - b) / denominator;
+    // |z|^2 - |alpha w1 + beta w2|^2 over |w1 x w2|^2, written so that nothing cancels where
+    // it is near zero (a wrist singularity): with a = w1 . q, b = w2 . p and s = |w1 x q| (so
+    // |q|^2 = a^2 + s^2, and |z| = |q|), it is (s^2 (1 - k^2) - (a k - b)^2) / (1 - k^2)^2.
+    // The plain difference leaves rounding of order eps in gamma^2, sqrt(eps) in gamma: a
+    // singular wrist would come back 1.5e-8 rad off its axis.
+    let s = w1.cross(q).norm();
+    let sin2 = cross.norm_squared();
+    let (m, root) = ((a * k - b).abs(), sin2.sqrt());
+    let gamma2 = (s * root - m) * (s * root + m) / (sin2 * sin2);
     if gamma2 < -slack {
         return Err(-gamma2);
     }
