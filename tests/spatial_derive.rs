@@ -840,3 +840,32 @@ fn statics_balance_the_wrench() {
         Err(ArmError::Singular { .. })
     ));
 }
+
+/// `EXACT` holds the multiplied-out formulas where they stay small, and they evaluate to what
+/// the code computes; an arm with generic rotations is left as the product.
+#[test]
+fn exact_formulas_evaluate_to_the_pose_or_are_left_as_the_product() {
+    use planar_arm::exact::eval;
+    let arm = Puma560::default();
+    let expansion = Puma560::EXACT.expansion.expect("right angles multiply out");
+    let mut rng = Rng(40);
+    for _ in 0..50 {
+        let q: SVector<f64, 6> = rng.q();
+        let pose = arm.tip_pose(&q).to_homogeneous();
+        for r in 0..3 {
+            for c in 0..4 {
+                let v = eval(expansion.tip[r][c], q.as_slice(), &[]);
+                assert!((v - pose[(r, c)]).abs() < 1e-12, "{r},{c}: {v}");
+            }
+        }
+        let g = arm.gravity(&q);
+        for i in 0..6 {
+            let v = eval(expansion.gravity[i], q.as_slice(), &[]);
+            assert!((v - g[i]).abs() < 1e-10 * (1.0 + g[i].abs()), "g{i}: {v}");
+        }
+    }
+    assert!(OddUrdf::EXACT.expansion.is_none());
+    assert!(OddUrdf::EXACT.to_string().contains("product"));
+    let text = Puma560::EXACT.to_string();
+    assert!(text.starts_with("R11 = "), "{text}");
+}

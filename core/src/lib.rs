@@ -82,7 +82,7 @@ pub use programs::{christoffel, derivative, frozen, slp};
 pub mod spatial {
     pub use crate::emission::spatial::generate_spatial;
     pub use crate::mechanics::spatial::*;
-    pub use crate::methods::spatial::SpatialDerived;
+    pub use crate::methods::spatial::{SpatialDerived, SpatialForm};
 }
 
 // Re-exports, not copies, in the docs: each item's page stays in its module.

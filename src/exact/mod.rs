@@ -619,12 +619,26 @@ pub struct Derivation<const N: usize> {
     pub gravity: [Terms; N],
 }
 
-/// The exact kinematics and gravity of an `N`-joint spatial arm (`#[derive(SpatialArm)]`): the
-/// tool pose's entries, trigonometric polynomials in the joint angles (and polynomials in the
-/// slides), its potential energy and gravity torques. Constants the geometry cannot write as
-/// rationals (the cosine of a twist of 0.3 rad) appear by name, as run-time parameters do.
+/// The exact kinematics and gravity of an `N`-joint spatial arm (`#[derive(SpatialArm)]`), when
+/// they were multiplied out (see [`SpatialExpansion`]).
+///
+/// Right-angle geometry (twists and offsets at multiples of `pi/2`, as in the PUMA, UR or
+/// Panda) multiplies out to a few hundred or thousand terms. Generic twists or rotated URDF
+/// origins roughly triple the terms with each joint; past 4 000 terms in a frame the derive
+/// stops expanding, `expansion` is `None`, and the generated methods evaluate the product of
+/// the joints' transformations, which stays linear in their number.
 #[derive(Clone, Copy, Debug)]
 pub struct SpatialDerivation<const N: usize> {
+    /// The formulas, or `None` where multiplying them out would exceed the budget.
+    pub expansion: Option<SpatialExpansion<N>>,
+}
+
+/// The multiplied-out kinematics and gravity of a spatial arm: the tool pose's entries,
+/// trigonometric polynomials in the joint angles (and polynomials in the slides), its potential
+/// energy and gravity torques. Constants the geometry cannot write as rationals (the cosine of a
+/// twist of 0.3 rad) appear by name, as run-time parameters do.
+#[derive(Clone, Copy, Debug)]
+pub struct SpatialExpansion<const N: usize> {
     /// The tool pose's rotation (columns 0-2) and position (column 3), row-major: `tip[r][c]`.
     pub tip: [[Terms; 4]; 3],
     /// Potential energy V(q), zero at the base origin.

@@ -258,6 +258,12 @@ fn spatial_derivation<const N: usize>(
     d: &SpatialDerivation<N>,
     style: Style,
 ) -> fmt::Result {
+    let Some(d) = &d.expansion else {
+        return f.write_str(
+            "(not multiplied out: more than 4 000 terms; the generated code evaluates the \
+             product of the joints' transformations)",
+        );
+    };
     let (open, eq, end, close) = match style {
         Style::Plain => ("", " = ", "\n", ""),
         Style::Latex => ("\\begin{aligned}\n", " &= ", " \\\\\n", "\\end{aligned}"),

@@ -10,6 +10,7 @@ use crate::emission::function::{emit_fn, matrix, vector, Fn, Param};
 use crate::emission::header::Header;
 use crate::emit::{coefficient_tokens, f64_tokens, formula_doc, local, EmitError};
 use crate::expr::Expr;
+use crate::mechanics::spatial::frames::EXPANSION_BUDGET;
 use crate::mechanics::spatial::{
     decouple, Decoupling, FixedAngle, SpatialArmSpec, SpatialGeometry,
 };
@@ -30,22 +31,17 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
     let q = Param::Joints("q", Input::Q);
     let mut fns = Vec::new();
     let pose_doc = |title: &str| {
+        let Some(k) = &d.kinematics else {
+            return unexpanded_doc(title);
+        };
         let rows: Vec<(String, &Expr<Poly>)> = (0..3)
             .flat_map(|i| (0..4).map(move |j| (i, j)))
             .map(|(i, j)| {
-                let e = if j < 3 {
-                    &d.kinematics.tool.r[i][j]
+                if j < 3 {
+                    (format!("R{}{}", i + 1, j + 1), &k.tool.r[i][j])
                 } else {
-                    &d.kinematics.tool.p[i]
-                };
-                (
-                    if j < 3 {
-                        format!("R{}{}", i + 1, j + 1)
-                    } else {
-                        format!("p{}", i + 1)
-                    },
-                    e,
-                )
+                    (format!("p{}", i + 1), &k.tool.p[i])
+                }
             })
             .collect();
         formula_doc(title, &rows)
@@ -95,21 +91,28 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
         d.jacobian.clone(),
         Box::new(move |ids| matrix(6, n, ids)),
     ));
-    let g_rows: Vec<(String, &Expr<Poly>)> = d
-        .kinematics
-        .gravity
-        .iter()
-        .enumerate()
-        .map(|(i, e)| (format!("g{}", i + 1), e))
-        .collect();
+    let g_title = "The gravity torques g = dV/dq (forces for slides) that hold the arm.";
+    let v_title = "The potential energy, zero at the base origin.";
+    let (g_doc, v_doc) = match &d.kinematics {
+        Some(k) => {
+            let g_rows: Vec<(String, &Expr<Poly>)> = k
+                .gravity
+                .iter()
+                .enumerate()
+                .map(|(i, e)| (format!("g{}", i + 1), e))
+                .collect();
+            (
+                formula_doc(g_title, &g_rows),
+                formula_doc(v_title, &[("V".to_string(), &k.potential_energy)]),
+            )
+        }
+        None => (unexpanded_doc(g_title), unexpanded_doc(v_title)),
+    };
     fns.push(Fn::new(
         "gravity",
         vec![q],
         quote!(::planar_arm::nalgebra::SVector<__T, #nn>),
-        formula_doc(
-            "The gravity torques g = dV/dq (forces for slides) that hold the arm.",
-            &g_rows,
-        ),
+        g_doc,
         d.gravity.clone(),
         Box::new(vector),
     ));
@@ -117,10 +120,7 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
         "potential_energy",
         vec![q],
         quote!(__T),
-        formula_doc(
-            "The potential energy, zero at the base origin.",
-            &[("V".to_string(), &d.kinematics.potential_energy)],
-        ),
+        v_doc,
         d.potential_energy.clone(),
         Box::new(|ids| {
             let v = &ids[0];
@@ -131,9 +131,9 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
     for f in &fns {
         body.push(emit_fn(n, f, None)?);
     }
-    body.push(exact(&d)?);
+    body.push(exact(n, &d)?);
     body.push(model(arm)?);
-    body.push(inverse_kinematics(arm, &d)?);
+    body.push(inverse_kinematics(arm)?);
     let Header {
         impl_generics,
         ty,
@@ -156,16 +156,29 @@ fn isometry(ids: &[proc_macro2::Ident]) -> TokenStream {
     quote!(::planar_arm::__private::isometry3([#(#r),*], [#(#p),*]))
 }
 
-/// `const EXACT`: the tool pose's entries, V and g.
-fn exact(d: &SpatialDerived) -> Result<TokenStream, EmitError> {
-    let n = Literal::usize_unsuffixed(d.kinematics.gravity.len());
+/// A method's documentation when its formulas were not multiplied out.
+fn unexpanded_doc(title: &str) -> String {
+    format!(
+        "{title}\n\nEvaluated as the product of the joints' transformations: multiplied out, \
+         this arm's formulas would exceed {EXPANSION_BUDGET} terms."
+    )
+}
+
+/// `const EXACT`: the tool pose's entries, V and g, if they were multiplied out.
+fn exact(n: usize, d: &SpatialDerived) -> Result<TokenStream, EmitError> {
+    let n = Literal::usize_unsuffixed(n);
+    let Some(k) = &d.kinematics else {
+        return Ok(quote! {
+            const EXACT: ::planar_arm::exact::SpatialDerivation<#n> =
+                ::planar_arm::exact::SpatialDerivation { expansion: ::core::option::Option::None };
+        });
+    };
     let mut names = Vec::new();
     let mut terms = |e: &Expr<Poly>| -> Result<TokenStream, EmitError> {
         let code = Literal::byte_string(&crate::compact::encode(e, &mut names)?);
         let table = local("NAMES");
         Ok(quote!(::planar_arm::__private::terms(#code, #table)))
     };
-    let k = &d.kinematics;
     let mut rows = Vec::new();
     for i in 0..3 {
         let mut row = Vec::new();
@@ -187,9 +200,11 @@ fn exact(d: &SpatialDerived) -> Result<TokenStream, EmitError> {
         const EXACT: ::planar_arm::exact::SpatialDerivation<#n> = {
             const #table: &[&#STR] = &[#(#names),*];
             ::planar_arm::exact::SpatialDerivation {
-                tip: [#(#rows),*],
-                potential_energy: #v,
-                gravity: [#(#g),*],
+                expansion: ::core::option::Option::Some(::planar_arm::exact::SpatialExpansion {
+                    tip: [#(#rows),*],
+                    potential_energy: #v,
+                    gravity: [#(#g),*],
+                }),
             }
         };
     })
@@ -305,7 +320,7 @@ fn model(arm: &SpatialArmSpec) -> Result<TokenStream, EmitError> {
 /// `fn inverse_kinematics`: the closed form the geometry allows, decided here for arms whose
 /// values are known; at run time from `model()` for arms with run-time lengths; otherwise
 /// `NoClosedForm`.
-fn inverse_kinematics(arm: &SpatialArmSpec, d: &SpatialDerived) -> Result<TokenStream, EmitError> {
+fn inverse_kinematics(arm: &SpatialArmSpec) -> Result<TokenStream, EmitError> {
     let n = arm.joints.len();
     let nn = Literal::usize_unsuffixed(n);
     let target = local("target");
@@ -338,7 +353,7 @@ fn inverse_kinematics(arm: &SpatialArmSpec, d: &SpatialDerived) -> Result<TokenS
             "closed-form inverse kinematics needs six joints; use inverse_kinematics_near",
         ));
     }
-    if let Some(g) = decouple(arm, &d.kinematics) {
+    if let Some(g) = decouple(arm) {
         let class = match g.class {
             Decoupling::SphericalWrist => quote!(SphericalWrist),
             Decoupling::SlidingWrist => quote!(SlidingWrist),

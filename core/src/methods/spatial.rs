@@ -5,7 +5,7 @@
 use crate::algebra::expr::Expr;
 use crate::algebra::poly::Poly;
 use crate::mechanics::planar::JointKind;
-use crate::mechanics::spatial::frames::SpatialKinematics;
+use crate::mechanics::spatial::frames::{SpatialKinematics, EXPANSION_BUDGET};
 use crate::mechanics::spatial::spec::SpatialArmSpec;
 use crate::programs::method::Method;
 use crate::programs::spatial as product;
@@ -14,8 +14,9 @@ use crate::slp::Program;
 /// A spatial arm with its exact kinematics and the chosen programs.
 #[derive(Clone, Debug)]
 pub struct SpatialDerived {
-    /// The exact kinematics, gravity and potential energy.
-    pub kinematics: SpatialKinematics,
+    /// The exact kinematics, gravity and potential energy, multiplied out; `None` when they
+    /// would exceed [`EXPANSION_BUDGET`] terms.
+    pub kinematics: Option<SpatialKinematics>,
     /// The tool pose: rotation row-major, then position.
     pub tip_pose: Method,
     /// Every link's pose, twelve outputs each.
@@ -67,53 +68,72 @@ fn frame_rows<'a>(
     rows
 }
 
+/// Which program each method gets.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SpatialForm {
+    /// The product of the joints' transformations, evaluated link by link.
+    Product,
+    /// The expanded exact formulas, term by term.
+    Expanded,
+    /// The cheaper of the two by operation count, method by method (what the derive emits).
+    Cheaper,
+}
+
+impl SpatialForm {
+    fn pick(self, product: Method, expanded: Method) -> Method {
+        match self {
+            Self::Product => product,
+            Self::Expanded => expanded,
+            Self::Cheaper => cheaper(product, expanded),
+        }
+    }
+}
+
 impl SpatialDerived {
-    /// Derives the arm and chooses each method's program.
+    /// Derives the arm and chooses each method's program: what the derive emits.
     #[must_use]
     pub fn new(arm: &SpatialArmSpec) -> Self {
-        let k = SpatialKinematics::derive(arm);
-        let n = arm.joints.len();
-        let tip_pose = cheaper(product::tip_pose(arm), expanded(&frame_rows("", &k.tool)));
+        Self::in_form(arm, SpatialForm::Cheaper)
+    }
+
+    /// Derives the arm with every method in `form` (tests check both forms against the
+    /// reference, whichever the derive would choose). An arm whose expansion exceeds
+    /// [`EXPANSION_BUDGET`] gets the product form whatever `form` asks.
+    #[must_use]
+    pub fn in_form(arm: &SpatialArmSpec, form: SpatialForm) -> Self {
+        let (g_product, v_product) = product::gravity(arm);
+        let Some(k) = SpatialKinematics::derive_within(arm, EXPANSION_BUDGET) else {
+            return Self {
+                kinematics: None,
+                tip_pose: product::tip_pose(arm),
+                link_poses: product::link_poses(arm),
+                jacobian: product::jacobian(arm),
+                gravity: g_product,
+                potential_energy: v_product,
+            };
+        };
+        let tip_pose = form.pick(product::tip_pose(arm), expanded(&frame_rows("", &k.tool)));
         let link_rows: Vec<(String, &Expr<Poly>)> = k
             .links
             .iter()
             .enumerate()
             .flat_map(|(i, f)| frame_rows(&format!("l{}", i + 1), f))
             .collect();
-        let link_poses = cheaper(product::link_poses(arm), expanded(&link_rows));
-        // The expanded Jacobian: the tool position's derivatives, and each hinge's axis.
-        let derivatives: Vec<Vec<Expr<Poly>>> = (0..3)
-            .map(|r| (0..n).map(|i| k.tool.p[r].diff_q(i)).collect())
-            .collect();
-        let zero = Expr::zero();
-        let mut j_rows = Vec::with_capacity(6 * n);
-        for r in 0..6 {
-            for (i, joint) in arm.joints.iter().enumerate() {
-                let e = if let Some(row) = derivatives.get(r) {
-                    &row[i]
-                } else if joint.kind == JointKind::Revolute {
-                    &k.axes[i].1[r - 3]
-                } else {
-                    &zero
-                };
-                j_rows.push((format!("j{}{}", r + 1, i + 1), e));
-            }
-        }
-        let jacobian = cheaper(product::jacobian(arm), expanded(&j_rows));
-        let (g_product, v_product) = product::gravity(arm);
+        let link_poses = form.pick(product::link_poses(arm), expanded(&link_rows));
+        let jacobian = form.pick(product::jacobian(arm), expanded_jacobian(arm, &k));
         let g_rows: Vec<(String, &Expr<Poly>)> = k
             .gravity
             .iter()
             .enumerate()
             .map(|(i, e)| (format!("g{}", i + 1), e))
             .collect();
-        let gravity = cheaper(g_product, expanded(&g_rows));
-        let potential_energy = cheaper(
+        let gravity = form.pick(g_product, expanded(&g_rows));
+        let potential_energy = form.pick(
             v_product,
             expanded(&[("v".to_string(), &k.potential_energy)]),
         );
         Self {
-            kinematics: k,
+            kinematics: Some(k),
             tip_pose,
             link_poses,
             jacobian,
@@ -121,4 +141,27 @@ impl SpatialDerived {
             potential_energy,
         }
     }
+}
+
+/// The expanded Jacobian: the tool position's derivatives, and each hinge's axis.
+fn expanded_jacobian(arm: &SpatialArmSpec, k: &SpatialKinematics) -> Method {
+    let n = arm.joints.len();
+    let derivatives: Vec<Vec<Expr<Poly>>> = (0..3)
+        .map(|r| (0..n).map(|i| k.tool.p[r].diff_q(i)).collect())
+        .collect();
+    let zero = Expr::zero();
+    let mut rows = Vec::with_capacity(6 * n);
+    for r in 0..6 {
+        for (i, joint) in arm.joints.iter().enumerate() {
+            let e = if let Some(row) = derivatives.get(r) {
+                &row[i]
+            } else if joint.kind == JointKind::Revolute {
+                &k.axes[i].1[r - 3]
+            } else {
+                &zero
+            };
+            rows.push((format!("j{}{}", r + 1, i + 1), e));
+        }
+    }
+    expanded(&rows)
 }

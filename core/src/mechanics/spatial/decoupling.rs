@@ -175,10 +175,11 @@ fn classify<S: Scalar>(
 /// The closed-form geometry of a six-joint arm whose values are all known at compile time, if
 /// its class is one of [`Decoupling`]'s.
 #[must_use]
-pub fn decouple(arm: &SpatialArmSpec, kinematics: &SpatialKinematics) -> Option<DecoupledGeometry> {
+pub fn decouple(arm: &SpatialArmSpec) -> Option<DecoupledGeometry> {
     if arm.joints.len() != 6 {
         return None;
     }
+    let kinematics = &SpatialKinematics::home(arm);
     let zero = |e| at_zero(e);
     let points: Vec<[Poly; 3]> = kinematics
         .axes

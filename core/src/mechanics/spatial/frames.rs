@@ -61,17 +61,38 @@ impl Frame {
     /// `self * other`: `r = r1 r2`, `p = r1 p2 + p1`.
     #[must_use]
     pub fn mul(&self, other: &Self) -> Self {
-        let r = core::array::from_fn(|i| {
-            core::array::from_fn(|j| {
+        self.mul_within(other, usize::MAX)
+            .unwrap_or_else(|| unreachable!("no budget"))
+    }
+
+    /// `self * other`, or `None` as soon as the entries computed so far exceed `budget` (see
+    /// [`EXPANSION_BUDGET`]).
+    #[must_use]
+    pub fn mul_within(&self, other: &Self, budget: usize) -> Option<Self> {
+        let mut spent = 0;
+        let mut entry = |e: E| {
+            spent += size(&e);
+            (spent <= budget).then_some(e)
+        };
+        let mut r: [[E; 3]; 3] = Default::default();
+        for (i, row) in r.iter_mut().enumerate() {
+            for (j, out) in row.iter_mut().enumerate() {
                 let mut e = E::zero();
                 for k in 0..3 {
                     e.add_product(&self.r[i][k], &other.r[k][j]);
                 }
-                e
-            })
-        });
-        let p = self.apply(&other.p);
-        Self { r, p }
+                *out = entry(e)?;
+            }
+        }
+        let mut p: [E; 3] = Default::default();
+        for (i, out) in p.iter_mut().enumerate() {
+            let mut e = self.p[i].clone();
+            for k in 0..3 {
+                e.add_product(&self.r[i][k], &other.p[k]);
+            }
+            *out = entry(e)?;
+        }
+        Some(Self { r, p })
     }
 
     /// `r v`.
@@ -236,37 +257,77 @@ pub struct SpatialKinematics {
     pub gravity: Vec<E>,
 }
 
+/// How large (terms, counting each coefficient's monomials in named constants and run-time
+/// parameters) one multiplied-out frame or the potential energy may grow before the engine
+/// stops expanding. Right-angle geometry stays below it (the PUMA 560's tool frame is 263, the
+/// Panda's 2 500); generic twists or rotated URDF origins multiply the size several times a
+/// joint, and only the product of the joints' transformations stays linear in their number.
+/// Deriving an arm just under the budget takes under a second.
+pub const EXPANSION_BUDGET: usize = 4_000;
+
+/// The size of an expression for [`EXPANSION_BUDGET`]: its terms and, in each coefficient, the
+/// monomials of named constants and run-time parameters (where generic twists grow).
+fn size(e: &E) -> usize {
+    e.terms().map(|(_, _, c)| c.terms().count().max(1)).sum()
+}
+
 impl SpatialKinematics {
-    /// Multiplies the arm out.
+    /// Multiplies the arm out, however many terms that takes.
     #[must_use]
     pub fn derive(arm: &SpatialArmSpec) -> Self {
+        Self::chain(arm, true, usize::MAX).unwrap_or_else(|| unreachable!("no budget"))
+    }
+
+    /// Multiplies the arm out unless a frame, the potential energy or a gravity torque grows
+    /// past `budget` terms.
+    #[must_use]
+    pub fn derive_within(arm: &SpatialArmSpec, budget: usize) -> Option<Self> {
+        Self::chain(arm, true, budget)
+    }
+
+    /// The arm at `q = 0` (every frame constant): what deciding the inverse kinematics' class
+    /// needs, cheap whatever the geometry.
+    #[must_use]
+    pub fn home(arm: &SpatialArmSpec) -> Self {
+        Self::chain(arm, false, usize::MAX).unwrap_or_else(|| unreachable!("no budget"))
+    }
+
+    fn chain(arm: &SpatialArmSpec, moving: bool, budget: usize) -> Option<Self> {
         let mut frame = Frame::identity();
         let (mut links, mut axes, mut centres) = (Vec::new(), Vec::new(), Vec::new());
         let mut potential = E::zero();
         for (j, joint) in arm.joints.iter().enumerate() {
             let (pre, u, post) = joint_parts(joint);
-            let at_axis = frame.mul(&pre);
+            let at_axis = frame.mul_within(&pre, budget)?;
             let u_expr: [E; 3] = core::array::from_fn(|i| constant(&u[i]));
             axes.push((at_axis.p.clone(), at_axis.rotate(&u_expr)));
-            frame = at_axis.mul(&motion(joint.kind, &u, j)).mul(&post);
+            let moved = if moving {
+                at_axis.mul_within(&motion(joint.kind, &u, j), budget)?
+            } else {
+                at_axis
+            };
+            frame = moved.mul_within(&post, budget)?;
             let com: [E; 3] = core::array::from_fn(|i| constant(&joint.com[i]));
             let c = frame.apply(&com);
             for (g, ci) in arm.gravity.iter().zip(&c) {
                 potential.sub_assign(&ci.scale_by(&(joint.mass.clone() * g.clone())));
             }
+            if size(&potential) > budget {
+                return None;
+            }
             centres.push(c);
             links.push(frame.clone());
         }
-        let tool = frame.mul(&tool_frame(arm));
+        let tool = frame.mul_within(&tool_frame(arm), budget)?;
         let gravity = (0..arm.joints.len()).map(|i| potential.diff_q(i)).collect();
-        Self {
+        Some(Self {
             links,
             tool,
             axes,
             centres,
             potential_energy: potential,
             gravity,
-        }
+        })
     }
 }
 

@@ -7,7 +7,7 @@ use num_traits::{One, Signed, Zero};
 
 use crate::expr::{Expr, Monomial, Var};
 use crate::poly::{Param, ParamMonomial, Poly};
-use crate::ring::Rational;
+use crate::ring::{to_f64, Rational};
 use crate::trig::{Angle, Trig};
 
 /// A node index.
@@ -35,6 +35,12 @@ pub enum Input {
     /// [`frozen`](crate::frozen)).
     Frozen(usize),
 }
+
+/// The most bits (numerator and denominator together) a folded constant keeps exactly. Named
+/// constants (the cosine of a twist of 0.3 rad) enter as the exact value of their `f64`, with a
+/// 2^52 denominator; folding products of twenty of them would carry thousand-bit integers
+/// through every later fold and hash for no digit the emitted `f64` keeps.
+pub const CONSTANT_BITS: u64 = 256;
 
 /// A node of a straight-line program.
 #[derive(Clone, PartialEq, Eq, PartialOrd, Ord, Hash, Debug)]
@@ -127,8 +133,14 @@ impl Program {
         self.intern(Node::Input(input))
     }
 
-    /// An exact constant.
+    /// An exact constant; one of more than [`CONSTANT_BITS`] bits is rounded to the nearest
+    /// `f64`, which is what the emitted code holds anyway.
     pub fn constant(&mut self, r: Rational) -> Id {
+        let bits = r.numer().bits() + r.denom().bits();
+        let r = match to_f64(&r).and_then(Rational::from_float) {
+            Some(rounded) if bits > CONSTANT_BITS => rounded,
+            _ => r,
+        };
         self.intern(Node::Const(r))
     }
 

@@ -1,0 +1,356 @@
+//! The engine's spatial programs (what `#[derive(SpatialArm)]` renders as Rust), in both forms
+//! it chooses between (the product of the joints' transformations and the expanded exact
+//! formulas), against the numeric reference (`reference::spatial`, a product of 4x4 matrices
+//! built at run time), for random arms of 1 to 7 joints in each convention: random slides,
+//! lengths, twists and offsets that are multiples of pi/12 or any number of radians, URDF
+//! origins and integer axes, centres of mass, gravity, a tool frame, and a length read at run
+//! time.
+
+use std::collections::HashMap;
+
+use planar_arm::nalgebra::{
+    Isometry3, Matrix3, Rotation3, SVector, Translation3, UnitQuaternion, Vector3,
+};
+use planar_arm::reference::spatial as reference;
+use planar_arm::spatial::{JointGeometry, SpatialJoint, SpatialLink, SpatialModel};
+use planar_arm::symbolic::methods::Method;
+use planar_arm::symbolic::ring::{ratio, to_f64, Rational};
+use planar_arm::symbolic::slp::Input;
+use planar_arm::symbolic::spatial::{
+    unit_axis, FixedAngle, SpatialArmSpec, SpatialDerived, SpatialForm, SpatialGeometry,
+    SpatialJointSpec,
+};
+use planar_arm::symbolic::{JointKind, Param, Poly};
+use planar_arm::Joint;
+use proptest::prelude::*;
+
+/// An angle as drawn: `k pi / 12` or `k / 10` radians.
+#[derive(Clone, Debug)]
+enum Drawn {
+    Pi(i64),
+    Radians(i64),
+}
+
+impl Drawn {
+    fn exact(&self) -> FixedAngle {
+        match self {
+            Self::Pi(k) => FixedAngle::pi(ratio(*k, 12)),
+            Self::Radians(k) => FixedAngle {
+                radians: ratio(*k, 10),
+                pi_multiple: ratio(0, 1),
+            },
+        }
+    }
+    fn value(&self) -> f64 {
+        self.exact().value()
+    }
+}
+
+fn angle() -> impl Strategy<Value = Drawn> {
+    prop_oneof![
+        (-12i64..=12).prop_map(Drawn::Pi),
+        (-31i64..=31).prop_map(Drawn::Radians)
+    ]
+}
+
+/// A length `k / 8` metres.
+fn length() -> impl Strategy<Value = i64> {
+    -8i64..=8
+}
+
+#[derive(Clone, Debug)]
+struct JointDraw {
+    prismatic: bool,
+    lengths: [i64; 3],
+    angles: [Drawn; 3],
+    axis: [i64; 3],
+    mass: i64,
+    com: [i64; 3],
+}
+
+fn joint() -> impl Strategy<Value = JointDraw> {
+    (
+        proptest::bool::weighted(0.3),
+        [length(), length(), length()],
+        [angle(), angle(), angle()],
+        [-2i64..=2, -2i64..=2, -2i64..=2],
+        0i64..=8,
+        [-4i64..=4, -4i64..=4, -4i64..=4],
+    )
+        .prop_filter("a non-zero axis", |j| j.3 != [0, 0, 0])
+        .prop_map(|(prismatic, lengths, angles, axis, mass, com)| JointDraw {
+            prismatic,
+            lengths,
+            angles,
+            axis,
+            mass,
+            com,
+        })
+}
+
+#[derive(Clone, Debug)]
+struct ArmDraw {
+    convention: u8,
+    joints: Vec<JointDraw>,
+    gravity: [i64; 3],
+    tool: ([i64; 3], [Drawn; 3]),
+    /// The first joint's first length, read at run time (eighths of a metre).
+    reach: i64,
+    q: Vec<f64>,
+}
+
+fn arm() -> impl Strategy<Value = ArmDraw> {
+    (
+        0u8..3,
+        proptest::collection::vec(joint(), 1..=7),
+        [-10i64..=10, -10i64..=10, -10i64..=10],
+        ([length(), length(), length()], [angle(), angle(), angle()]),
+        -8i64..=8,
+        proptest::collection::vec(-3.2f64..3.2, 7),
+    )
+        .prop_map(|(convention, joints, gravity, tool, reach, q)| ArmDraw {
+            convention,
+            joints,
+            gravity,
+            tool,
+            reach,
+            q,
+        })
+}
+
+fn eighths(k: i64) -> Rational {
+    ratio(k, 8)
+}
+
+fn value(r: &Rational) -> f64 {
+    to_f64(r).expect("a small rational")
+}
+
+fn spec(d: &ArmDraw) -> SpatialArmSpec {
+    let constant = |k: i64| Poly::constant(eighths(k));
+    let joints = d
+        .joints
+        .iter()
+        .enumerate()
+        .map(|(i, j)| {
+            let [l0, l1, l2] = j.lengths;
+            let first = if i == 0 {
+                Poly::param(Param::new("reach"))
+            } else {
+                constant(l0)
+            };
+            let [a0, a1, a2] = j.angles.clone();
+            let geometry = match d.convention {
+                0 => SpatialGeometry::Dh {
+                    a: first,
+                    alpha: a0.exact(),
+                    d: constant(l1),
+                    theta: a1.exact(),
+                },
+                1 => SpatialGeometry::Mdh {
+                    a: first,
+                    alpha: a0.exact(),
+                    d: constant(l1),
+                    theta: a1.exact(),
+                },
+                _ => SpatialGeometry::Urdf {
+                    xyz: [first, constant(l1), constant(l2)],
+                    rpy: [a0.exact(), a1.exact(), a2.exact()],
+                    axis: unit_axis(&j.axis.map(|k| ratio(k, 1))),
+                },
+            };
+            SpatialJointSpec {
+                geometry,
+                kind: if j.prismatic {
+                    JointKind::Prismatic
+                } else {
+                    JointKind::Revolute
+                },
+                mass: Poly::constant(ratio(j.mass, 4)),
+                com: j.com.map(|k| Poly::constant(ratio(k, 10))),
+                inertia: core::array::from_fn(|_| Poly::default()),
+                range: None,
+                armature: Poly::default(),
+                damping: Poly::default(),
+                frictionloss: Poly::default(),
+            }
+        })
+        .collect();
+    SpatialArmSpec {
+        joints,
+        gravity: d.gravity.map(|k| Poly::constant(ratio(k, 1))),
+        tool_xyz: d.tool.0.map(|k| Poly::constant(eighths(k))),
+        tool_rpy: d.tool.1.clone().map(|a| a.exact()),
+    }
+}
+
+fn model<const N: usize>(d: &ArmDraw) -> SpatialModel<N> {
+    let joints = core::array::from_fn(|i| {
+        let j = &d.joints[i];
+        let len = |k: i64| value(&eighths(k));
+        let first = len(if i == 0 { d.reach } else { j.lengths[0] });
+        let [a0, a1, a2] = [
+            j.angles[0].value(),
+            j.angles[1].value(),
+            j.angles[2].value(),
+        ];
+        let geometry = match d.convention {
+            0 => JointGeometry::Dh {
+                a: first,
+                alpha: a0,
+                d: len(j.lengths[1]),
+                theta: a1,
+            },
+            1 => JointGeometry::Mdh {
+                a: first,
+                alpha: a0,
+                d: len(j.lengths[1]),
+                theta: a1,
+            },
+            _ => JointGeometry::Urdf {
+                xyz: Vector3::new(first, len(j.lengths[1]), len(j.lengths[2])),
+                rpy: Vector3::new(a0, a1, a2),
+                axis: Vector3::from(j.axis.map(|k| k as f64)),
+            },
+        };
+        let kind = if j.prismatic {
+            Joint::Prismatic
+        } else {
+            Joint::Revolute
+        };
+        SpatialJoint::new(geometry, kind)
+    });
+    let links = core::array::from_fn(|i| {
+        let j = &d.joints[i];
+        SpatialLink {
+            mass: j.mass as f64 / 4.0,
+            com: Vector3::from(j.com.map(|k| k as f64 / 10.0)),
+            inertia: Matrix3::zeros(),
+        }
+    });
+    let [r, p, y] = [
+        d.tool.1[0].value(),
+        d.tool.1[1].value(),
+        d.tool.1[2].value(),
+    ];
+    SpatialModel {
+        joints,
+        links,
+        gravity: Vector3::from(d.gravity.map(|k| k as f64)),
+        tool: Isometry3::from_parts(
+            Translation3::from(Vector3::from(d.tool.0.map(|k| k as f64 / 8.0))),
+            UnitQuaternion::from_euler_angles(r, p, y),
+        ),
+    }
+}
+
+/// A method's outputs by name, at `q`, with the run-time length set.
+fn outputs(m: &Method, q: &[f64], reach: f64) -> HashMap<String, f64> {
+    let params = m.program.params().to_vec();
+    let input = |i: Input| match i {
+        Input::Q(k) => q[k],
+        Input::Param(k) => {
+            assert_eq!(params[k].name(), "reach");
+            reach
+        }
+        other => panic!("a kinematic program reads {other:?}"),
+    };
+    let values = m.eval(&input);
+    m.outputs
+        .iter()
+        .map(|(name, _)| name.clone())
+        .zip(values)
+        .collect()
+}
+
+fn frame(out: &HashMap<String, f64>, prefix: &str) -> Isometry3<f64> {
+    let at = |name: String| out[&format!("{prefix}{name}")];
+    let r = Matrix3::from_fn(|i, j| at(format!("r{}{}", i + 1, j + 1)));
+    let p = Vector3::from_fn(|i, _| at(format!("p{}", i + 1)));
+    let rotation = Rotation3::from_matrix_unchecked(r);
+    // A rotation matrix the program got wrong would not be orthonormal: check before
+    // comparing as isometries.
+    assert!(
+        (r * r.transpose() - Matrix3::identity()).amax() < 1e-12,
+        "{r}"
+    );
+    Isometry3::from_parts(
+        Translation3::from(p),
+        UnitQuaternion::from_rotation_matrix(&rotation),
+    )
+}
+
+fn gap(a: &Isometry3<f64>, b: &Isometry3<f64>) -> f64 {
+    let d = a.inverse() * b;
+    d.translation.vector.norm().max(d.rotation.angle())
+}
+
+fn compare<const N: usize>(d: &ArmDraw, derived: &SpatialDerived) -> Result<(), TestCaseError> {
+    let model: SpatialModel<N> = model(d);
+    let q = SVector::<f64, N>::from_fn(|i, _| d.q[i]);
+    let reach = value(&eighths(d.reach));
+    let qs = q.as_slice();
+    let tip = frame(&outputs(&derived.tip_pose, qs, reach), "");
+    let expected = reference::tip_pose(&model, &q);
+    prop_assert!(gap(&tip, &expected) < 1e-12, "tip {tip} vs {expected}");
+    let links = outputs(&derived.link_poses, qs, reach);
+    for (i, expected) in reference::link_poses(&model, &q).iter().enumerate() {
+        let pose = frame(&links, &format!("l{}", i + 1));
+        prop_assert!(
+            gap(&pose, expected) < 1e-12,
+            "link {i}: {pose} vs {expected}"
+        );
+    }
+    let j = outputs(&derived.jacobian, qs, reach);
+    let expected = reference::jacobian(&model, &q);
+    for r in 0..6 {
+        for c in 0..N {
+            let got = j[&format!("j{}{}", r + 1, c + 1)];
+            prop_assert!(
+                (got - expected[(r, c)]).abs() < 1e-12,
+                "J{r}{c}: {got} vs {expected}"
+            );
+        }
+    }
+    let g = outputs(&derived.gravity, qs, reach);
+    let expected = reference::gravity(&model, &q);
+    let scale = 1.0 + expected.amax();
+    for i in 0..N {
+        let got = g[&format!("g{}", i + 1)];
+        prop_assert!(
+            (got - expected[i]).abs() < 1e-12 * scale,
+            "g{i}: {got} vs {expected}"
+        );
+    }
+    let v = outputs(&derived.potential_energy, qs, reach)["v"];
+    let expected = reference::potential_energy(&model, &q);
+    prop_assert!(
+        (v - expected).abs() < 1e-12 * (1.0 + expected.abs()),
+        "V {v} vs {expected}"
+    );
+    Ok(())
+}
+
+fn check(d: &ArmDraw, derived: &SpatialDerived) -> Result<(), TestCaseError> {
+    match d.joints.len() {
+        1 => compare::<1>(d, derived),
+        2 => compare::<2>(d, derived),
+        3 => compare::<3>(d, derived),
+        4 => compare::<4>(d, derived),
+        5 => compare::<5>(d, derived),
+        6 => compare::<6>(d, derived),
+        7 => compare::<7>(d, derived),
+        n => panic!("{n} joints"),
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(96))]
+
+    #[test]
+    fn both_forms_match_the_reference(d in arm()) {
+        let s = spec(&d);
+        check(&d, &SpatialDerived::in_form(&s, SpatialForm::Product))?;
+        check(&d, &SpatialDerived::in_form(&s, SpatialForm::Expanded))?;
+    }
+}
