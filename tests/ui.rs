@@ -1,5 +1,6 @@
-//! Compile-time diagnostics of `#[derive(PlanarArm)]` (one bad input per file, with the
-//! compiler's output checked in next to it) and valid edge inputs that must compile and run.
+//! Compile-time diagnostics of `#[derive(PlanarArm)]` and `#[derive(SpatialArm)]` (`spatial/`)
+//! (one bad input per file, with the compiler's output checked in next to it) and valid edge
+//! inputs that must compile and run.
 //!
 //! Re-bless the `.stderr` files with `TRYBUILD=overwrite cargo test --test ui`, then read them.
 
@@ -13,5 +14,6 @@ fn ui() {
     t.compile_fail("tests/ui/param/*.rs");
     t.compile_fail("tests/ui/range/*.rs");
     t.compile_fail("tests/ui/stub/*.rs");
+    t.compile_fail("tests/ui/spatial/*.rs");
     t.pass("tests/ui/pass/*.rs");
 }

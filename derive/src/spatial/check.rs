@@ -156,25 +156,23 @@ fn check_joint(
             }
         }
         Convention::Origin => {
-            let axis = a.axis.as_ref().map_or_else(
-                || {
-                    [
-                        Rational::zero(),
-                        Rational::zero(),
-                        Rational::from_integer(1.into()),
-                    ]
-                },
-                |x| x.value.clone(),
-            );
-            if axis.iter().all(Zero::is_zero) {
-                let tokens = a
-                    .axis
-                    .as_ref()
-                    .map(|x| x.tokens.clone())
-                    .unwrap_or_default();
-                cx.error_spanned_by(tokens, format!("joint `{name}`: a zero axis moves nothing; give its direction, e.g. `axis = (0, 0, 1)`"));
-                ok = false;
-            }
+            let z = || {
+                [
+                    Rational::zero(),
+                    Rational::zero(),
+                    Rational::from_integer(1.into()),
+                ]
+            };
+            let axis = match &a.axis {
+                // Reported, and replaced so that `unit_axis` does not divide by its length.
+                Some(x) if x.value.iter().all(Zero::is_zero) => {
+                    cx.error_spanned_by(&x.tokens, format!("joint `{name}`: a zero axis moves nothing; give its direction, e.g. `axis = (0, 0, 1)`"));
+                    ok = false;
+                    z()
+                }
+                Some(x) => x.value.clone(),
+                None => z(),
+            };
             let xyz = g.xyz.as_ref().map_or_else(
                 || [Poly::default(), Poly::default(), Poly::default()],
                 |t| t.value.clone(),
