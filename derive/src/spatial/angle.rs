@@ -40,14 +40,21 @@ fn eval_at(expr: &Expr, depth: usize) -> syn::Result<Angle> {
     }
     match expr {
         Expr::Lit(lit) => {
-            let digits = match &lit.lit {
-                Lit::Int(i) => i.base10_digits().to_string(),
-                Lit::Float(f) => f.base10_digits().to_string(),
+            let (digits, suffix) = match &lit.lit {
+                Lit::Int(i) => (i.base10_digits(), i.suffix()),
+                Lit::Float(f) => (f.base10_digits(), f.suffix()),
                 _ => return bad(
                     "expected an angle: a number of radians, or a multiple of `pi` such as `pi/2`",
                 ),
             };
-            parse_decimal(&digits)
+            // `90deg` lexes as 90 with a suffix: read as radians, it would be silently wrong.
+            if !suffix.is_empty() {
+                return bad(&format!(
+                    "unsupported suffix `{suffix}`; an angle is a number of radians or a multiple \
+                     of `pi` (90 degrees is `pi/2`)"
+                ));
+            }
+            parse_decimal(digits)
                 .map(Angle::number)
                 .ok_or_else(|| syn::Error::new_spanned(expr, "angle out of range"))
         }
@@ -121,5 +128,7 @@ mod tests {
         assert!(ev("1 / pi").is_err());
         assert!(ev("self.alpha").is_err());
         assert!(ev("\"pi\"").is_err());
+        assert!(ev("90deg").is_err());
+        assert!(ev("1.5f64").is_err());
     }
 }
