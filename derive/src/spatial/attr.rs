@@ -12,6 +12,7 @@ use planar_arm_core::Poly;
 use proc_macro2::TokenStream;
 use quote::ToTokens;
 use syn::meta::ParseNestedMeta;
+use syn::parse::Parser;
 
 use super::angle::{self, Angle};
 use crate::attr::{nearest, path_text, skip_to_comma, tokens_between};
@@ -70,14 +71,18 @@ pub struct SpatialAttrs {
     pub tokens: TokenStream,
     pub malformed: bool,
     pub params: Vec<ParamUse>,
+    /// The keys given, for duplicates.
+    pub seen: Vec<String>,
     // On a field.
     pub geometry: Option<Geometry>,
+    /// A geometry was written (perhaps unreadable, perhaps a planar `length`): its error is
+    /// reported, so a missing-geometry error would only repeat it.
+    pub geometry_written: bool,
     pub axis: Option<Spanned<[Rational; 3]>>,
     pub mass: Option<Scalar>,
     pub com: Option<Triple>,
     /// xx, yy, zz, xy, xz, yz.
     pub inertia: [Option<Scalar>; 6],
-    pub inertia_tokens: Option<TokenStream>,
     pub range: Option<Spanned<(Rational, Rational)>>,
     pub armature: Option<Scalar>,
     pub damping: Option<Scalar>,
@@ -124,10 +129,11 @@ pub fn parse(cx: &Ctxt, attrs: &[syn::Attribute], place: Place) -> SpatialAttrs 
         }
         found = true;
         let syn::Meta::List(_) = &attr.meta else {
-            cx.error_spanned_by(
-                attr,
-                "expected #[arm(...)], for example #[arm(dh(a = 0.4, alpha = pi/2))]",
-            );
+            let example = match place {
+                Place::Struct => "#[arm(gravity = (0, 0, -9.81))]",
+                Place::Field => "#[arm(dh(a = 0.4, alpha = pi/2))]",
+            };
+            cx.error_spanned_by(attr, format!("expected #[arm(...)], for example {example}"));
             out.malformed = true;
             continue;
         };
@@ -156,10 +162,18 @@ fn entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut SpatialA
                 // #[arm(gravity = ..)] on a field
                 Place::Field => format!("`{key}` is a property of the whole arm; it belongs in the struct's #[arm(...)]"),
             }
+        } else if key == "length" {
+            // #[arm(length = 0.4)]: the planar geometry; no missing-geometry error on top.
+            out.geometry_written = true;
+            "`length` is a key of #[derive(PlanarArm)]; a spatial joint's geometry is \
+             `dh(a = .., alpha = .., d = .., theta = ..)`, `mdh(...)`, or `origin(xyz = .., rpy = ..)` \
+             with `axis`"
+                .to_string()
         } else if PLANAR_KEYS.contains(&key.as_str()) {
+            // #[arm(payload = 2)]
             format!(
-                "`{key}` is a key of #[derive(PlanarArm)]; a spatial joint is written `dh(...)`, \
-                 `mdh(...)` or `origin(...)` with `axis`, its link with `mass`, `com` and `inertia(...)`"
+                "`{key}` is a key of #[derive(PlanarArm)]; #[derive(SpatialArm)] has no payload \
+                 keys: include a payload in the last link's `mass`, `com` and `inertia(...)`"
             )
         } else if let Some(best) = nearest(&key, own) {
             format!("unknown key `{key}`; did you mean `{best}`?")
@@ -167,7 +181,40 @@ fn entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut SpatialA
             format!("unknown key `{key}`; expected one of {}", own.join(", "))
         };
         cx.error_spanned_by(&meta.path, message);
-        skip_value(meta);
+        skip_rest(meta);
+        return;
+    }
+    let is_geometry = matches!(key.as_str(), "dh" | "mdh" | "origin");
+    let is_list = is_geometry || key == "inertia" || key == "tool";
+    let message = if let Some(g) = out.geometry.as_ref().filter(|_| is_geometry) {
+        // #[arm(dh(..), mdh(..))]
+        Some(format!(
+            "this joint is already written with `{}`; a joint has one geometry",
+            g.convention.key()
+        ))
+    } else if out.seen.contains(&key) {
+        // #[arm(mass = 1, mass = 2)]
+        Some(format!("duplicate key `{key}`; give it once"))
+    } else if key == "inertia" && !meta.input.peek(syn::token::Paren) {
+        // #[arm(inertia = 0.1)], as a planar link's
+        Some(format!(
+            "a spatial link's inertia is a tensor, not one number: write `{}` (kg m², about the \
+             centre of mass in the link's axes; omitted entries are 0)",
+            form("inertia")
+        ))
+    } else if is_list != meta.input.peek(syn::token::Paren)
+        || !is_list && !meta.input.peek(syn::Token![=])
+    {
+        // #[arm(dh = (0.4, 0))], #[arm(mass(1))], #[arm(mass)]
+        Some(format!("expected `{}`", form(&key)))
+    } else {
+        None
+    };
+    out.seen.push(key.clone());
+    out.geometry_written |= is_geometry;
+    if let Some(message) = message {
+        cx.error_spanned_by(&meta.path, message);
+        skip_rest(meta);
         return;
     }
     let result = match key.as_str() {
@@ -180,24 +227,59 @@ fn entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut SpatialA
     if let Err(err) = result {
         cx.syn_error(err);
         out.malformed = true;
+        skip_rest(meta);
     }
 }
 
-/// Skips `= value` or `(...)` after an unknown key.
-fn skip_value(meta: &ParseNestedMeta<'_>) {
-    if meta.input.peek(syn::token::Paren) {
-        let _ = meta.parse_nested_meta(|m| {
-            skip_value(&m);
-            Ok(())
-        });
-    } else if meta.input.peek(syn::Token![=]) {
-        let _ = meta.value();
-        skip_to_comma(meta.input);
+/// How `key` is written, for errors.
+fn form(key: &str) -> String {
+    match key {
+        "dh" | "mdh" => format!("{key}(a = .., alpha = .., d = .., theta = ..)"),
+        "origin" | "tool" => format!("{key}(xyz = (x, y, z), rpy = (roll, pitch, yaw))"),
+        "inertia" => "inertia(xx = .., yy = .., zz = .., xy = .., xz = .., yz = ..)".to_string(),
+        "axis" | "com" => format!("{key} = (x, y, z)"),
+        "gravity" => "gravity = (0, 0, -9.81)".to_string(),
+        "range" => "range = (lower, upper)".to_string(),
+        "crate" => "crate = \"path\"".to_string(),
+        _ => format!("{key} = <number>"),
     }
+}
+
+/// Skips the rest of an entry that could not be read, so that parsing goes on with the next
+/// entry and reports no error of its own.
+fn skip_rest(meta: &ParseNestedMeta<'_>) {
+    skip_to_comma(meta.input);
+}
+
+/// Reads the list `(...)` after `key` entry by entry with `f`, which reports its own errors.
+/// An entry that is not `name = value` is one error, at it.
+fn nested(
+    meta: &ParseNestedMeta<'_>,
+    key: &str,
+    f: impl FnMut(ParseNestedMeta<'_>) -> syn::Result<()>,
+) -> syn::Result<()> {
+    let group: proc_macro2::Group = meta.input.parse()?;
+    syn::meta::parser(f).parse2(group.stream()).map_err(|e| {
+        syn::Error::new(
+            e.span(),
+            format!(
+                "expected `{}`: entries `name = value`, separated by commas",
+                form(key)
+            ),
+        )
+    })
 }
 
 /// The expression after `=` and its tokens as written.
 fn expr(meta: &ParseNestedMeta<'_>) -> syn::Result<(syn::Expr, TokenStream)> {
+    if !meta.input.peek(syn::Token![=]) {
+        // dh(a 0.4), dh(a)
+        let key = path_text(&meta.path);
+        return Err(syn::Error::new_spanned(
+            &meta.path,
+            format!("expected `{key} = <value>`"),
+        ));
+    }
     let v = meta.value()?;
     let start = v.cursor();
     let e = v.parse::<syn::Expr>()?;
@@ -218,18 +300,23 @@ fn triple(
     what: &str,
 ) -> syn::Result<Triple> {
     let (e, tokens) = expr(meta)?;
-    let syn::Expr::Tuple(t) = &e else {
-        return Err(syn::Error::new_spanned(
-            tokens,
-            format!("`{what}` takes three numbers `(x, y, z)`"),
-        ));
+    let t = match &e {
+        syn::Expr::Tuple(t) if t.elems.len() == 3 => t,
+        // #[arm(gravity = 9.81)], as a planar arm's
+        _ if what == "gravity" => {
+            return Err(syn::Error::new_spanned(
+                tokens,
+                "`gravity` takes the vector `(x, y, z)` in the base frame, for example \
+                 `gravity = (0, 0, -9.81)` (the default)",
+            ))
+        }
+        _ => {
+            return Err(syn::Error::new_spanned(
+                tokens,
+                format!("`{what}` takes three numbers `(x, y, z)`"),
+            ))
+        }
     };
-    if t.elems.len() != 3 {
-        return Err(syn::Error::new_spanned(
-            tokens,
-            format!("`{what}` takes three numbers `(x, y, z)`"),
-        ));
-    }
     let v: Vec<Poly> = t
         .elems
         .iter()
@@ -282,15 +369,6 @@ fn geometry(
         "mdh" => Convention::Mdh,
         _ => Convention::Origin,
     };
-    if let Some(g) = &out.geometry {
-        return Err(syn::Error::new_spanned(
-            &meta.path,
-            format!(
-                "this joint is already written with `{}`; a joint has one geometry",
-                g.convention.key()
-            ),
-        ));
-    }
     let mut g = Geometry {
         convention,
         tokens: meta.path.to_token_stream(),
@@ -306,7 +384,7 @@ fn geometry(
         _ => &["a", "alpha", "d", "theta"],
     };
     let params = &mut out.params;
-    meta.parse_nested_meta(|m| {
+    nested(meta, key, |m| {
         let sub = path_text(&m.path);
         let result = (|| -> syn::Result<()> {
             match sub.as_str() {
@@ -332,14 +410,19 @@ fn geometry(
                         tokens,
                     });
                 }
-                "xyz" if convention == Convention::Origin => {
-                    g.xyz = Some(triple(&m, params, "xyz")?)
+                "xyz" | "rpy" if convention == Convention::Origin => {
+                    if (sub == "xyz" && g.xyz.is_some()) || (sub == "rpy" && g.rpy.is_some()) {
+                        return Err(duplicate(&m.path, &sub));
+                    }
+                    if sub == "xyz" {
+                        g.xyz = Some(triple(&m, params, "xyz")?);
+                    } else {
+                        g.rpy = Some(angles(&m)?);
+                    }
                 }
-                "rpy" if convention == Convention::Origin => g.rpy = Some(angles(&m)?),
                 _ => {
                     let hint = nearest(&sub, subkeys)
                         .map_or_else(String::new, |b| format!("; did you mean `{b}`?"));
-                    skip_value(&m);
                     return Err(syn::Error::new_spanned(
                         &m.path,
                         format!("`{key}` takes {}{hint}", subkeys.join(", ")),
@@ -350,6 +433,7 @@ fn geometry(
         })();
         if let Err(e) = result {
             cx.syn_error(e);
+            skip_rest(&m);
         }
         Ok(())
     })?;
@@ -359,62 +443,83 @@ fn geometry(
 
 /// `inertia(xx = .., yy = .., zz = .., xy = .., xz = .., yz = ..)`.
 fn inertia(cx: &Ctxt, meta: &ParseNestedMeta<'_>, out: &mut SpatialAttrs) -> syn::Result<()> {
-    if out.inertia_tokens.is_some() {
-        return Err(duplicate(&meta.path, "inertia"));
-    }
-    out.inertia_tokens = Some(meta.path.to_token_stream());
     let params = &mut out.params;
     let slots = &mut out.inertia;
-    meta.parse_nested_meta(|m| {
+    nested(meta, "inertia", |m| {
         let sub = path_text(&m.path);
-        match INERTIA_KEYS.iter().position(|k| *k == sub) {
-            Some(i) if slots[i].is_some() => cx.syn_error(duplicate(&m.path, &sub)),
-            Some(i) => match scalar(&m, params) {
-                Ok(v) => slots[i] = Some(v),
-                Err(e) => cx.syn_error(e),
-            },
+        let result = match INERTIA_KEYS.iter().position(|k| *k == sub) {
+            Some(i) if slots[i].is_some() => Err(duplicate(&m.path, &sub)),
+            Some(i) => scalar(&m, params).map(|v| slots[i] = Some(v)),
             None => {
-                let hint = nearest(&sub, &INERTIA_KEYS).map_or_else(String::new, |b| format!("; did you mean `{b}`?"));
-                skip_value(&m);
-                cx.error_spanned_by(
+                let hint = inertia_entry(&sub)
+                    .map_or_else(String::new, |k| format!(" (did you mean `{k}`?)"));
+                Err(syn::Error::new_spanned(
                     &m.path,
                     format!(
-                        "unknown inertia entry `{sub}`{hint}; the entries are xx, yy, zz, xy, xz, yz (kg m², about the centre of mass in the link's axes)"
+                        "unknown inertia entry `{sub}`{hint}; the entries are xx, yy, zz, xy, xz, yz \
+                         (kg m², about the centre of mass in the link's axes)"
                     ),
-                );
+                ))
             }
+        };
+        if let Err(e) = result {
+            cx.syn_error(e);
+            skip_rest(&m);
         }
         Ok(())
     })
+}
+
+/// The entry meant by URDF's `ixx` or by `yx` (the tensor is symmetric).
+fn inertia_entry(sub: &str) -> Option<&'static str> {
+    let sub = sub.to_ascii_lowercase();
+    let sub = sub.strip_prefix('i').unwrap_or(&sub);
+    let mut sorted: Vec<char> = sub.chars().collect();
+    sorted.sort_unstable();
+    let sorted: String = sorted.into_iter().collect();
+    INERTIA_KEYS.iter().copied().find(|k| *k == sorted)
 }
 
 /// `tool(xyz = .., rpy = ..)`.
 fn tool(cx: &Ctxt, meta: &ParseNestedMeta<'_>, out: &mut SpatialAttrs) -> syn::Result<()> {
     let params = &mut out.params;
     let (xyz, rpy) = (&mut out.tool_xyz, &mut out.tool_rpy);
-    meta.parse_nested_meta(|m| {
+    nested(meta, "tool", |m| {
         let sub = path_text(&m.path);
         let result = match sub.as_str() {
+            "xyz" if xyz.is_some() => Err(duplicate(&m.path, &sub)),
+            "rpy" if rpy.is_some() => Err(duplicate(&m.path, &sub)),
             "xyz" => triple(&m, params, "xyz").map(|v| *xyz = Some(v)),
             "rpy" => angles(&m).map(|v| *rpy = Some(v)),
-            _ => {
-                skip_value(&m);
-                Err(syn::Error::new_spanned(
-                    &m.path,
-                    "`tool` takes `xyz = (x, y, z)` and `rpy = (roll, pitch, yaw)`",
-                ))
-            }
+            _ => Err(syn::Error::new_spanned(
+                &m.path,
+                "`tool` takes `xyz = (x, y, z)` and `rpy = (roll, pitch, yaw)`",
+            )),
         };
         if let Err(e) = result {
             cx.syn_error(e);
+            skip_rest(&m);
         }
         Ok(())
     })
 }
 
+/// `crate = "path"`.
 fn krate(meta: &ParseNestedMeta<'_>, out: &mut SpatialAttrs) -> syn::Result<()> {
-    let lit = meta.value()?.parse::<syn::LitStr>()?;
-    out.krate = Some(lit.parse::<syn::Path>()?);
+    let value = meta.value()?;
+    let lit = value.parse::<syn::LitStr>().map_err(|e| {
+        syn::Error::new(
+            e.span(),
+            "expected `crate = \"path\"`, the path of planar_arm in this crate, for example \
+             `crate = \"arm\"`",
+        )
+    })?;
+    out.krate = Some(lit.parse::<syn::Path>().map_err(|_| {
+        syn::Error::new_spanned(
+            &lit,
+            "expected a path such as \"arm\" or \"::my_deps::planar_arm\"",
+        )
+    })?);
     Ok(())
 }
 

@@ -7,6 +7,7 @@ use planar_arm_core::mechanics::spatial::{
 };
 use planar_arm_core::ring::{ratio, to_f64, Rational};
 use planar_arm_core::Poly;
+use quote::ToTokens;
 
 use super::angle::Angle;
 use super::ast::{SpatialArm, SpatialJoint};
@@ -101,11 +102,21 @@ fn check_joint(
     let a = &joint.attrs;
     let mut ok = true;
     let Some(g) = &a.geometry else {
+        if a.geometry_written {
+            // The geometry written could not be read; that error is reported.
+            return None;
+        }
+        // At the #[arm(...)], or at the field's name when it has none.
+        let tokens = if a.tokens.is_empty() {
+            joint.field.ident.to_token_stream()
+        } else {
+            a.tokens.clone()
+        };
         cx.error_spanned_by(
-            if a.tokens.is_empty() { quote::quote!(#name) } else { a.tokens.clone() },
+            tokens,
             format!(
                 "joint `{name}` has no geometry: write `dh(a = .., alpha = .., d = .., theta = ..)`, \
-                 `mdh(...)`, or `origin(xyz = (..), rpy = (..)), axis = (..)`"
+                 `mdh(...)`, or `origin(xyz = (..), rpy = (..)), axis = (..)` in its #[arm(...)]"
             ),
         );
         return None;

@@ -1,0 +1,10 @@
+use planar_arm::prelude::*;
+
+#[derive(SpatialArm)]
+#[arm(gravity = 9.81)]
+struct Arm {
+    #[arm(dh(a = 0.4), mass = 1)]
+    shoulder: Revolute,
+}
+
+fn main() {}

@@ -1,0 +1,10 @@
+use planar_arm::prelude::*;
+
+#[derive(SpatialArm)]
+struct Arm {
+    #[arm(dh(a = 0.4))]
+    shoulder: Revolute,
+    elbow: Revolute,
+}
+
+fn main() {}
