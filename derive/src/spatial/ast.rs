@@ -23,6 +23,9 @@ impl SpatialJoint<'_> {
     }
 }
 
+const NO_JOINT: &str = "a spatial arm needs at least one joint: add a field \
+                        `#[arm(dh(a = 0.4))] shoulder: Revolute` (or `Prismatic`)";
+
 /// The derive input.
 pub struct SpatialArm<'a> {
     pub attrs: SpatialAttrs,
@@ -46,24 +49,40 @@ impl<'a> SpatialArm<'a> {
         let fields = match &input.data {
             Data::Struct(s) => match &s.fields {
                 Fields::Named(named) if !named.named.is_empty() => named,
-                _ => {
+                Fields::Named(named) => {
+                    cx.error_spanned_by(named, NO_JOINT);
+                    return None;
+                }
+                Fields::Unnamed(unnamed) => {
                     cx.error_spanned_by(
-                        &input.ident,
-                        "#[derive(SpatialArm)] needs a struct with one named field per joint, \
-                         e.g. `#[arm(dh(a = 0.4))] shoulder: Revolute`",
+                        unnamed,
+                        "joints must be named fields, not tuple fields: write \
+                         `{ #[arm(dh(a = 0.4))] shoulder: Revolute }`",
                     );
                     return None;
                 }
+                Fields::Unit => {
+                    cx.error_spanned_by(&input.ident, NO_JOINT);
+                    return None;
+                }
             },
-            _ => {
+            Data::Enum(e) => {
                 cx.error_spanned_by(
-                    &input.ident,
-                    "#[derive(SpatialArm)] needs a struct with one named field per joint",
+                    e.enum_token,
+                    "#[derive(SpatialArm)] needs a struct with one named field per joint, not an enum",
+                );
+                return None;
+            }
+            Data::Union(u) => {
+                cx.error_spanned_by(
+                    u.union_token,
+                    "#[derive(SpatialArm)] needs a struct with one named field per joint, not a union",
                 );
                 return None;
             }
         };
         let (mut joints, mut others) = (Vec::new(), Vec::new());
+        let mut mistyped = false;
         for field in &fields.named {
             let listed = field.attrs.iter().any(|a| a.path().is_ident("arm"));
             match joint_kind(&field.ty) {
@@ -78,15 +97,16 @@ impl<'a> SpatialArm<'a> {
                         "joint fields must have type `planar_arm::Revolute` or `planar_arm::Prismatic`; \
                          their geometry goes in #[arm(...)]",
                     );
+                    mistyped = true;
                 }
                 None => others.push(field),
             }
         }
         if joints.is_empty() {
-            cx.error_spanned_by(
-                &input.ident,
-                "a spatial arm needs at least one joint field of type `Revolute` or `Prismatic`",
-            );
+            // A joint of the wrong type has had its error.
+            if !mistyped {
+                cx.error_spanned_by(fields, NO_JOINT);
+            }
             return None;
         }
         Some(Self {

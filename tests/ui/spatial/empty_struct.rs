@@ -1,0 +1,6 @@
+use planar_arm::prelude::*;
+
+#[derive(SpatialArm)]
+struct Arm {}
+
+fn main() {}

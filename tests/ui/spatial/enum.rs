@@ -1,0 +1,8 @@
+use planar_arm::prelude::*;
+
+#[derive(SpatialArm)]
+enum Arm {
+    Shoulder,
+}
+
+fn main() {}

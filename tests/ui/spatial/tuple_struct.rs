@@ -1,0 +1,6 @@
+use planar_arm::prelude::*;
+
+#[derive(SpatialArm)]
+struct Arm(#[arm(dh(a = 0.4))] Revolute);
+
+fn main() {}
