@@ -43,6 +43,12 @@ fn eval_at(expr: &Expr, depth: usize) -> syn::Result<Angle> {
             let (digits, suffix) = match &lit.lit {
                 Lit::Int(i) => (i.base10_digits(), i.suffix()),
                 Lit::Float(f) => (f.base10_digits(), f.suffix()),
+                Lit::Str(_) => {
+                    return bad(
+                        "expected an angle, found a string; write it without quotes: a number of \
+                     radians, or a multiple of `pi` such as `pi/2`",
+                    )
+                }
                 _ => return bad(
                     "expected an angle: a number of radians, or a multiple of `pi` such as `pi/2`",
                 ),
@@ -100,6 +106,12 @@ fn eval_at(expr: &Expr, depth: usize) -> syn::Result<Angle> {
                 _ => bad("angles allow + - * /, parentheses, numbers and `pi`"),
             }
         }
+        // alpha = foo, alpha = FRAC_PI_2
+        Expr::Path(p) => bad(&format!(
+            "expected an angle, found `{}`; write a number of radians or a multiple of `pi` such \
+             as `pi/2`: angles are evaluated exactly at compile time and cannot name constants",
+            quote::quote!(#p).to_string().replace(' ', ""),
+        )),
         Expr::Field(_) => bad(
             "an angle must be a number (`pi/2`, `0.3`), not a run-time parameter: the derive \
              simplifies the geometry with its exact value",

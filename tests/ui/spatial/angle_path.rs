@@ -1,0 +1,9 @@
+use planar_arm::prelude::*;
+
+#[derive(SpatialArm)]
+struct Arm {
+    #[arm(dh(a = 0.4, alpha = foo))]
+    shoulder: Revolute,
+}
+
+fn main() {}
