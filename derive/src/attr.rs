@@ -178,6 +178,8 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
         parse_crate(cx, meta, out);
         return;
     }
+    // #[arm(inertia(zz = 0.1))], before the value is skipped
+    let list = meta.input.peek(syn::token::Paren);
     // Consume the value first so that parsing can go on to the next key after an error.
     let value = match meta.value().and_then(|v| {
         let start = v.cursor();
@@ -206,8 +208,22 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
                     "`{key}` is a property of the whole arm; it belongs in #[arm({key} = ...)] on the struct, not on a link field"
                 ),
             }
+        } else if key == "tool" {
+            // #[arm(tool(xyz = (0.1, 0, 0)))] on a planar arm
+            format!(
+                "`tool` is a key of #[derive(SpatialArm)]: derive `SpatialArm` for a spatial arm; \
+                 #[derive(PlanarArm)] takes {} on the struct",
+                STRUCT_KEYS
+                    .iter()
+                    .map(|k| format!("`{k}`"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
         } else if SPATIAL_KEYS.contains(&key.as_str()) {
-            // #[arm(dh(a = 0.4))] on a planar arm
+            // #[arm(dh(a = 0.4))] on a planar arm: no missing-`length` error on top
+            if key != "axis" {
+                out.mentioned.push(LENGTH);
+            }
             format!(
                 "`{key}` describes a joint of a spatial arm: derive `SpatialArm` for that; a planar \
                  arm's link takes `length`, `mass`, `inertia`, `com` and the joint keys"
@@ -238,6 +254,16 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
     }
     // #[arm(length = 0.5)]
     let Some((expr, tokens)) = value else {
+        if known == INERTIA && list {
+            // #[arm(inertia(zz = 0.1))]
+            cx.error_spanned_by(
+                path,
+                "a planar link's `inertia` is one number, its moment about the centre of mass \
+                 (kg m²), for example `inertia = 0.5`; `inertia(xx = .., ..)` is a tensor, for \
+                 #[derive(SpatialArm)]",
+            );
+            return;
+        }
         cx.error_spanned_by(
             path,
             format!("expected `{key} = <number>`, for example `{key} = 0.5`"),
