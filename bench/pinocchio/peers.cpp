@@ -1,5 +1,6 @@
-// Peer benchmark: Pinocchio (pip wheel `pin`) on the planar arms of benches/dynamics.rs and,
-// with the argument `prismatic`, on the mixed arms of benches/prismatic.rs.
+// Peer benchmark: Pinocchio (pip wheel `pin`) on the planar arms of benches/dynamics.rs,
+// with the argument `prismatic` on the mixed arms of benches/prismatic.rs, and with `spatial`
+// on the spatial arms of benches/spatial.rs (the tool pose and its Jacobian).
 //
 // Not run in CI. Build and run with bench/pinocchio/run.sh, which compiles this file three times:
 //   - "hdr-native" / "hdr-generic": header-only, every Pinocchio template instantiated in this
@@ -18,7 +19,11 @@
 // argv[2] picks the arms: `random` (the default: the RandomN arms, all six ops) or `prismatic`
 // (benches/support/prismatic_arms.rs: MixedN with prismatic joints and their all-revolute twins
 // AllRevoluteN; rnea, crba and aba, after printing their results at the first four states as
-// `# value, ARM, OP, K, ...` lines for run.sh to compare with the generated code's).
+// `# value, ARM, OP, K, ...` lines for run.sh to compare with the generated code's) or
+// `spatial` (the PUMA 560, UR5 and Franka Panda of benches/spatial.rs, built from their DH
+// parameters; one op, computeFrameJacobian of the tool frame in LOCAL_WORLD_ALIGNED, which also
+// places the frame, over 64 states with angles in [-pi, pi); its tool pose and Jacobian at the
+// first four states printed first as `# value` lines, as for `prismatic`).
 
 #include <algorithm>
 #include <chrono>
@@ -38,6 +43,7 @@
 #include <pinocchio/algorithm/regressor.hpp>
 #include <pinocchio/algorithm/rnea-derivatives.hpp>
 #include <pinocchio/algorithm/aba-derivatives.hpp>
+#include <pinocchio/algorithm/frames.hpp>
 
 #ifndef VARIANT
 #define VARIANT "unnamed"
@@ -400,9 +406,167 @@ static void prismatic_checks(const std::vector<Arm> & all)
   }
 }
 
+// ---------------------------------------------------------------------------------------------
+// Spatial arms (argv[2] == "spatial"): the arms of benches/spatial.rs from their DH parameters.
+
+// One joint's Denavit-Hartenberg row (every joint revolute, theta offsets zero).
+struct DhRow
+{
+  double a, alpha, d;
+};
+
+struct SpatialArmSpec
+{
+  const char * name;
+  bool modified; // Craig's modified (proximal) DH, else standard (distal) DH
+  std::vector<DhRow> rows;
+  Eigen::Vector3d tool; // the tool frame's offset in the last link's frame (no rotation)
+};
+
+static std::vector<SpatialArmSpec> spatial_arms()
+{
+  const double h = M_PI / 2.;
+  return {
+    // PUMA 560, Corke's standard DH (examples/puma.rs).
+    {"Puma560",
+     false,
+     {{0., h, 0.}, {0.4318, 0., 0.}, {0.0203, -h, 0.15005}, {0., h, 0.4318}, {0., -h, 0.},
+      {0., 0., 0.}},
+     Eigen::Vector3d::Zero()},
+    // UR5, Universal Robots' standard DH.
+    {"Ur5",
+     false,
+     {{0., h, 0.089159}, {-0.425, 0., 0.}, {-0.39225, 0., 0.}, {0., h, 0.10915},
+      {0., -h, 0.09465}, {0., 0., 0.0823}},
+     Eigen::Vector3d::Zero()},
+    // Franka Panda, modified DH from Franka's documentation, flange 0.107 m along z.
+    {"Panda",
+     true,
+     {{0., 0., 0.333}, {0., -h, 0.}, {0., h, 0.316}, {0.0825, h, 0.}, {-0.0825, -h, 0.384},
+      {0., h, 0.}, {0.088, h, 0.}},
+     Eigen::Vector3d(0., 0., 0.107)},
+  };
+}
+
+// Rx(alpha) with the cosine and sine of multiples of pi/2 exact (0, 1, -1), as the derive has
+// them.
+static Eigen::Matrix3d rot_x(double alpha)
+{
+  auto snap = [](double x) {
+    if (std::abs(x) < 1e-15)
+      return 0.;
+    if (std::abs(x - 1.) < 1e-15)
+      return 1.;
+    if (std::abs(x + 1.) < 1e-15)
+      return -1.;
+    return x;
+  };
+  const double c = snap(std::cos(alpha)), s = snap(std::sin(alpha));
+  Eigen::Matrix3d r;
+  r << 1., 0., 0., 0., c, -s, 0., s, c;
+  return r;
+}
+
+// The chain of JointModelRZ joints, each placed by the constant part of the DH transforms
+// between it and the previous joint, and an OP_FRAME "tool" on the last joint.
+//   standard DH: T_i = Rz(q_i) B_i, B_i = Tz(d_i) Tx(a_i) Rx(alpha_i): joint 1 at the
+//                identity, joint i at B_{i-1}, the tool at B_N Tool;
+//   modified DH: T_i = A_i Rz(q_i) C_i, A_i = Rx(alpha_i) Tx(a_i), C_i = Tz(d_i): joint i at
+//                C_{i-1} A_i (C_0 the identity), the tool at C_N Tool.
+// Massless links: the frame Jacobian does not read inertias.
+static pin::Model build_spatial(const SpatialArmSpec & arm, pin::FrameIndex & tool)
+{
+  pin::Model model;
+  pin::SE3 carry = pin::SE3::Identity(); // the constant transform left over from the last row
+  pin::JointIndex parent = 0;
+  int k = 0;
+  for (const DhRow & r : arm.rows)
+  {
+    ++k;
+    pin::SE3 placement = carry;
+    if (arm.modified)
+    {
+      placement = carry * pin::SE3(rot_x(r.alpha), Eigen::Vector3d(r.a, 0., 0.));
+      carry = pin::SE3(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0., 0., r.d));
+    }
+    else
+      carry = pin::SE3(rot_x(r.alpha), Eigen::Vector3d(r.a, 0., r.d));
+    parent = model.addJoint(parent, pin::JointModelRZ(), placement, "joint" + std::to_string(k));
+  }
+  const pin::SE3 flange = carry * pin::SE3(Eigen::Matrix3d::Identity(), arm.tool);
+  tool = model.addFrame(pin::Frame("tool", parent, flange, pin::OP_FRAME));
+  return model;
+}
+
+static std::vector<Eigen::VectorXd> spatial_states(int n)
+{
+  std::vector<Eigen::VectorXd> q;
+  for (int k = 0; k < NSTATES; ++k)
+    q.push_back(state(n, 1000 + k, M_PI));
+  return q;
+}
+
+// The tool pose (homogeneous 4x4) and the frame Jacobian at the first four states, by columns,
+// for run.sh to compare with `cargo bench --bench spatial -- --values`; then the timing.
+static void spatial_main(long calls)
+{
+  const std::vector<SpatialArmSpec> all = spatial_arms();
+  std::printf("# checks (%s)\n", VARIANT);
+  for (const SpatialArmSpec & arm : all)
+  {
+    pin::FrameIndex tool;
+    pin::Model m = build_spatial(arm, tool);
+    pin::Data d(m);
+    const int n = m.nv;
+    const std::vector<Eigen::VectorXd> qs = spatial_states(n);
+    pin::Data::Matrix6x J = pin::Data::Matrix6x::Zero(6, n);
+    auto print = [&](const char * op, int k, const double * x, int len) {
+      std::printf("# value, %s, %s, %d,", arm.name, op, k);
+      for (int i = 0; i < len; ++i)
+        std::printf(" %.17g", x[i]);
+      std::printf("\n");
+    };
+    for (int k = 0; k < 4; ++k)
+    {
+      pin::computeFrameJacobian(m, d, qs[k], tool, pin::LOCAL_WORLD_ALIGNED, J);
+      const Eigen::Matrix4d pose = d.oMf[tool].toHomogeneousMatrix();
+      print("pose", k, pose.data(), 16);
+      print("jacobian", k, J.data(), 6 * n);
+    }
+  }
+
+  std::printf("# variant=%s pinocchio=%s calls/round=%ld rounds=%d states=%d\n", VARIANT,
+              PINOCCHIO_VERSION, calls, ROUNDS, NSTATES);
+  std::printf("variant, N, op, wall ns/call, cpu ns/call\n");
+  for (const SpatialArmSpec & arm : all)
+  {
+    pin::FrameIndex tool;
+    pin::Model model = build_spatial(arm, tool);
+    pin::Data data(model);
+    const int n = model.nv;
+    const std::vector<Eigen::VectorXd> qs = spatial_states(n);
+    // Every column is written on each call (all joints support the tool): zeroed once.
+    pin::Data::Matrix6x J = pin::Data::Matrix6x::Zero(6, n);
+    const Timing t = time_op(
+      [&](int k) {
+        pin::computeFrameJacobian(model, data, qs[k], tool, pin::LOCAL_WORLD_ALIGNED, J);
+        return data.oMf[tool].translation()[0] + J(0, n - 1);
+      },
+      calls);
+    std::printf("%s, %d, %s/frame_jacobian, %.1f, %.1f\n", VARIANT, n, arm.name, t.wall, t.cpu);
+    std::fflush(stdout);
+  }
+  std::printf("# checksum %.17g\n", checksum);
+}
+
 int main(int argc, char ** argv)
 {
   const long calls = argc > 1 ? std::atol(argv[1]) : 200000;
+  if (argc > 2 && std::string(argv[2]) == "spatial")
+  {
+    spatial_main(calls);
+    return 0;
+  }
   const bool prismatic = argc > 2 && std::string(argv[2]) == "prismatic";
   const std::vector<Arm> all = prismatic ? prismatic_arms() : arms();
   if (prismatic)

@@ -4,6 +4,7 @@
 #   bash bench/pinocchio/run.sh            # 200000 calls per round
 #   CALLS=20000 bash bench/pinocchio/run.sh
 #   ARMS=prismatic VARIANTS=hdr-generic bash bench/pinocchio/run.sh
+#   ARMS=spatial VARIANTS=hdr-native bash bench/pinocchio/run.sh
 #
 # Environment:
 #   WORK        work dir (default /tmp/pinocchio_bench): venv, binaries, outputs
@@ -11,11 +12,20 @@
 #   CALLS       calls per timing round (default 200000; 21 rounds, median reported)
 #   VARIANTS    subset of "hdr-native hdr-generic lib" (default: all three)
 #   CXX         compiler (default g++)
+#   BUILD       1 (default) builds the variants; 0 reuses the binaries already in WORK
 #   ARMS        "random" (default: the RandomN arms of benches/dynamics.rs, six ops) or
 #               "prismatic" (the arms of benches/support/prismatic_arms.rs, rnea/crba/aba;
 #               before timing, Pinocchio's results at four states are compared with the
 #               generated code's from `cargo bench --bench prismatic -- --values`, which
-#               this script runs in the repository, with the caller's CARGO_TARGET_DIR)
+#               this script runs in the repository, with the caller's CARGO_TARGET_DIR) or
+#               "spatial" (the PUMA 560, UR5 and Franka Panda of benches/spatial.rs:
+#               Pinocchio's computeFrameJacobian in LOCAL_WORLD_ALIGNED against the generated
+#               tip_pose + jacobian; checked first as for "prismatic", with
+#               `cargo bench --bench spatial -- --values`; then REPS turns, each timing the
+#               generated code (`cargo bench --bench spatial -- --peer CALLS`, the same protocol
+#               as peers.cpp) and then each Pinocchio build, the ratio of each pair taken within
+#               its turn and the median of the REPS ratios reported)
+#   REPS        ARMS=spatial only: how many times the two programs take turns (default 5)
 #
 # Builds (all -O3 -DNDEBUG -std=c++17 plus the compile definitions that the wheel's
 # pinocchio::pinocchio_headers CMake target exports):
@@ -40,7 +50,8 @@ ARMS="${ARMS:-random}"
 case "$ARMS" in
   random) OUT=out ;;
   prismatic) OUT=out_prismatic ;;
-  *) echo "ARMS is random or prismatic, not $ARMS" >&2; exit 1 ;;
+  spatial) OUT=out_spatial ;;
+  *) echo "ARMS is random, prismatic or spatial, not $ARMS" >&2; exit 1 ;;
 esac
 mkdir -p "$WORK"
 
@@ -84,7 +95,8 @@ libs_of() {
 
 # 3. Build (in parallel), then run one after the other.
 pids=()
-for v in $VARIANTS; do
+if [ "${BUILD:-1}" = 1 ]; then BUILT="$VARIANTS"; else BUILT=""; fi
+for v in $BUILT; do
   echo "# build $v: $CXX $(flags_of "$v" | sed "s#$PREFIX#\$PREFIX#g") $(libs_of "$v" | sed "s#$PREFIX#\$PREFIX#g")"
   # shellcheck disable=SC2046
   "$CXX" $(flags_of "$v") $QUIET -DVARIANT="\"$v\"" "$HERE/peers.cpp" -o "$WORK/peers_$v" \
@@ -93,17 +105,19 @@ for v in $VARIANTS; do
 done
 status=0
 for p in "${pids[@]}"; do wait "$p" || status=1; done
+for v in $VARIANTS; do [ -x "$WORK/peers_$v" ] || status=1; done
 if [ "$status" != 0 ]; then
   for v in $VARIANTS; do [ -x "$WORK/peers_$v" ] || { echo "build $v failed:" >&2; tail -n 30 "$WORK/build_$v.log" >&2; }; done
   exit 1
 fi
 
 # The prismatic arms: Pinocchio's rnea, crba and aba against the generated code at the same
-# states (one call per round, so only the checks take time), to 1e-9 relative.
-if [ "$ARMS" = prismatic ]; then
-  (cd "$HERE/../.." && cargo bench -q --bench prismatic -- --values) >"$WORK/values_rust.txt"
+# states (one call per round, so only the checks take time), to 1e-9 relative. The spatial
+# arms: Pinocchio's tool pose (oMf) and frame Jacobian against tip_pose and jacobian.
+if [ "$ARMS" = prismatic ] || [ "$ARMS" = spatial ]; then
+  (cd "$HERE/../.." && cargo bench -q --bench "$ARMS" -- --values) >"$WORK/values_rust.txt"
   for v in $VARIANTS; do
-    "$WORK/peers_$v" 1 prismatic >"$WORK/values_$v.txt"
+    "$WORK/peers_$v" 1 "$ARMS" >"$WORK/values_$v.txt"
     "$PY" - "$WORK/values_rust.txt" "$WORK/values_$v.txt" "$v" <<'EOF'
 import sys
 def values(path):
@@ -123,11 +137,56 @@ for key, a in rust.items():
     worst[key[:2]] = max(worst.get(key[:2], 0.0), err)
 print(f"# agreement ({variant}), generated vs Pinocchio, largest relative difference over 4 states:")
 for (arm, op), err in worst.items():
-    print(f"#   {arm:13s} {op:5s} {err:.1e}")
+    print(f"#   {arm:13s} {op:8s} {err:.1e}")
 if max(worst.values()) > 1e-9:
     sys.exit("generated and Pinocchio disagree")
 EOF
   done
+fi
+
+# The spatial arms: the generated code and Pinocchio take turns, REPS times; each ratio is
+# taken within one turn (the load drifts less within a turn than across the run).
+if [ "$ARMS" = spatial ]; then
+  REPS="${REPS:-5}"
+  for r in $(seq 1 "$REPS"); do
+    echo "# turn $r: generated (load: $(cut -d' ' -f1-3 /proc/loadavg))"
+    (cd "$HERE/../.." && cargo bench -q --bench spatial -- --peer "$CALLS") \
+      | tee "$WORK/${OUT}_rust_$r.txt"
+    for v in $VARIANTS; do
+      echo "# turn $r: $v (load: $(cut -d' ' -f1-3 /proc/loadavg))"
+      "$WORK/peers_$v" "$CALLS" spatial | grep -v '^# value' | tee "$WORK/${OUT}_${v}_$r.txt"
+    done
+  done
+  "$PY" - "$WORK" "$OUT" "$REPS" $VARIANTS <<'EOF'
+import statistics, sys
+work, out, reps, variants = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4:]
+def rows(path):
+    got = {}
+    for line in open(path):
+        if line.startswith("#") or line.startswith("variant"):
+            continue
+        _, n, op, wall, cpu = [x.strip() for x in line.split(",")]
+        got[op.split("/")[0]] = (int(n), float(cpu), float(wall))
+    return got
+rust = [rows(f"{work}/{out}_rust_{r}.txt") for r in range(1, reps + 1)]
+pin = {v: [rows(f"{work}/{out}_{v}_{r}.txt") for r in range(1, reps + 1)] for v in variants}
+for idx, what in ((1, "thread CPU time"), (2, "wall clock")):
+    print(f"\nmedian ns/call over {reps} turns, {what}; Pinocchio / generated: the median of "
+          f"the turns' ratios (smallest-largest)\n")
+    head = "| arm | N | generated tip_pose + jacobian |"
+    for v in variants:
+        head += f" Pinocchio {v} computeFrameJacobian | Pinocchio / generated |"
+    print(head)
+    print("|---|---|---:|" + "---:|---:|" * len(variants))
+    for arm, (n, _, _) in rust[0].items():
+        line = f"| {arm} | {n} | {statistics.median(t[arm][idx] for t in rust):.1f} |"
+        for v in variants:
+            ratios = [p[arm][idx] / t[arm][idx] for p, t in zip(pin[v], rust)]
+            line += (f" {statistics.median(p[arm][idx] for p in pin[v]):.1f} |"
+                     f" {statistics.median(ratios):.2f}x ({min(ratios):.2f}-{max(ratios):.2f}) |")
+        print(line)
+EOF
+  exit 0
 fi
 
 for v in $VARIANTS; do
