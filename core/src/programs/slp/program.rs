@@ -220,8 +220,12 @@ impl Program {
         self.intern(Node::Add(a, b))
     }
 
-    /// `a - b`, folded.
+    /// `a - b`, folded; `a - a` is 0 (the program computes exact algebra: a joint whose axis
+    /// passes through the tool has no lever arm, whatever rounding would leave).
     pub fn sub(&mut self, a: Id, b: Id) -> Id {
+        if a == b {
+            return self.constant(Rational::zero());
+        }
         match (
             self.constant_value(a).cloned(),
             self.constant_value(b).cloned(),
