@@ -754,6 +754,14 @@ fn bad_targets_give_errors() {
     let solutions = arm.inverse_kinematics(&target).unwrap();
     assert!(solutions.singular(), "{:?}", &solutions[..]);
     assert!(!solutions.is_empty());
+    // Each family's representative (the solutions whose wrist is singular; the other shoulder
+    // and elbow postures reach the target with a regular wrist): the free q4 is 0, or pi for
+    // its wrist flip.
+    let families: Vec<_> = solutions.iter().filter(|s| s[4].abs() < 1e-9).collect();
+    assert_eq!(families.len(), 2, "{:?}", &solutions[..]);
+    assert!(families
+        .iter()
+        .all(|s| s[3] == 0.0 || (s[3].abs() - PI).abs() < 1e-12));
     for s in solutions.iter() {
         assert!(pose_gap(&arm.tip_pose(s), &target) < 1e-9, "{s}");
     }
@@ -868,4 +876,28 @@ fn exact_formulas_evaluate_to_the_pose_or_are_left_as_the_product() {
     assert!(OddUrdf::EXACT.to_string().contains("product"));
     let text = Puma560::EXACT.to_string();
     assert!(text.starts_with("R11 = "), "{text}");
+}
+
+/// Roll, pitch and yaw as the README documents them: nalgebra's `from_euler_angles` is URDF's
+/// `Rz(yaw) Ry(pitch) Rx(roll)` and `euler_angles` inverts it; near gimbal lock the round trip
+/// loses accuracy as the README says (at the lock itself nalgebra 0.34 can return angles of
+/// another rotation, which the README warns of and this test does not pin).
+#[test]
+fn roll_pitch_yaw_are_urdf_s_and_lose_accuracy_near_gimbal_lock() {
+    let (r, p, y): (f64, f64, f64) = (0.3, -0.7, 1.1);
+    let q = UnitQuaternion::from_euler_angles(r, p, y);
+    let urdf = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), y)
+        * UnitQuaternion::from_axis_angle(&Vector3::y_axis(), p)
+        * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), r);
+    assert!(q.angle_to(&urdf) < 1e-15);
+    let (r2, p2, y2) = q.euler_angles();
+    assert!((r2 - r).abs() < 1e-12 && (p2 - p).abs() < 1e-12 && (y2 - y).abs() < 1e-12);
+    // 1e-6 rad from the lock: the rotation survives the round trip to 1e-9.
+    let mut rng = Rng(50);
+    for _ in 0..1000 {
+        let (r, y) = (-PI + 2.0 * PI * rng.unit(), -PI + 2.0 * PI * rng.unit());
+        let near = UnitQuaternion::from_euler_angles(r, FRAC_PI_2 - 1e-6, y);
+        let (a, b, c) = near.euler_angles();
+        assert!(UnitQuaternion::from_euler_angles(a, b, c).angle_to(&near) < 1e-9);
+    }
 }
