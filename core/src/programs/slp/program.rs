@@ -40,7 +40,7 @@ pub enum Input {
 /// constants (the cosine of a twist of 0.3 rad) enter as the exact value of their `f64`, with a
 /// 2^52 denominator; folding products of twenty of them would carry thousand-bit integers
 /// through every later fold and hash for no digit the emitted `f64` keeps.
-pub const CONSTANT_BITS: u64 = 256;
+const CONSTANT_BITS: u64 = 256;
 
 /// A node of a straight-line program.
 #[derive(Clone, PartialEq, Eq, PartialOrd, Ord, Hash, Debug)]
@@ -133,7 +133,7 @@ impl Program {
         self.intern(Node::Input(input))
     }
 
-    /// An exact constant; one of more than [`CONSTANT_BITS`] bits is rounded to the nearest
+    /// An exact constant; one of more than `CONSTANT_BITS` (256) bits is rounded to the nearest
     /// `f64`, which is what the emitted code holds anyway.
     pub fn constant(&mut self, r: Rational) -> Id {
         let bits = r.numer().bits() + r.denom().bits();
