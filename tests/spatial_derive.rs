@@ -680,6 +680,25 @@ fn every_method_takes_other_scalars() {
     let g32 = arm.gravity(&q.map(|x| x as f32));
     assert!((j32.map(f64::from) - arm.jacobian(&q)).amax() < 1e-5);
     assert!((g32.map(f64::from) - arm.gravity(&q)).amax() < 1e-4);
+    // Dual numbers: the potential energy's derivatives are the gravity torques.
+    use planar_arm::Jet;
+    let dual = SVector::<Jet<6>, 6>::from_fn(|i, _| Jet::variable(q[i], i));
+    let v = arm.potential_energy(&dual);
+    let g = arm.gravity(&q);
+    for i in 0..6 {
+        assert!((v.eps[i] - g[i]).abs() < 1e-12 * (1.0 + g[i].abs()), "{i}");
+    }
+    // Four states at once: each lane is the f64 result.
+    use planar_arm::simd::{SimdValue, WideF64x4};
+    let states: [SVector<f64, 6>; 4] = core::array::from_fn(|k| q.add_scalar(0.3 * k as f64));
+    let batch = SVector::<WideF64x4, 6>::from_fn(|i, _| {
+        WideF64x4::from(core::array::from_fn::<f64, 4, _>(|k| states[k][i]))
+    });
+    let jb = arm.jacobian(&batch);
+    for (k, state) in states.iter().enumerate() {
+        let jk = jb.map(|x| x.extract(k));
+        assert!((jk - arm.jacobian(state)).amax() < 1e-12, "lane {k}");
+    }
 }
 
 /// Every closed-form solution reproduces its target, the configuration the target came from is
