@@ -272,6 +272,8 @@ pub use nalgebra;
 pub use planar_arm_core as symbolic;
 pub use planar_arm_derive::PlanarArm;
 pub use real::Real;
+/// The spatial trait and its derive (also in [`spatial`] and the prelude), named as `PlanarArm` is.
+pub use spatial::SpatialArm;
 
 /// Everything a user of a derived arm needs: `use planar_arm::prelude::*;`.
 pub mod prelude {

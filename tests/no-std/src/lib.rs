@@ -54,3 +54,33 @@ pub fn holding_gain(arm: &Arm, q: &Vector2<f64>) -> Result<SMatrix<f64, 2, 4>, A
     let (a, b) = arm.linearize(q, &Vector2::zeros(), &arm.gravity(q));
     Ok(planar_arm::lqr(&a, &b, &SMatrix::identity(), &SMatrix::identity())?.gain)
 }
+
+/// A spatial arm (the UR5's geometry) in `no_std`: its tool pose, Jacobian in `f32`, gravity,
+/// and every closed-form inverse-kinematics solution, without an allocator.
+#[derive(planar_arm::SpatialArm, Default)]
+pub struct Ur5 {
+    #[arm(dh(alpha = pi/2, d = 0.089159), mass = 3.7)]
+    pub shoulder_pan: Revolute,
+    #[arm(dh(a = -0.425), mass = 8.393, com = (0.2125, 0, 0.11336))]
+    pub shoulder_lift: Revolute,
+    #[arm(dh(a = -0.39225), mass = 2.275, com = (0.15, 0, 0.0265))]
+    pub elbow: Revolute,
+    #[arm(dh(alpha = pi/2, d = 0.10915))]
+    pub wrist1: Revolute,
+    #[arm(dh(alpha = -pi/2, d = 0.09465))]
+    pub wrist2: Revolute,
+    #[arm(dh(d = 0.0823))]
+    pub wrist3: Revolute,
+}
+
+/// How many closed-form solutions reach the pose at `q`, and the `f32` Jacobian there.
+///
+/// # Errors
+/// As `SpatialArm::inverse_kinematics`.
+pub fn spatial(arm: &Ur5, q: &SVector<f64, 6>) -> Result<(usize, SMatrix<f32, 6, 6>), ArmError> {
+    use planar_arm::spatial::SpatialArm;
+    let target = arm.tip_pose(q);
+    let solutions = arm.inverse_kinematics(&target)?;
+    let _ = arm.gravity(q);
+    Ok((solutions.len(), arm.jacobian(&q.map(|x| x as f32))))
+}
