@@ -1,5 +1,5 @@
 //! Expansion snapshots (zerocopy-derive style): the code generated for the paper's two- and
-//! three-link arms, pretty-printed with prettyplease and compared with the checked-in files in
+//! three-link arms, the polar arm and the PUMA 560 (`#[derive(SpatialArm)]`), pretty-printed with prettyplease and compared with the checked-in files in
 //! `tests/expand/`. A change to the emitted code shows up here as a readable diff; re-bless on
 //! purpose only, with `PLANAR_ARM_BLESS=1 cargo test --test expand`.
 //!
@@ -60,9 +60,77 @@ fn expand(n: usize) -> String {
     prettyplease::unparse(&file)
 }
 
+/// The PUMA 560 of `examples/puma.rs` (geometry and masses; no inertia, which the kinematics
+/// and gravity do not read), through the spatial engine and emission.
+fn expand_puma() -> String {
+    use planar_arm::symbolic::ring::parse_decimal;
+    use planar_arm::symbolic::spatial::{
+        generate_spatial, FixedAngle, SpatialArmSpec, SpatialGeometry, SpatialJointSpec,
+    };
+    use planar_arm::symbolic::Poly;
+    let number = |s: &str| {
+        Poly::constant(parse_decimal(s.trim_start_matches('-')).map_or_else(
+            || unreachable!("{s}"),
+            |r| if s.starts_with('-') { -r } else { r },
+        ))
+    };
+    let joint = |a: &str, alpha: i64, d: &str, mass: &str, com: [&str; 3]| SpatialJointSpec {
+        geometry: SpatialGeometry::Dh {
+            a: number(a),
+            alpha: FixedAngle::pi(ratio(alpha, 2)),
+            d: number(d),
+            theta: FixedAngle::zero(),
+        },
+        kind: JointKind::Revolute,
+        mass: number(mass),
+        com: com.map(number),
+        inertia: core::array::from_fn(|_| Poly::default()),
+        range: None,
+        armature: Poly::default(),
+        damping: Poly::default(),
+        frictionloss: Poly::default(),
+    };
+    let arm = SpatialArmSpec {
+        joints: vec![
+            joint("0", 1, "0", "0", ["0", "0", "0"]),
+            joint("0.4318", 0, "0", "17.4", ["-0.3638", "0.006", "0.2275"]),
+            joint(
+                "0.0203",
+                -1,
+                "0.15005",
+                "4.8",
+                ["-0.0203", "-0.0141", "0.07"],
+            ),
+            joint("0", 1, "0.4318", "0.82", ["0", "0.019", "0"]),
+            joint("0", -1, "0", "0.34", ["0", "0", "0"]),
+            joint("0", 0, "0", "0.09", ["0", "0", "0.032"]),
+        ],
+        gravity: [
+            Poly::default(),
+            Poly::default(),
+            Poly::constant(ratio(-981, 100)),
+        ],
+        tool_xyz: core::array::from_fn(|_| Poly::default()),
+        tool_rpy: core::array::from_fn(|_| FixedAngle::zero()),
+    };
+    let header = Header {
+        impl_generics: quote!(),
+        ty: quote!(Puma560),
+        where_clause: quote!(),
+        fields: ["waist", "shoulder", "elbow", "wrist1", "wrist2", "wrist3"]
+            .iter()
+            .map(|s| Ident::new(s, Span::call_site()))
+            .collect(),
+    };
+    let tokens = generate_spatial(&arm, &header).expect("the PUMA emits");
+    let file: syn::File = syn::parse2(tokens).expect("generated code parses");
+    prettyplease::unparse(&file)
+}
+
 fn snapshot(name: &str, n: usize) {
-    let actual = expand(n);
-    assert_eq!(actual, expand(n), "generation is not deterministic");
+    let make = || if n == 6 { expand_puma() } else { expand(n) };
+    let actual = make();
+    assert_eq!(actual, make(), "generation is not deterministic");
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("tests/expand")
         .join(name);
@@ -100,4 +168,9 @@ fn paper_three_links() {
 #[test]
 fn polar_arm() {
     snapshot("polar.rs", 0);
+}
+
+#[test]
+fn spatial_puma() {
+    snapshot("puma.rs", 6);
 }

@@ -1,0 +1,720 @@
+#[automatically_derived]
+#[allow(clippy::nursery)]
+impl ::planar_arm::spatial::SpatialArm<6> for Puma560 {
+    /**The tool frame in the base frame: rotation R and position p.
+
+```text
+R11 = 1/16 cos(q1 - q2 - q3 - q4 - q5 - q6) + 1/16 cos(q1 - q2 - q3 - q4 - q5 + q6) + 1/8 cos(q1 - q2 - q3 - q4 - q6) - 1/8 cos(q1 - q2 - q3 - q4 + q6) + 1/16 cos(q1 - q2 - q3 - q4 + q5 - q6) + 1/16 cos(q1 - q2 - q3 - q4 + q5 + q6) + 1/8 cos(q1 - q2 - q3 - q5 - q6) + 1/8 cos(q1 - q2 - q3 - q5 + q6) - 1/8 cos(q1 - q2 - q3 + q5 - q6) - 1/8 cos(q1 - q2 - q3 + q5 + q6) + 1/16 cos(q1 - q2 - q3 + q4 - q5 - q6) + 1/16 cos(q1 - q2 - q3 + q4 - q5 + q6) - 1/8 cos(q1 - q2 - q3 + q4 - q6) + 1/8 cos(q1 - q2 - q3 + q4 + q6) + 1/16 cos(q1 - q2 - q3 + q4 + q5 - q6) + 1/16 cos(q1 - q2 - q3 + q4 + q5 + q6) - 1/8 cos(q1 - q4 - q5 - q6) - 1/8 cos(q1 - q4 - q5 + q6) - 1/4 cos(q1 - q4 - q6) + 1/4 cos(q1 - q4 + q6) - 1/8 cos(q1 - q4 + q5 - q6) - 1/8 cos(q1 - q4 + q5 + q6) + 1/8 cos(q1 + q4 - q5 - q6) + 1/8 cos(q1 + q4 - q5 + q6) - 1/4 cos(q1 + q4 - q6) + 1/4 cos(q1 + q4 + q6) + 1/8 cos(q1 + q4 + q5 - q6) + 1/8 cos(q1 + q4 + q5 + q6) + 1/16 cos(q1 + q2 + q3 - q4 - q5 - q6) + 1/16 cos(q1 + q2 + q3 - q4 - q5 + q6) + 1/8 cos(q1 + q2 + q3 - q4 - q6) - 1/8 cos(q1 + q2 + q3 - q4 + q6) + 1/16 cos(q1 + q2 + q3 - q4 + q5 - q6) + 1/16 cos(q1 + q2 + q3 - q4 + q5 + q6) - 1/8 cos(q1 + q2 + q3 - q5 - q6) - 1/8 cos(q1 + q2 + q3 - q5 + q6) + 1/8 cos(q1 + q2 + q3 + q5 - q6) + 1/8 cos(q1 + q2 + q3 + q5 + q6) + 1/16 cos(q1 + q2 + q3 + q4 - q5 - q6) + 1/16 cos(q1 + q2 + q3 + q4 - q5 + q6) - 1/8 cos(q1 + q2 + q3 + q4 - q6) + 1/8 cos(q1 + q2 + q3 + q4 + q6) + 1/16 cos(q1 + q2 + q3 + q4 + q5 - q6) + 1/16 c123456
+R12 = 1/16 sin(q1 - q2 - q3 - q4 - q5 - q6) - 1/16 sin(q1 - q2 - q3 - q4 - q5 + q6) + 1/8 sin(q1 - q2 - q3 - q4 - q6) + 1/8 sin(q1 - q2 - q3 - q4 + q6) + 1/16 sin(q1 - q2 - q3 - q4 + q5 - q6) - 1/16 sin(q1 - q2 - q3 - q4 + q5 + q6) + 1/8 sin(q1 - q2 - q3 - q5 - q6) - 1/8 sin(q1 - q2 - q3 - q5 + q6) - 1/8 sin(q1 - q2 - q3 + q5 - q6) + 1/8 sin(q1 - q2 - q3 + q5 + q6) + 1/16 sin(q1 - q2 - q3 + q4 - q5 - q6) - 1/16 sin(q1 - q2 - q3 + q4 - q5 + q6) - 1/8 sin(q1 - q2 - q3 + q4 - q6) - 1/8 sin(q1 - q2 - q3 + q4 + q6) + 1/16 sin(q1 - q2 - q3 + q4 + q5 - q6) - 1/16 sin(q1 - q2 - q3 + q4 + q5 + q6) - 1/8 sin(q1 - q4 - q5 - q6) + 1/8 sin(q1 - q4 - q5 + q6) - 1/4 sin(q1 - q4 - q6) - 1/4 sin(q1 - q4 + q6) - 1/8 sin(q1 - q4 + q5 - q6) + 1/8 sin(q1 - q4 + q5 + q6) + 1/8 sin(q1 + q4 - q5 - q6) - 1/8 sin(q1 + q4 - q5 + q6) - 1/4 sin(q1 + q4 - q6) - 1/4 sin(q1 + q4 + q6) + 1/8 sin(q1 + q4 + q5 - q6) - 1/8 sin(q1 + q4 + q5 + q6) + 1/16 sin(q1 + q2 + q3 - q4 - q5 - q6) - 1/16 sin(q1 + q2 + q3 - q4 - q5 + q6) + 1/8 sin(q1 + q2 + q3 - q4 - q6) + 1/8 sin(q1 + q2 + q3 - q4 + q6) + 1/16 sin(q1 + q2 + q3 - q4 + q5 - q6) - 1/16 sin(q1 + q2 + q3 - q4 + q5 + q6) - 1/8 sin(q1 + q2 + q3 - q5 - q6) + 1/8 sin(q1 + q2 + q3 - q5 + q6) + 1/8 sin(q1 + q2 + q3 + q5 - q6) - 1/8 sin(q1 + q2 + q3 + q5 + q6) + 1/16 sin(q1 + q2 + q3 + q4 - q5 - q6) - 1/16 sin(q1 + q2 + q3 + q4 - q5 + q6) - 1/8 sin(q1 + q2 + q3 + q4 - q6) - 1/8 sin(q1 + q2 + q3 + q4 + q6) + 1/16 sin(q1 + q2 + q3 + q4 + q5 - q6) - 1/16 s123456
+R13 = 1/8 sin(q1 - q2 - q3 - q4 - q5) - 1/8 sin(q1 - q2 - q3 - q4 + q5) + 1/4 sin(q1 - q2 - q3 - q5) + 1/4 sin(q1 - q2 - q3 + q5) + 1/8 sin(q1 - q2 - q3 + q4 - q5) - 1/8 sin(q1 - q2 - q3 + q4 + q5) - 1/4 sin(q1 - q4 - q5) + 1/4 sin(q1 - q4 + q5) + 1/4 sin(q1 + q4 - q5) - 1/4 sin(q1 + q4 + q5) + 1/8 sin(q1 + q2 + q3 - q4 - q5) - 1/8 sin(q1 + q2 + q3 - q4 + q5) - 1/4 sin(q1 + q2 + q3 - q5) - 1/4 sin(q1 + q2 + q3 + q5) + 1/8 sin(q1 + q2 + q3 + q4 - q5) - 1/8 s12345
+p1 = 2159/10000 cos(q1 - q2) + 2159/10000 c12 + 203/20000 cos(q1 - q2 - q3) + 203/20000 c123 + 3001/20000 s1 + 2159/10000 sin(q1 - q2 - q3) - 2159/10000 s123
+R21 = 1/16 sin(q1 - q2 - q3 - q4 - q5 - q6) + 1/16 sin(q1 - q2 - q3 - q4 - q5 + q6) + 1/8 sin(q1 - q2 - q3 - q4 - q6) - 1/8 sin(q1 - q2 - q3 - q4 + q6) + 1/16 sin(q1 - q2 - q3 - q4 + q5 - q6) + 1/16 sin(q1 - q2 - q3 - q4 + q5 + q6) + 1/8 sin(q1 - q2 - q3 - q5 - q6) + 1/8 sin(q1 - q2 - q3 - q5 + q6) - 1/8 sin(q1 - q2 - q3 + q5 - q6) - 1/8 sin(q1 - q2 - q3 + q5 + q6) + 1/16 sin(q1 - q2 - q3 + q4 - q5 - q6) + 1/16 sin(q1 - q2 - q3 + q4 - q5 + q6) - 1/8 sin(q1 - q2 - q3 + q4 - q6) + 1/8 sin(q1 - q2 - q3 + q4 + q6) + 1/16 sin(q1 - q2 - q3 + q4 + q5 - q6) + 1/16 sin(q1 - q2 - q3 + q4 + q5 + q6) - 1/8 sin(q1 - q4 - q5 - q6) - 1/8 sin(q1 - q4 - q5 + q6) - 1/4 sin(q1 - q4 - q6) + 1/4 sin(q1 - q4 + q6) - 1/8 sin(q1 - q4 + q5 - q6) - 1/8 sin(q1 - q4 + q5 + q6) + 1/8 sin(q1 + q4 - q5 - q6) + 1/8 sin(q1 + q4 - q5 + q6) - 1/4 sin(q1 + q4 - q6) + 1/4 sin(q1 + q4 + q6) + 1/8 sin(q1 + q4 + q5 - q6) + 1/8 sin(q1 + q4 + q5 + q6) + 1/16 sin(q1 + q2 + q3 - q4 - q5 - q6) + 1/16 sin(q1 + q2 + q3 - q4 - q5 + q6) + 1/8 sin(q1 + q2 + q3 - q4 - q6) - 1/8 sin(q1 + q2 + q3 - q4 + q6) + 1/16 sin(q1 + q2 + q3 - q4 + q5 - q6) + 1/16 sin(q1 + q2 + q3 - q4 + q5 + q6) - 1/8 sin(q1 + q2 + q3 - q5 - q6) - 1/8 sin(q1 + q2 + q3 - q5 + q6) + 1/8 sin(q1 + q2 + q3 + q5 - q6) + 1/8 sin(q1 + q2 + q3 + q5 + q6) + 1/16 sin(q1 + q2 + q3 + q4 - q5 - q6) + 1/16 sin(q1 + q2 + q3 + q4 - q5 + q6) - 1/8 sin(q1 + q2 + q3 + q4 - q6) + 1/8 sin(q1 + q2 + q3 + q4 + q6) + 1/16 sin(q1 + q2 + q3 + q4 + q5 - q6) + 1/16 s123456
+R22 = -1/16 cos(q1 - q2 - q3 - q4 - q5 - q6) + 1/16 cos(q1 - q2 - q3 - q4 - q5 + q6) - 1/8 cos(q1 - q2 - q3 - q4 - q6) - 1/8 cos(q1 - q2 - q3 - q4 + q6) - 1/16 cos(q1 - q2 - q3 - q4 + q5 - q6) + 1/16 cos(q1 - q2 - q3 - q4 + q5 + q6) - 1/8 cos(q1 - q2 - q3 - q5 - q6) + 1/8 cos(q1 - q2 - q3 - q5 + q6) + 1/8 cos(q1 - q2 - q3 + q5 - q6) - 1/8 cos(q1 - q2 - q3 + q5 + q6) - 1/16 cos(q1 - q2 - q3 + q4 - q5 - q6) + 1/16 cos(q1 - q2 - q3 + q4 - q5 + q6) + 1/8 cos(q1 - q2 - q3 + q4 - q6) + 1/8 cos(q1 - q2 - q3 + q4 + q6) - 1/16 cos(q1 - q2 - q3 + q4 + q5 - q6) + 1/16 cos(q1 - q2 - q3 + q4 + q5 + q6) + 1/8 cos(q1 - q4 - q5 - q6) - 1/8 cos(q1 - q4 - q5 + q6) + 1/4 cos(q1 - q4 - q6) + 1/4 cos(q1 - q4 + q6) + 1/8 cos(q1 - q4 + q5 - q6) - 1/8 cos(q1 - q4 + q5 + q6) - 1/8 cos(q1 + q4 - q5 - q6) + 1/8 cos(q1 + q4 - q5 + q6) + 1/4 cos(q1 + q4 - q6) + 1/4 cos(q1 + q4 + q6) - 1/8 cos(q1 + q4 + q5 - q6) + 1/8 cos(q1 + q4 + q5 + q6) - 1/16 cos(q1 + q2 + q3 - q4 - q5 - q6) + 1/16 cos(q1 + q2 + q3 - q4 - q5 + q6) - 1/8 cos(q1 + q2 + q3 - q4 - q6) - 1/8 cos(q1 + q2 + q3 - q4 + q6) - 1/16 cos(q1 + q2 + q3 - q4 + q5 - q6) + 1/16 cos(q1 + q2 + q3 - q4 + q5 + q6) + 1/8 cos(q1 + q2 + q3 - q5 - q6) - 1/8 cos(q1 + q2 + q3 - q5 + q6) - 1/8 cos(q1 + q2 + q3 + q5 - q6) + 1/8 cos(q1 + q2 + q3 + q5 + q6) - 1/16 cos(q1 + q2 + q3 + q4 - q5 - q6) + 1/16 cos(q1 + q2 + q3 + q4 - q5 + q6) + 1/8 cos(q1 + q2 + q3 + q4 - q6) + 1/8 cos(q1 + q2 + q3 + q4 + q6) - 1/16 cos(q1 + q2 + q3 + q4 + q5 - q6) + 1/16 c123456
+R23 = -1/8 cos(q1 - q2 - q3 - q4 - q5) + 1/8 cos(q1 - q2 - q3 - q4 + q5) - 1/4 cos(q1 - q2 - q3 - q5) - 1/4 cos(q1 - q2 - q3 + q5) - 1/8 cos(q1 - q2 - q3 + q4 - q5) + 1/8 cos(q1 - q2 - q3 + q4 + q5) + 1/4 cos(q1 - q4 - q5) - 1/4 cos(q1 - q4 + q5) - 1/4 cos(q1 + q4 - q5) + 1/4 cos(q1 + q4 + q5) - 1/8 cos(q1 + q2 + q3 - q4 - q5) + 1/8 cos(q1 + q2 + q3 - q4 + q5) + 1/4 cos(q1 + q2 + q3 - q5) + 1/4 cos(q1 + q2 + q3 + q5) - 1/8 cos(q1 + q2 + q3 + q4 - q5) + 1/8 c12345
+p2 = -3001/20000 c1 - 2159/10000 cos(q1 - q2 - q3) + 2159/10000 c123 + 2159/10000 sin(q1 - q2) + 2159/10000 s12 + 203/20000 sin(q1 - q2 - q3) + 203/20000 s123
+R31 = 1/8 sin(q2 + q3 - q4 - q5 - q6) + 1/8 sin(q2 + q3 - q4 - q5 + q6) + 1/4 sin(q2 + q3 - q4 - q6) - 1/4 sin(q2 + q3 - q4 + q6) + 1/8 sin(q2 + q3 - q4 + q5 - q6) + 1/8 sin(q2 + q3 - q4 + q5 + q6) - 1/4 sin(q2 + q3 - q5 - q6) - 1/4 sin(q2 + q3 - q5 + q6) + 1/4 sin(q2 + q3 + q5 - q6) + 1/4 sin(q2 + q3 + q5 + q6) + 1/8 sin(q2 + q3 + q4 - q5 - q6) + 1/8 sin(q2 + q3 + q4 - q5 + q6) - 1/4 sin(q2 + q3 + q4 - q6) + 1/4 sin(q2 + q3 + q4 + q6) + 1/8 sin(q2 + q3 + q4 + q5 - q6) + 1/8 s23456
+R32 = -1/8 cos(q2 + q3 - q4 - q5 - q6) + 1/8 cos(q2 + q3 - q4 - q5 + q6) - 1/4 cos(q2 + q3 - q4 - q6) - 1/4 cos(q2 + q3 - q4 + q6) - 1/8 cos(q2 + q3 - q4 + q5 - q6) + 1/8 cos(q2 + q3 - q4 + q5 + q6) + 1/4 cos(q2 + q3 - q5 - q6) - 1/4 cos(q2 + q3 - q5 + q6) - 1/4 cos(q2 + q3 + q5 - q6) + 1/4 cos(q2 + q3 + q5 + q6) - 1/8 cos(q2 + q3 + q4 - q5 - q6) + 1/8 cos(q2 + q3 + q4 - q5 + q6) + 1/4 cos(q2 + q3 + q4 - q6) + 1/4 cos(q2 + q3 + q4 + q6) - 1/8 cos(q2 + q3 + q4 + q5 - q6) + 1/8 c23456
+R33 = -1/4 cos(q2 + q3 - q4 - q5) + 1/4 cos(q2 + q3 - q4 + q5) + 1/2 cos(q2 + q3 - q5) + 1/2 cos(q2 + q3 + q5) - 1/4 cos(q2 + q3 + q4 - q5) + 1/4 c2345
+p3 = 2159/5000 c23 + 2159/5000 s2 + 203/10000 s23
+```
+
+
+the joints' transformations multiplied out base to tip
+
+Cost: 61 multiplications, 37 additions, 0 divisions, 6 sin_cos pairs.*/
+    #[inline]
+    fn tip_pose(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+    ) -> ::planar_arm::nalgebra::Isometry3<::core::primitive::f64> {
+        let _ = (
+            &self.waist,
+            &self.shoulder,
+            &self.elbow,
+            &self.wrist1,
+            &self.wrist2,
+            &self.wrist3,
+        );
+        let [__q1, __q2, __q3, __q4, __q5, __q6] = ::planar_arm::__private::unpack(__q);
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3), (__s4, __c4), (__s5, __c5),
+        (__s6, __c6)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+            __q4,
+            __q5,
+            __q6,
+        ]);
+        let __t1 = -__s1;
+        let __t2 = -__s2;
+        let __t3 = __c1 * __c2;
+        let __t4 = __c1 * __t2;
+        let __t5 = __s1 * __c2;
+        let __t6 = __s1 * __t2;
+        let __t7 = -__s3;
+        let __t8 = __t3 * __c3 + __t4 * __s3;
+        let __t9 = __t3 * __t7 + __t4 * __c3;
+        let __t10 = __t5 * __c3 + __t6 * __s3;
+        let __t11 = __t5 * __t7 + __t6 * __c3;
+        let __t12 = __s2 * __c3 + __c2 * __s3;
+        let __t13 = __s2 * __t7 + __c2 * __c3;
+        let __t14 = -__s4;
+        let __t15 = __t8 * __c4 + __t1 * __s4;
+        let __t16 = __t8 * __t14 + __t1 * __c4;
+        let __t17 = __t10 * __c4 + __c1 * __s4;
+        let __t18 = __t10 * __t14 + __c1 * __c4;
+        let __t19 = __t12 * __c4;
+        let __t20 = __t12 * __t14;
+        let __p1 = (2159.0 / 5000.0) * __t3 + (203.0 / 10000.0) * __t8
+            + (3001.0 / 20000.0) * __s1 + (2159.0 / 5000.0) * __t9;
+        let __p2 = (2159.0 / 5000.0) * __t5 + (203.0 / 10000.0) * __t10
+            + (3001.0 / 20000.0) * (-__c1) + (2159.0 / 5000.0) * __t11;
+        let __p3 = (2159.0 / 5000.0) * __s2 + (203.0 / 10000.0) * __t12
+            + (2159.0 / 5000.0) * __t13;
+        let __t21 = -__s5;
+        let __t22 = __t15 * __c5 + __t9 * __s5;
+        let __r13 = __t15 * __t21 + __t9 * __c5;
+        let __t23 = __t17 * __c5 + __t11 * __s5;
+        let __r23 = __t17 * __t21 + __t11 * __c5;
+        let __t24 = __t19 * __c5 + __t13 * __s5;
+        let __r33 = __t19 * __t21 + __t13 * __c5;
+        let __t25 = -__s6;
+        let __r11 = __t22 * __c6 + __t16 * __s6;
+        let __r12 = __t22 * __t25 + __t16 * __c6;
+        let __r21 = __t23 * __c6 + __t18 * __s6;
+        let __r22 = __t23 * __t25 + __t18 * __c6;
+        let __r31 = __t24 * __c6 + __t20 * __s6;
+        let __r32 = __t24 * __t25 + __t20 * __c6;
+        ::planar_arm::__private::isometry3(
+            [[__r11, __r12, __r13], [__r21, __r22, __r23], [__r31, __r32, __r33]],
+            [__p1, __p2, __p3],
+        )
+    }
+    /**Each link's frame in the base frame, base first.
+
+the joints' transformations multiplied out base to tip
+
+Cost: 61 multiplications, 40 additions, 0 divisions, 6 sin_cos pairs.*/
+    #[inline]
+    fn link_poses(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+    ) -> [::planar_arm::nalgebra::Isometry3<::core::primitive::f64>; 6] {
+        let [__q1, __q2, __q3, __q4, __q5, __q6] = ::planar_arm::__private::unpack(__q);
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3), (__s4, __c4), (__s5, __c5),
+        (__s6, __c6)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+            __q4,
+            __q5,
+            __q6,
+        ]);
+        let __l3r12 = -__s1;
+        let __l1r23 = -__c1;
+        let __t1 = -__s2;
+        let __l2r11 = __c1 * __c2;
+        let __l2r12 = __c1 * __t1;
+        let __l2r21 = __s1 * __c2;
+        let __l2r22 = __s1 * __t1;
+        let __l2p1 = (2159.0 / 5000.0) * __l2r11;
+        let __l2p2 = (2159.0 / 5000.0) * __l2r21;
+        let __l2p3 = (2159.0 / 5000.0) * __s2;
+        let __t2 = -__s3;
+        let __l3r11 = __l2r11 * __c3 + __l2r12 * __s3;
+        let __l3r13 = __l2r11 * __t2 + __l2r12 * __c3;
+        let __l3r21 = __l2r21 * __c3 + __l2r22 * __s3;
+        let __l3r23 = __l2r21 * __t2 + __l2r22 * __c3;
+        let __l3r31 = __s2 * __c3 + __c2 * __s3;
+        let __l3r33 = __s2 * __t2 + __c2 * __c3;
+        let __l3p1 = __l2p1 + (203.0 / 10000.0) * __l3r11 + (3001.0 / 20000.0) * __s1;
+        let __l3p2 = __l2p2 + (203.0 / 10000.0) * __l3r21 + (3001.0 / 20000.0) * __l1r23;
+        let __l3p3 = __l2p3 + (203.0 / 10000.0) * __l3r31;
+        let __t3 = -__s4;
+        let __l4r11 = __l3r11 * __c4 + __l3r12 * __s4;
+        let __l5r12 = __l3r11 * __t3 + __l3r12 * __c4;
+        let __l4r21 = __l3r21 * __c4 + __c1 * __s4;
+        let __l5r22 = __l3r21 * __t3 + __c1 * __c4;
+        let __l4r31 = __l3r31 * __c4;
+        let __l5r32 = __l3r31 * __t3;
+        let __l4r13 = -__l5r12;
+        let __l4r23 = -__l5r22;
+        let __l4r33 = -__l5r32;
+        let __l4p1 = __l3p1 + (2159.0 / 5000.0) * __l3r13;
+        let __l4p2 = __l3p2 + (2159.0 / 5000.0) * __l3r23;
+        let __l4p3 = __l3p3 + (2159.0 / 5000.0) * __l3r33;
+        let __t4 = -__s5;
+        let __l5r11 = __l4r11 * __c5 + __l3r13 * __s5;
+        let __l5r13 = __l4r11 * __t4 + __l3r13 * __c5;
+        let __l5r21 = __l4r21 * __c5 + __l3r23 * __s5;
+        let __l5r23 = __l4r21 * __t4 + __l3r23 * __c5;
+        let __l5r31 = __l4r31 * __c5 + __l3r33 * __s5;
+        let __l5r33 = __l4r31 * __t4 + __l3r33 * __c5;
+        let __t5 = -__s6;
+        let __l6r11 = __l5r11 * __c6 + __l5r12 * __s6;
+        let __l6r12 = __l5r11 * __t5 + __l5r12 * __c6;
+        let __l6r21 = __l5r21 * __c6 + __l5r22 * __s6;
+        let __l6r22 = __l5r21 * __t5 + __l5r22 * __c6;
+        let __l6r31 = __l5r31 * __c6 + __l5r32 * __s6;
+        let __l6r32 = __l5r31 * __t5 + __l5r32 * __c6;
+        let __l1r12 = 0.0;
+        let __l1r32 = 1.0;
+        [
+            ::planar_arm::__private::isometry3(
+                [
+                    [__c1, __l1r12, __s1],
+                    [__s1, __l1r12, __l1r23],
+                    [__l1r12, __l1r32, __l1r12],
+                ],
+                [__l1r12, __l1r12, __l1r12],
+            ),
+            ::planar_arm::__private::isometry3(
+                [
+                    [__l2r11, __l2r12, __s1],
+                    [__l2r21, __l2r22, __l1r23],
+                    [__s2, __c2, __l1r12],
+                ],
+                [__l2p1, __l2p2, __l2p3],
+            ),
+            ::planar_arm::__private::isometry3(
+                [
+                    [__l3r11, __l3r12, __l3r13],
+                    [__l3r21, __c1, __l3r23],
+                    [__l3r31, __l1r12, __l3r33],
+                ],
+                [__l3p1, __l3p2, __l3p3],
+            ),
+            ::planar_arm::__private::isometry3(
+                [
+                    [__l4r11, __l3r13, __l4r13],
+                    [__l4r21, __l3r23, __l4r23],
+                    [__l4r31, __l3r33, __l4r33],
+                ],
+                [__l4p1, __l4p2, __l4p3],
+            ),
+            ::planar_arm::__private::isometry3(
+                [
+                    [__l5r11, __l5r12, __l5r13],
+                    [__l5r21, __l5r22, __l5r23],
+                    [__l5r31, __l5r32, __l5r33],
+                ],
+                [__l4p1, __l4p2, __l4p3],
+            ),
+            ::planar_arm::__private::isometry3(
+                [
+                    [__l6r11, __l6r12, __l5r13],
+                    [__l6r21, __l6r22, __l5r23],
+                    [__l6r31, __l6r32, __l5r33],
+                ],
+                [__l4p1, __l4p2, __l4p3],
+            ),
+        ]
+    }
+    /**The geometric Jacobian of the tool frame: rows 0-2 the linear velocity of its origin, rows 3-5 the angular velocity, both in base coordinates (Pinocchio's `LOCAL_WORLD_ALIGNED`).
+
+each joint's axis from the product of transformations, crossed with the arm to the tool origin
+
+Cost: 57 multiplications, 44 additions, 0 divisions, 5 sin_cos pairs.*/
+    #[inline]
+    fn jacobian<__T: ::planar_arm::Real>(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<__T, 6>,
+    ) -> ::planar_arm::nalgebra::SMatrix<__T, 6, 6> {
+        let [__q1, __q2, __q3, __q4, __q5, _] = ::planar_arm::__private::unpack(__q);
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3), (__s4, __c4), (__s5, __c5)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+            __q4,
+            __q5,
+        ]);
+        let __t1 = -__s1;
+        let __j52 = -__c1;
+        let __t2 = -__s2;
+        let __t3 = __c1 * __c2;
+        let __t4 = __c1 * __t2;
+        let __t5 = __s1 * __c2;
+        let __t6 = __s1 * __t2;
+        let __t7 = __T::from_f64(2159.0 / 5000.0) * __t3;
+        let __t8 = __T::from_f64(2159.0 / 5000.0) * __t5;
+        let __t9 = __T::from_f64(2159.0 / 5000.0) * __s2;
+        let __t10 = -__s3;
+        let __t11 = __t3 * __c3 + __t4 * __s3;
+        let __j44 = __t3 * __t10 + __t4 * __c3;
+        let __t12 = __t5 * __c3 + __t6 * __s3;
+        let __j54 = __t5 * __t10 + __t6 * __c3;
+        let __t13 = __s2 * __c3 + __c2 * __s3;
+        let __j64 = __s2 * __t10 + __c2 * __c3;
+        let __t14 = __t7 + __T::from_f64(203.0 / 10000.0) * __t11
+            + __T::from_f64(3001.0 / 20000.0) * __s1;
+        let __t15 = __t8 + __T::from_f64(203.0 / 10000.0) * __t12
+            + __T::from_f64(3001.0 / 20000.0) * __j52;
+        let __t16 = __t9 + __T::from_f64(203.0 / 10000.0) * __t13;
+        let __t17 = -__s4;
+        let __j45 = -(__t11 * __t17 + __t1 * __c4);
+        let __j55 = -(__t12 * __t17 + __c1 * __c4);
+        let __j65 = -(__t13 * __t17);
+        let __j21 = __t14 + __T::from_f64(2159.0 / 5000.0) * __j44;
+        let __t18 = __t15 + __T::from_f64(2159.0 / 5000.0) * __j54;
+        let __t19 = __t16 + __T::from_f64(2159.0 / 5000.0) * __j64;
+        let __t20 = -__s5;
+        let __j46 = (__t11 * __c4 + __t1 * __s4) * __t20 + __j44 * __c5;
+        let __j56 = (__t12 * __c4 + __c1 * __s4) * __t20 + __j54 * __c5;
+        let __j66 = __t13 * __c4 * __t20 + __j64 * __c5;
+        let __j11 = -__t18;
+        let __j12 = __j52 * __t19;
+        let __j22 = -(__s1 * __t19);
+        let __j32 = __s1 * __t18 - __j52 * __j21;
+        let __t21 = __t19 - __t9;
+        let __j13 = __j52 * __t21;
+        let __j23 = -(__s1 * __t21);
+        let __j33 = __s1 * (__t18 - __t8) - __j52 * (__j21 - __t7);
+        let __t22 = __j21 - __t14;
+        let __t23 = __t18 - __t15;
+        let __t24 = __t19 - __t16;
+        let __j14 = __j54 * __t24 - __j64 * __t23;
+        let __j24 = __j64 * __t22 - __j44 * __t24;
+        let __j34 = __j44 * __t23 - __j54 * __t22;
+        let __j15 = __T::from_f64(0.0);
+        let __j61 = __T::from_f64(1.0);
+        ::planar_arm::__private::matrix([
+            [__j11, __j12, __j13, __j14, __j15, __j15],
+            [__j21, __j22, __j23, __j24, __j15, __j15],
+            [__j15, __j32, __j33, __j34, __j15, __j15],
+            [__j15, __s1, __s1, __j44, __j45, __j46],
+            [__j15, __j52, __j52, __j54, __j55, __j56],
+            [__j61, __j15, __j15, __j64, __j65, __j66],
+        ])
+    }
+    /**The gravity torques g = dV/dq (forces for slides) that hold the arm.
+
+```text
+g1 = 0
+g2 = 372347379/10000000 c2 + 199143/800000 c23 - 256041/250000 s2 - 87439473/10000000 s23 + 8829/1250000 sin(q2 + q3 - q4 - q5) - 8829/1250000 sin(q2 + q3 - q4 + q5) - 8829/625000 sin(q2 + q3 - q5) - 8829/625000 sin(q2 + q3 + q5) + 8829/1250000 sin(q2 + q3 + q4 - q5) - 8829/1250000 s2345
+g3 = 199143/800000 c23 - 87439473/10000000 s23 + 8829/1250000 sin(q2 + q3 - q4 - q5) - 8829/1250000 sin(q2 + q3 - q4 + q5) - 8829/625000 sin(q2 + q3 - q5) - 8829/625000 sin(q2 + q3 + q5) + 8829/1250000 sin(q2 + q3 + q4 - q5) - 8829/1250000 s2345
+g4 = -8829/1250000 sin(q2 + q3 - q4 - q5) + 8829/1250000 sin(q2 + q3 - q4 + q5) + 8829/1250000 sin(q2 + q3 + q4 - q5) - 8829/1250000 s2345
+g5 = -8829/1250000 sin(q2 + q3 - q4 - q5) - 8829/1250000 sin(q2 + q3 - q4 + q5) + 8829/625000 sin(q2 + q3 - q5) - 8829/625000 sin(q2 + q3 + q5) - 8829/1250000 sin(q2 + q3 + q4 - q5) - 8829/1250000 s2345
+g6 = 0
+```
+
+
+Cost: 24 multiplications, 36 additions, 0 divisions, 4 sin_cos pairs.*/
+    #[inline]
+    fn gravity<__T: ::planar_arm::Real>(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<__T, 6>,
+    ) -> ::planar_arm::nalgebra::SVector<__T, 6> {
+        let [_, __q2, __q3, __q4, __q5, _] = ::planar_arm::__private::unpack(__q);
+        let [(__s2, __c2), (__s3, __c3), (__s4, __c4), (__s5, __c5)] = ::planar_arm::__private::sin_cos([
+            __q2,
+            __q3,
+            __q4,
+            __q5,
+        ]);
+        let __c23 = __c2 * __c3 - __s2 * __s3;
+        let __s23 = __s2 * __c3 + __c2 * __s3;
+        let __t1 = __T::from_f64(199143.0 / 800000.0) * __c23;
+        let __t2 = __T::from_f64(87439473.0 / 10000000.0) * __s23;
+        let __t3 = __c23 * __c4;
+        let __t4 = __s23 * __s4;
+        let __t5 = __s23 * __c4;
+        let __t6 = __c23 * __s4;
+        let __c2p3m4 = __t3 + __t4;
+        let __s2p3m4 = __t5 - __t6;
+        let __t7 = __s2p3m4 * __c5;
+        let __t8 = __c2p3m4 * __s5;
+        let __s2p3m4m5 = __t7 - __t8;
+        let __t9 = __T::from_f64(8829.0 / 1250000.0) * __s2p3m4m5;
+        let __s2p3m4p5 = __t7 + __t8;
+        let __t10 = __T::from_f64(8829.0 / 1250000.0) * __s2p3m4p5;
+        let __t11 = __s23 * __c5;
+        let __t12 = __c23 * __s5;
+        let __s2p3m5 = __t11 - __t12;
+        let __t13 = __T::from_f64(8829.0 / 625000.0) * __s2p3m5;
+        let __s2p3p5 = __t11 + __t12;
+        let __t14 = __T::from_f64(8829.0 / 625000.0) * __s2p3p5;
+        let __c234 = __t3 - __t4;
+        let __s234 = __t5 + __t6;
+        let __t15 = __c5 * __s234;
+        let __t16 = __s5 * __c234;
+        let __s2p3p4m5 = __t15 - __t16;
+        let __t17 = __T::from_f64(8829.0 / 1250000.0) * __s2p3p4m5;
+        let __s2345 = __t15 + __t16;
+        let __t18 = __T::from_f64(8829.0 / 1250000.0) * __s2345;
+        let __g2 = __T::from_f64(372347379.0 / 10000000.0) * __c2 + __t1 + __t9 + __t17
+            - (__t10 + __T::from_f64(256041.0 / 250000.0) * __s2 + __t2 + __t18 + __t13
+                + __t14);
+        let __g3 = __t17 + __t1 + __t9 - (__t13 + __t2 + __t10 + __t14 + __t18);
+        let __g4 = __t10 + __t17 - (__t9 + __t18);
+        let __g5 = __t13 - (__t14 + __t9 + __t10 + __t17 + __t18);
+        let __g1 = __T::from_f64(0.0);
+        ::planar_arm::__private::vector([__g1, __g2, __g3, __g4, __g5, __g1])
+    }
+    /**The potential energy, zero at the base origin.
+
+```text
+V = 256041/250000 c2 + 87439473/10000000 c23 - 8829/1250000 cos(q2 + q3 - q4 - q5) + 8829/1250000 cos(q2 + q3 - q4 + q5) + 8829/625000 cos(q2 + q3 - q5) + 8829/625000 cos(q2 + q3 + q5) - 8829/1250000 cos(q2 + q3 + q4 - q5) + 8829/1250000 c2345 + 372347379/10000000 s2 + 199143/800000 s23
+```
+
+
+the first moment of every link's mass, dotted with gravity
+
+Cost: 22 multiplications, 18 additions, 0 divisions, 4 sin_cos pairs.*/
+    #[inline]
+    fn potential_energy<__T: ::planar_arm::Real>(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<__T, 6>,
+    ) -> __T {
+        let [_, __q2, __q3, __q4, __q5, _] = ::planar_arm::__private::unpack(__q);
+        let [(__s2, __c2), (__s3, __c3), (_, __c4), (__s5, __c5)] = ::planar_arm::__private::sin_cos([
+            __q2,
+            __q3,
+            __q4,
+            __q5,
+        ]);
+        let __t1 = __T::from_f64(2159.0 / 5000.0) * __s2;
+        let __t2 = __s2 * __c3 + __c2 * __s3;
+        let __t3 = __s2 * (-__s3) + __c2 * __c3;
+        let __t4 = __t1 + __T::from_f64(203.0 / 10000.0) * __t2;
+        let __t5 = __t4 + __T::from_f64(2159.0 / 5000.0) * __t3;
+        let __v = -(__T::from_f64(-(981.0 / 100.0))
+            * (__T::from_f64(9.0 / 100.0)
+                * (__t5
+                    + __T::from_f64(4.0 / 125.0) * (__t2 * __c4 * (-__s5) + __t3 * __c5))
+                + __T::from_f64(17.0 / 50.0) * __t5
+                + __T::from_f64(41.0 / 50.0)
+                    * (__t5 + __T::from_f64(19.0 / 1000.0) * __t3)
+                + __T::from_f64(24.0 / 5.0)
+                    * (__t4 + __T::from_f64(-(203.0 / 10000.0)) * __t2
+                        + __T::from_f64(7.0 / 100.0) * __t3)
+                + __T::from_f64(87.0 / 5.0)
+                    * (__t1 + __T::from_f64(-(1819.0 / 5000.0)) * __s2
+                        + __T::from_f64(3.0 / 500.0) * __c2)));
+        __v
+    }
+    const EXACT: ::planar_arm::exact::SpatialDerivation<6> = {
+        const __NAMES: &[&::core::primitive::str] = &[];
+        ::planar_arm::exact::SpatialDerivation {
+            expansion: ::core::option::Option::Some(::planar_arm::exact::SpatialExpansion {
+                tip: [
+                    [
+                        ::planar_arm::__private::terms(
+                            b"BCgBGCABCAFBAABCgBGDABCAEBABCAABCQGDABCADBBBBAABBQGDABCADBBBCAABCgBGEABCADBABCABBAABCgBGDABCADBACCAABCQGDABCACBBCBAABCQGEABCACBBBBABCAABBQGEABCACBBBCABBAABBQGDABCACBBCCAABCgBGEABCACBABCACBAABCgBGFABCACBABCABBABCAABBQGEABCACBABCBBBAABCQGEABCACBABCBBCAABCgBGEABCACBACCABBAABCgBGDABCACBADCAABBQGCABCCDBAABBQGDABCCCBABCAABBIGDABCCBBBBBAABCIGDABCCBBBBCAABBQGEABCCBBABCABBAABBQGDABCCBBACCAABCQGDABCCBCACBAABCQGEABCCBCABBABCAABBIGDABCCBCBBBAABCIGDABCCBCBBCAABCQGDABCCCCABBAABCQGCABCCDCAABCgBGCADCADBAABCgBGDADCACBABCAABCQGDADCABBBBBAABBQGDADCABBBBCAABCgBGEADCABBABCABBAABCgBGDADCABBACCAABBQGCADCBCBAABBQGDADCBBBABCAABCQGDADCBBCABBAABCQGCADCBCCAABCgBGCAECACBAABCgBGDAECABBABCAABBQGCAECBBBAABCQGCAECBBCAABCgBGCAFCABBAABCgBGBAGCAA",
+                            __NAMES,
+                        ),
+                        ::planar_arm::__private::terms(
+                            b"CCgBGCABCAFBAACBgBGDABCAEBABCAACCQGDABCADBBBBAACCQGDABCADBBBCAACCgBGEABCADBABCABBAACBgBGDABCADBACCAACCQGDABCACBBCBAACBQGEABCACBBBBABCAACBQGEABCACBBBCABBAACCQGDABCACBBCCAACCgBGEABCACBABCACBAACBgBGFABCACBABCABBABCAACBQGEABCACBABCBBBAACBQGEABCACBABCBBCAACCgBGEABCACBACCABBAACBgBGDABCACBADCAACBQGCABCCDBAACCQGDABCCCBABCAACBIGDABCCBBBBBAACBIGDABCCBBBBCAACBQGEABCCBBABCABBAACCQGDABCCBBACCAACCQGDABCCBCACBAACBQGEABCCBCABBABCAACBIGDABCCBCBBBAACBIGDABCCBCBBCAACCQGDABCCCCABBAACBQGCABCCDCAACCgBGCADCADBAACBgBGDADCACBABCAACCQGDADCABBBBBAACCQGDADCABBBBCAACCgBGEADCABBABCABBAACBgBGDADCABBACCAACBQGCADCBCBAACCQGDADCBBBABCAACCQGDADCBBCABBAACBQGCADCBCCAACCgBGCAECACBAACBgBGDAECABBABCAACBQGCAECBBBAACBQGCAECBBCAACCgBGCAFCABBAACBgBGBAGCAA",
+                            __NAMES,
+                        ),
+                        ::planar_arm::__private::terms(
+                            b"CCQFCABCAEBAACBQFDABCADBABCAACCIFDABCACBBBBAACCIFDABCACBBBCAACCQFEABCACBABCABBAACBQFDABCACBACCAACBIFCABCCCBAACCIFDABCCBBABCAACCIFDABCCBCABBAACBIFCABCCCCAACCQFCADCACBAACBQFDADCABBABCAACBIFCADCBBBAACBIFCADCBBCAACCQFCAECABBAACBQFBAFCAA",
+                            __NAMES,
+                        ),
+                        ::planar_arm::__private::terms(
+                            b"B+mEgxTCCABCABBAAB+mEgxTCBACCAAB2MginBDCABCACBAAB2MginBDBADCAACy7FginBBBABCAAC+mEgxTDCABCACBAAC9mEgxTDBADCAA",
+                            __NAMES,
+                        ),
+                    ],
+                    [
+                        ::planar_arm::__private::terms(
+                            b"CCgBGCABCAFBAACCgBGDABCAEBABCAACCQGDABCADBBBBAACBQGDABCADBBBCAACCgBGEABCADBABCABBAACCgBGDABCADBACCAACCQGDABCACBBCBAACCQGEABCACBBBBABCAACBQGEABCACBBBCABBAACBQGDABCACBBCCAACCgBGEABCACBABCACBAACCgBGFABCACBABCABBABCAACBQGEABCACBABCBBBAACCQGEABCACBABCBBCAACCgBGEABCACBACCABBAACCgBGDABCACBADCAACBQGCABCCDBAACBQGDABCCCBABCAACBIGDABCCBBBBBAACCIGDABCCBBBBCAACBQGEABCCBBABCABBAACBQGDABCCBBACCAACCQGDABCCBCACBAACCQGEABCCBCABBABCAACBIGDABCCBCBBBAACCIGDABCCBCBBCAACCQGDABCCCCABBAACCQGCABCCDCAACCgBGCADCADBAACCgBGDADCACBABCAACCQGDADCABBBBBAACBQGDADCABBBBCAACCgBGEADCABBABCABBAACCgBGDADCABBACCAACBQGCADCBCBAACBQGDADCBBBABCAACCQGDADCBBCABBAACCQGCADCBCCAACCgBGCAECACBAACCgBGDAECABBABCAACBQGCAECBBBAACCQGCAECBBCAACCgBGCAFCABBAACCgBGBAGCAA",
+                            __NAMES,
+                        ),
+                        ::planar_arm::__private::terms(
+                            b"BBgBGCABCAFBAABCgBGDABCAEBABCAABBQGDABCADBBBBAABBQGDABCADBBBCAABBgBGEABCADBABCABBAABCgBGDABCADBACCAABBQGDABCACBBCBAABCQGEABCACBBBBABCAABCQGEABCACBBBCABBAABBQGDABCACBBCCAABBgBGEABCACBABCACBAABCgBGFABCACBABCABBABCAABCQGEABCACBABCBBBAABCQGEABCACBABCBBCAABBgBGEABCACBACCABBAABCgBGDABCACBADCAABCQGCABCCDBAABBQGDABCCCBABCAABCIGDABCCBBBBBAABCIGDABCCBBBBCAABCQGEABCCBBABCABBAABBQGDABCCBBACCAABBQGDABCCBCACBAABCQGEABCCBCABBABCAABCIGDABCCBCBBBAABCIGDABCCBCBBCAABBQGDABCCCCABBAABCQGCABCCDCAABBgBGCADCADBAABCgBGDADCACBABCAABBQGDADCABBBBBAABBQGDADCABBBBCAABBgBGEADCABBABCABBAABCgBGDADCABBACCAABCQGCADCBCBAABBQGDADCBBBABCAABBQGDADCBBCABBAABCQGCADCBCCAABBgBGCAECACBAABCgBGDAECABBABCAABCQGCAECBBBAABCQGCAECBBCAABBgBGCAFCABBAABCgBGBAGCAA",
+                            __NAMES,
+                        ),
+                        ::planar_arm::__private::terms(
+                            b"BBQFCABCAEBAABCQFDABCADBABCAABBIFDABCACBBBBAABBIFDABCACBBBCAABBQFEABCACBABCABBAABCQFDABCACBACCAABCIFCABCCCBAABBIFDABCCBBABCAABBIFDABCCBCABBAABCIFCABCCCCAABBQFCADCACBAABCQFDADCABBABCAABCIFCADCBBBAABCIFCADCBBCAABBQFCAECABBAABCQFBAFCAA",
+                            __NAMES,
+                        ),
+                        ::planar_arm::__private::terms(
+                            b"Bx7FginBBBABCAAB9mEgxTDCABCACBAAB+mEgxTDBADCAAC+mEgxTCCABCABBAAC+mEgxTCBACCAAC2MginBDCABCACBAAC2MginBDBADCAA",
+                            __NAMES,
+                        ),
+                    ],
+                    [
+                        ::planar_arm::__private::terms(
+                            b"CCQGCBCCADBAACCQGDBCCACBABCAACCIGDBCCABBBBBAACBIGDBCCABBBBCAACCQGEBCCABBABCABBAACCQGDBCCABBACCAACBIGCBCCBCBAACBIGDBCCBBBABCAACCIGDBCCBBCABBAACCIGCBCCBCCAACCQGCBDCACBAACCQGDBDCABBABCAACBIGCBDCBBBAACCIGCBDCBBCAACCQGCBECABBAACCQGBBFCAA",
+                            __NAMES,
+                        ),
+                        ::planar_arm::__private::terms(
+                            b"BBQGCBCCADBAABCQGDBCCACBABCAABBIGDBCCABBBBBAABBIGDBCCABBBBCAABBQGEBCCABBABCABBAABCQGDBCCABBACCAABCIGCBCCBCBAABBIGDBCCBBBABCAABBIGDBCCBBCABBAABCIGCBCCBCCAABBQGCBDCACBAABCQGDBDCABBABCAABCIGCBDCBBBAABCIGCBDCBBCAABBQGCBECABBAABCQGBBFCAA",
+                            __NAMES,
+                        ),
+                        ::planar_arm::__private::terms(
+                            b"BBIFCBCCACBAABCIFDBCCABBABCAABCEFCBCCBBBAABCEFCBCCBBCAABBIFCBDCABBAABCIFBBECAA",
+                            __NAMES,
+                        ),
+                        ::planar_arm::__private::terms(
+                            b"B+mEw4JDBBCCAAC+mEw4JCBBBCAAC2MgxTDBBCCAA",
+                            __NAMES,
+                        ),
+                    ],
+                ],
+                potential_energy: ::planar_arm::__private::terms(
+                    b"Byi0PgpoPCBBBCAABin84mFgoriTDBBCCAAB5nRgtpsCFCBCCACBAAB6nRgtpsCFDBCCABBABCAAB6nRw2kmBFCBCCBBBAAB6nRw2kmBFCBCCBBCAAB5nRgtpsCFCBDCABBAAB6nRgtpsCFBBECAACm/ommWgoriTCBBBCAACu+kMgw6wBDBBCCAA",
+                    __NAMES,
+                ),
+                gravity: [
+                    ::planar_arm::__private::terms(b"", __NAMES),
+                    ::planar_arm::__private::terms(
+                        b"Bm/ommWgoriTCBBBCAABu+kMgw6wBDBBCCAACxi0PgpoPCBBBCAAChn84mFgoriTDBBCCAAC6nRgtpsCFCBCCACBAAC5nRgtpsCFDBCCABBABCAAC5nRw2kmBFCBCCBBBAAC5nRw2kmBFCBCCBBCAAC6nRgtpsCFCBDCABBAAC5nRgtpsCFBBECAA",
+                        __NAMES,
+                    ),
+                    ::planar_arm::__private::terms(
+                        b"Bu+kMgw6wBDBBCCAAChn84mFgoriTDBBCCAAC6nRgtpsCFCBCCACBAAC5nRgtpsCFDBCCABBABCAAC5nRw2kmBFCBCCBBBAAC5nRw2kmBFCBCCBBCAAC6nRgtpsCFCBDCABBAAC5nRgtpsCFBBECAA",
+                        __NAMES,
+                    ),
+                    ::planar_arm::__private::terms(
+                        b"C5nRgtpsCFCBCCACBAAC6nRgtpsCFDBCCABBABCAAC6nRgtpsCFCBDCABBAAC5nRgtpsCFBBECAA",
+                        __NAMES,
+                    ),
+                    ::planar_arm::__private::terms(
+                        b"C5nRgtpsCFCBCCACBAAC5nRgtpsCFDBCCABBABCAAC6nRw2kmBFCBCCBBBAAC5nRw2kmBFCBCCBBCAAC5nRgtpsCFCBDCABBAAC5nRgtpsCFBBECAA",
+                        __NAMES,
+                    ),
+                    ::planar_arm::__private::terms(b"", __NAMES),
+                ],
+            }),
+        }
+    };
+    #[inline]
+    fn model(&self) -> ::planar_arm::spatial::SpatialModel<6> {
+        ::planar_arm::spatial::SpatialModel {
+            joints: [
+                ::planar_arm::spatial::SpatialJoint {
+                    geometry: ::planar_arm::spatial::JointGeometry::Dh {
+                        a: 0.0,
+                        alpha: ::core::f64::consts::FRAC_PI_2,
+                        d: 0.0,
+                        theta: 0.0,
+                    },
+                    kind: ::planar_arm::Joint::Revolute,
+                    range: ::core::option::Option::None,
+                    armature: 0.0,
+                    damping: 0.0,
+                    frictionloss: 0.0,
+                },
+                ::planar_arm::spatial::SpatialJoint {
+                    geometry: ::planar_arm::spatial::JointGeometry::Dh {
+                        a: (2159.0 / 5000.0),
+                        alpha: 0.0,
+                        d: 0.0,
+                        theta: 0.0,
+                    },
+                    kind: ::planar_arm::Joint::Revolute,
+                    range: ::core::option::Option::None,
+                    armature: 0.0,
+                    damping: 0.0,
+                    frictionloss: 0.0,
+                },
+                ::planar_arm::spatial::SpatialJoint {
+                    geometry: ::planar_arm::spatial::JointGeometry::Dh {
+                        a: (203.0 / 10000.0),
+                        alpha: (-::core::f64::consts::FRAC_PI_2),
+                        d: (3001.0 / 20000.0),
+                        theta: 0.0,
+                    },
+                    kind: ::planar_arm::Joint::Revolute,
+                    range: ::core::option::Option::None,
+                    armature: 0.0,
+                    damping: 0.0,
+                    frictionloss: 0.0,
+                },
+                ::planar_arm::spatial::SpatialJoint {
+                    geometry: ::planar_arm::spatial::JointGeometry::Dh {
+                        a: 0.0,
+                        alpha: ::core::f64::consts::FRAC_PI_2,
+                        d: (2159.0 / 5000.0),
+                        theta: 0.0,
+                    },
+                    kind: ::planar_arm::Joint::Revolute,
+                    range: ::core::option::Option::None,
+                    armature: 0.0,
+                    damping: 0.0,
+                    frictionloss: 0.0,
+                },
+                ::planar_arm::spatial::SpatialJoint {
+                    geometry: ::planar_arm::spatial::JointGeometry::Dh {
+                        a: 0.0,
+                        alpha: (-::core::f64::consts::FRAC_PI_2),
+                        d: 0.0,
+                        theta: 0.0,
+                    },
+                    kind: ::planar_arm::Joint::Revolute,
+                    range: ::core::option::Option::None,
+                    armature: 0.0,
+                    damping: 0.0,
+                    frictionloss: 0.0,
+                },
+                ::planar_arm::spatial::SpatialJoint {
+                    geometry: ::planar_arm::spatial::JointGeometry::Dh {
+                        a: 0.0,
+                        alpha: 0.0,
+                        d: 0.0,
+                        theta: 0.0,
+                    },
+                    kind: ::planar_arm::Joint::Revolute,
+                    range: ::core::option::Option::None,
+                    armature: 0.0,
+                    damping: 0.0,
+                    frictionloss: 0.0,
+                },
+            ],
+            links: [
+                ::planar_arm::spatial::SpatialLink {
+                    mass: 0.0,
+                    com: ::planar_arm::nalgebra::Vector3::new(0.0, 0.0, 0.0),
+                    inertia: ::planar_arm::nalgebra::Matrix3::new(
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                    ),
+                },
+                ::planar_arm::spatial::SpatialLink {
+                    mass: (87.0 / 5.0),
+                    com: ::planar_arm::nalgebra::Vector3::new(
+                        (-(1819.0 / 5000.0)),
+                        (3.0 / 500.0),
+                        (91.0 / 400.0),
+                    ),
+                    inertia: ::planar_arm::nalgebra::Matrix3::new(
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                    ),
+                },
+                ::planar_arm::spatial::SpatialLink {
+                    mass: (24.0 / 5.0),
+                    com: ::planar_arm::nalgebra::Vector3::new(
+                        (-(203.0 / 10000.0)),
+                        (-(141.0 / 10000.0)),
+                        (7.0 / 100.0),
+                    ),
+                    inertia: ::planar_arm::nalgebra::Matrix3::new(
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                    ),
+                },
+                ::planar_arm::spatial::SpatialLink {
+                    mass: (41.0 / 50.0),
+                    com: ::planar_arm::nalgebra::Vector3::new(0.0, (19.0 / 1000.0), 0.0),
+                    inertia: ::planar_arm::nalgebra::Matrix3::new(
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                    ),
+                },
+                ::planar_arm::spatial::SpatialLink {
+                    mass: (17.0 / 50.0),
+                    com: ::planar_arm::nalgebra::Vector3::new(0.0, 0.0, 0.0),
+                    inertia: ::planar_arm::nalgebra::Matrix3::new(
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                    ),
+                },
+                ::planar_arm::spatial::SpatialLink {
+                    mass: (9.0 / 100.0),
+                    com: ::planar_arm::nalgebra::Vector3::new(0.0, 0.0, (4.0 / 125.0)),
+                    inertia: ::planar_arm::nalgebra::Matrix3::new(
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                    ),
+                },
+            ],
+            gravity: ::planar_arm::nalgebra::Vector3::new(0.0, 0.0, (-(981.0 / 100.0))),
+            tool: ::planar_arm::nalgebra::Isometry3::from_parts(
+                ::planar_arm::nalgebra::Translation3::from(
+                    ::planar_arm::nalgebra::Vector3::new(0.0, 0.0, 0.0),
+                ),
+                ::planar_arm::nalgebra::UnitQuaternion::from_euler_angles(0.0, 0.0, 0.0),
+            ),
+        }
+    }
+    ///Every solution in closed form (a spherical wrist, axes 2 and 3 parallel: decided at compile time from the exact geometry); see `planar_arm::spatial::SpatialIk`.
+    #[inline]
+    fn inverse_kinematics(
+        &self,
+        __target: &::planar_arm::nalgebra::Isometry3<::core::primitive::f64>,
+    ) -> ::core::result::Result<
+        ::planar_arm::spatial::IkSolutions<6>,
+        ::planar_arm::ArmError,
+    > {
+        let ik = ::planar_arm::spatial::SpatialIk {
+            class: ::planar_arm::spatial::IkClass::SphericalWrist,
+            points: [
+                ::planar_arm::nalgebra::Vector3::new(0.0, 0.0, 0.0),
+                ::planar_arm::nalgebra::Vector3::new(0.0, 0.0, 0.0),
+                ::planar_arm::nalgebra::Vector3::new(0.4318, 0.0, 0.0),
+                ::planar_arm::nalgebra::Vector3::new(0.4521, (-0.15005), 0.0),
+                ::planar_arm::nalgebra::Vector3::new(0.4521, (-0.15005), 0.4318),
+                ::planar_arm::nalgebra::Vector3::new(0.4521, (-0.15005), 0.4318),
+            ],
+            axes: [
+                ::planar_arm::nalgebra::Vector3::new(0.0, 0.0, 1.0),
+                ::planar_arm::nalgebra::Vector3::new(0.0, (-1.0), 0.0),
+                ::planar_arm::nalgebra::Vector3::new(0.0, (-1.0), 0.0),
+                ::planar_arm::nalgebra::Vector3::new(0.0, 0.0, 1.0),
+                ::planar_arm::nalgebra::Vector3::new(0.0, (-1.0), 0.0),
+                ::planar_arm::nalgebra::Vector3::new(0.0, 0.0, 1.0),
+            ],
+            home: ::planar_arm::__private::isometry3(
+                [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+                [0.4521, (-0.15005), 0.4318],
+            ),
+            centre: ::planar_arm::nalgebra::Vector3::new(0.4521, (-0.15005), 0.4318),
+            scale: 0.642931296873935,
+        };
+        ik.solve(
+            __target,
+            &[
+                ::core::option::Option::None,
+                ::core::option::Option::None,
+                ::core::option::Option::None,
+                ::core::option::Option::None,
+                ::core::option::Option::None,
+                ::core::option::Option::None,
+            ],
+        )
+    }
+}
