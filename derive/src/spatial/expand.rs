@@ -90,15 +90,12 @@ fn stub(input: &DeriveInput) -> TokenStream {
     let v = quote!(&::planar_arm::nalgebra::SVector<#F64, #nn>);
     let vt = quote!(&::planar_arm::nalgebra::SVector<__T, #nn>);
     let body = quote!({ ::core::unreachable!() });
-    let terms = quote!(::planar_arm::__private::terms(b"", &[]));
     let _ = ToTokens::to_token_stream(&input.ident);
     quote! {
         #[automatically_derived]
         impl #impl_generics ::planar_arm::spatial::SpatialArm<#nn> for #ty #where_clause {
             const EXACT: ::planar_arm::exact::SpatialDerivation<#nn> = ::planar_arm::exact::SpatialDerivation {
-                tip: [[#terms; 4]; 3],
-                potential_energy: #terms,
-                gravity: [#terms; #nn],
+                expansion: ::core::option::Option::None,
             };
             fn tip_pose(&self, _: #v) -> ::planar_arm::nalgebra::Isometry3<#F64> #body
             fn link_poses(&self, _: #v) -> [::planar_arm::nalgebra::Isometry3<#F64>; #nn] #body
