@@ -60,6 +60,16 @@ impl<const N: usize> IkSolutions<N> {
     pub fn mark_singular(&mut self) {
         self.singular = true;
     }
+
+    /// The solutions, to change in place.
+    pub(crate) fn as_mut_slice(&mut self) -> &mut [SVector<f64, N>] {
+        &mut self.solutions[..self.len]
+    }
+
+    /// Keeps the first `len` solutions.
+    pub(crate) fn truncate(&mut self, len: usize) {
+        self.len = self.len.min(len);
+    }
 }
 
 impl<const N: usize> Default for IkSolutions<N> {
