@@ -6,11 +6,23 @@
 //! Jacobian's rows are the tool origin's linear velocity, then the angular velocity, both in
 //! base coordinates (Pinocchio's `LOCAL_WORLD_ALIGNED`); gravity torques are `dV/dq`, what the
 //! joints apply to hold the arm still, with `V = -sum m_i g . c_i` (zero at the base origin).
+//!
+//! The dynamics, `tau = M qdd + c + g + f` as for planar arms ([`inverse_dynamics`] by
+//! recursive Newton-Euler, [`mass_matrix`] from the links' Jacobians, [`kinetic_energy`],
+//! [`forward_dynamics`]), are in base coordinates too; they agree with Pinocchio's `rnea` and
+//! `crba` to 2e-15 on the PUMA 560 and a seven-joint arm (`tests/spatial_dynamics_reference.rs`).
 
 use nalgebra::{Isometry3, Point3, SMatrix, SVector, Vector3};
 
 use crate::spatial::SpatialModel;
 use crate::Joint;
+
+mod dynamics;
+
+pub use dynamics::{
+    bias_forces, coriolis, forward_dynamics, friction, inverse_dynamics, kinetic_energy,
+    mass_matrix,
+};
 
 /// Each link's frame in the base frame, base first.
 #[must_use]
