@@ -137,11 +137,14 @@ struct OddDh {
     reach: f64,
     flange: f64,
     load: f64,
-    #[arm(dh(a = self.reach, alpha = 0.3, d = 0.2, theta = pi/6), mass = 2, com = (-0.1, 0.02, 0.03))]
+    #[arm(dh(a = self.reach, alpha = 0.3, d = 0.2, theta = pi/6), mass = 2, com = (-0.1, 0.02, 0.03),
+          armature = 0.05, damping = 0.3, frictionloss = 0.2)]
     j1: Revolute,
-    #[arm(dh(a = 0.25, alpha = pi/3, d = -0.05, theta = 0.2), mass = self.load, com = (0.01, self.reach, 0))]
+    #[arm(dh(a = 0.25, alpha = pi/3, d = -0.05, theta = 0.2), mass = self.load, com = (0.01, self.reach, 0),
+          armature = 0.4, damping = 1.5)]
     j2: Prismatic,
-    #[arm(dh(a = 2 * self.reach - 0.1, alpha = -2*pi/5), mass = 1.5, com = (0.1, 0, -0.02))]
+    #[arm(dh(a = 2 * self.reach - 0.1, alpha = -2*pi/5), mass = 1.5, com = (0.1, 0, -0.02),
+          inertia(xx = 0.02, yy = 0.03, zz = 0.025, xy = 0.004, xz = -0.002, yz = 0.001))]
     j3: Revolute,
     #[arm(dh(a = 0.1, alpha = pi/4, d = 0.07), mass = 0.5, com = (0, 0.03, 0.05))]
     j4: Revolute,
@@ -164,14 +167,16 @@ struct OddMdh {
 #[arm(tool(rpy = (0, pi/2, 0)))]
 struct OddUrdf {
     #[arm(origin(xyz = (0, 0, 0.3), rpy = (0.1, -0.2, 0.3)), axis = (1, 1, 0), mass = 1,
-          com = (0.05, 0, 0.1))]
+          com = (0.05, 0, 0.1),
+          inertia(xx = 0.01, yy = 0.012, zz = 0.008, xy = -0.001, xz = 0.002, yz = 0.0005))]
     j1: Revolute,
     #[arm(origin(xyz = (0.2, 0.05, 0)), axis = (0, 1, 0), mass = 2, com = (0.1, 0, 0))]
     j2: Revolute,
     #[arm(origin(xyz = (0.3, 0, 0.02), rpy = (0, 0, pi/2)), axis = (1, 2, 2), mass = 0.8,
           com = (0, 0.1, 0.1))]
     j3: Revolute,
-    #[arm(origin(xyz = (0, 0.1, 0)), axis = (0, 0, -1), mass = 0.5, com = (0.02, 0, -0.05))]
+    #[arm(origin(xyz = (0, 0.1, 0)), axis = (0, 0, -1), mass = 0.5, com = (0.02, 0, -0.05),
+          armature = 0.2, frictionloss = 0.5)]
     j4: Prismatic,
     #[arm(origin(rpy = (pi, 0, -pi/3)), mass = 0.2, com = (0, 0, 0.04))]
     j5: Revolute,
@@ -409,6 +414,15 @@ fn odd_dh_model() -> SpatialModel<4> {
     );
     m.gravity = Vector3::new(0.5, -1.0, -9.81);
     m.tool = tool([0.05, 0.0, 0.12], [0.1, -0.2, 0.3]);
+    (
+        m.joints[0].armature,
+        m.joints[0].damping,
+        m.joints[0].frictionloss,
+    ) = (0.05, 0.3, 0.2);
+    (m.joints[1].armature, m.joints[1].damping) = (0.4, 1.5);
+    m.links[2].inertia = Matrix3::new(
+        0.02, 0.004, -0.002, 0.004, 0.03, 0.001, -0.002, 0.001, 0.025,
+    );
     m
 }
 
@@ -445,6 +459,10 @@ fn odd_urdf_model() -> SpatialModel<5> {
         ],
     );
     m.tool = tool([0.0; 3], [0.0, FRAC_PI_2, 0.0]);
+    m.links[0].inertia = Matrix3::new(
+        0.01, -0.001, 0.002, -0.001, 0.012, 0.0005, 0.002, 0.0005, 0.008,
+    );
+    (m.joints[3].armature, m.joints[3].frictionloss) = (0.2, 0.5);
     m
 }
 
@@ -529,6 +547,13 @@ fn against_reference<A: SpatialArm<N>, const N: usize>(
         let v = arm.potential_energy(&q);
         let vr = reference::potential_energy(hand, &q);
         assert!((v - vr).abs() < 1e-12 * (1.0 + v.abs()), "{q}");
+        let (qd, qdd) = (rng.q::<N>(), rng.q::<N>() * 2.0);
+        let tau = arm.inverse_dynamics(&q, &qd, &qdd);
+        let tr = reference::inverse_dynamics(hand, &q, &qd, &qdd);
+        assert!(
+            (tau - tr).amax() < 1e-12 * (1.0 + tr.amax()),
+            "{q} {qd} {qdd}: {tau} vs {tr}"
+        );
     }
 }
 
@@ -687,6 +712,23 @@ fn every_method_takes_other_scalars() {
     let g = arm.gravity(&q);
     for i in 0..6 {
         assert!((v.eps[i] - g[i]).abs() < 1e-12 * (1.0 + g[i].abs()), "{i}");
+    }
+    // Dual accelerations: d tau / d qdd is the mass matrix (the reference's, from the links'
+    // Jacobians), and the real parts are the f64 torques.
+    let qd = SVector::<f64, 6>::from([0.5, -1.0, 0.3, 2.0, -0.2, 1.5]);
+    let qdd = SVector::<f64, 6>::from([1.0, 0.2, -0.8, 0.0, 3.0, -1.0]);
+    let tau = arm.inverse_dynamics(
+        &q.map(Jet::constant),
+        &qd.map(Jet::constant),
+        &SVector::<Jet<6>, 6>::from_fn(|i, _| Jet::variable(qdd[i], i)),
+    );
+    let m = reference::mass_matrix(&arm.model(), &q);
+    let plain = arm.inverse_dynamics(&q, &qd, &qdd);
+    for i in 0..6 {
+        assert!((tau[i].re - plain[i]).abs() < 1e-12 * (1.0 + plain[i].abs()));
+        for k in 0..6 {
+            assert!((tau[i].eps[k] - m[(i, k)]).abs() < 1e-12, "M{i}{k}");
+        }
     }
     // Four states at once: each lane is the f64 result.
     use planar_arm::simd::{SimdValue, WideF64x4};

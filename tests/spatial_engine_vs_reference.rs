@@ -66,6 +66,10 @@ struct JointDraw {
     axis: [i64; 3],
     mass: i64,
     com: [i64; 3],
+    /// xx, yy, zz (hundredths, 1 to 8), then xy, xz, yz (hundredths, -2 to 2).
+    inertia: [i64; 6],
+    /// Armature, damping and frictionloss, in tenths.
+    joint_terms: [i64; 3],
 }
 
 fn joint() -> impl Strategy<Value = JointDraw> {
@@ -76,16 +80,29 @@ fn joint() -> impl Strategy<Value = JointDraw> {
         [-2i64..=2, -2i64..=2, -2i64..=2],
         0i64..=8,
         [-4i64..=4, -4i64..=4, -4i64..=4],
+        [
+            1i64..=8,
+            1i64..=8,
+            1i64..=8,
+            -2i64..=2,
+            -2i64..=2,
+            -2i64..=2,
+        ],
+        [0i64..=3, 0i64..=3, 0i64..=3],
     )
         .prop_filter("a non-zero axis", |j| j.3 != [0, 0, 0])
-        .prop_map(|(prismatic, lengths, angles, axis, mass, com)| JointDraw {
-            prismatic,
-            lengths,
-            angles,
-            axis,
-            mass,
-            com,
-        })
+        .prop_map(
+            |(prismatic, lengths, angles, axis, mass, com, inertia, joint_terms)| JointDraw {
+                prismatic,
+                lengths,
+                angles,
+                axis,
+                mass,
+                com,
+                inertia,
+                joint_terms,
+            },
+        )
 }
 
 #[derive(Clone, Debug)]
@@ -97,6 +114,8 @@ struct ArmDraw {
     /// The first joint's first length, read at run time (eighths of a metre).
     reach: i64,
     q: Vec<f64>,
+    /// Seven joint rates, then seven accelerations.
+    rates: Vec<f64>,
 }
 
 fn arm() -> impl Strategy<Value = ArmDraw> {
@@ -107,15 +126,19 @@ fn arm() -> impl Strategy<Value = ArmDraw> {
         ([length(), length(), length()], [angle(), angle(), angle()]),
         -8i64..=8,
         proptest::collection::vec(-3.2f64..3.2, 7),
+        proptest::collection::vec(-4.0f64..4.0, 14),
     )
-        .prop_map(|(convention, joints, gravity, tool, reach, q)| ArmDraw {
-            convention,
-            joints,
-            gravity,
-            tool,
-            reach,
-            q,
-        })
+        .prop_map(
+            |(convention, joints, gravity, tool, reach, q, rates)| ArmDraw {
+                convention,
+                joints,
+                gravity,
+                tool,
+                reach,
+                q,
+                rates,
+            },
+        )
 }
 
 fn eighths(k: i64) -> Rational {
@@ -168,11 +191,11 @@ fn spec(d: &ArmDraw) -> SpatialArmSpec {
                 },
                 mass: Poly::constant(ratio(j.mass, 4)),
                 com: j.com.map(|k| Poly::constant(ratio(k, 10))),
-                inertia: core::array::from_fn(|_| Poly::default()),
+                inertia: j.inertia.map(|k| Poly::constant(ratio(k, 100))),
                 range: None,
-                armature: Poly::default(),
-                damping: Poly::default(),
-                frictionloss: Poly::default(),
+                armature: Poly::constant(ratio(j.joint_terms[0], 10)),
+                damping: Poly::constant(ratio(j.joint_terms[1], 10)),
+                frictionloss: Poly::constant(ratio(j.joint_terms[2], 10)),
             }
         })
         .collect();
@@ -218,14 +241,23 @@ fn model<const N: usize>(d: &ArmDraw) -> SpatialModel<N> {
         } else {
             Joint::Revolute
         };
-        SpatialJoint::new(geometry, kind)
+        let [armature, damping, frictionloss] = j.joint_terms.map(|k| k as f64 / 10.0);
+        SpatialJoint {
+            armature,
+            damping,
+            frictionloss,
+            ..SpatialJoint::new(geometry, kind)
+        }
     });
     let links = core::array::from_fn(|i| {
         let j = &d.joints[i];
         SpatialLink {
             mass: j.mass as f64 / 4.0,
             com: Vector3::from(j.com.map(|k| k as f64 / 10.0)),
-            inertia: Matrix3::zeros(),
+            inertia: {
+                let [xx, yy, zz, xy, xz, yz] = j.inertia.map(|k| k as f64 / 100.0);
+                Matrix3::new(xx, xy, xz, xy, yy, yz, xz, yz, zz)
+            },
         }
     });
     let [r, p, y] = [
@@ -246,9 +278,16 @@ fn model<const N: usize>(d: &ArmDraw) -> SpatialModel<N> {
 
 /// A method's outputs by name, at `q`, with the run-time length set.
 fn outputs(m: &Method, q: &[f64], reach: f64) -> HashMap<String, f64> {
+    outputs_at(m, q, &[], &[], reach)
+}
+
+/// A method's outputs by name, at `(q, qd, qdd)`, with the run-time length set.
+fn outputs_at(m: &Method, q: &[f64], qd: &[f64], qdd: &[f64], reach: f64) -> HashMap<String, f64> {
     let params = m.program.params().to_vec();
     let input = |i: Input| match i {
         Input::Q(k) => q[k],
+        Input::Qd(k) => qd[k],
+        Input::Qdd(k) => qdd[k],
         Input::Param(k) => {
             assert_eq!(params[k].name(), "reach");
             reach
@@ -328,6 +367,24 @@ fn compare<const N: usize>(d: &ArmDraw, derived: &SpatialDerived) -> Result<(), 
         (v - expected).abs() < 1e-12 * (1.0 + expected.abs()),
         "V {v} vs {expected}"
     );
+    let qd = SVector::<f64, N>::from_fn(|i, _| d.rates[i]);
+    let qdd = SVector::<f64, N>::from_fn(|i, _| d.rates[7 + i]);
+    let tau = outputs_at(
+        &derived.inverse_dynamics,
+        qs,
+        qd.as_slice(),
+        qdd.as_slice(),
+        reach,
+    );
+    let expected = reference::inverse_dynamics(&model, &q, &qd, &qdd);
+    let scale = 1.0 + expected.amax();
+    for i in 0..N {
+        let got = tau[&format!("t{}", i + 1)];
+        prop_assert!(
+            (got - expected[i]).abs() < 1e-12 * scale,
+            "tau{i}: {got} vs {expected}"
+        );
+    }
     Ok(())
 }
 

@@ -10,4 +10,5 @@ pub mod frozen;
 pub mod method;
 pub mod slp;
 pub(crate) mod spatial;
+pub(crate) mod spatial_newton_euler;
 pub(crate) mod unrolled;

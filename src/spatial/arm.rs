@@ -36,6 +36,19 @@ pub trait SpatialArm<const N: usize> {
     /// The potential energy at `q`, J, zero at the base origin.
     fn potential_energy<T: Real>(&self, q: &SVector<T, N>) -> T;
 
+    /// The joint forces `tau = M qdd + c + g + f` that give the arm the accelerations `qdd` at
+    /// `(q, qd)`, as [`PlanarArm::inverse_dynamics`](crate::PlanarArm::inverse_dynamics):
+    /// `M` holds each joint's armature, `g` is [`gravity`](Self::gravity) and
+    /// `f_i = damping_i qd_i + frictionloss_i sign(qd_i)` (MuJoCo's joint friction). The
+    /// recursive Newton-Euler algorithm unrolled at compile time for this arm, each link in its
+    /// own frame, with the constant parts of the joints' transformations folded in.
+    fn inverse_dynamics<T: Real>(
+        &self,
+        q: &SVector<T, N>,
+        qd: &SVector<T, N>,
+        qdd: &SVector<T, N>,
+    ) -> SVector<T, N>;
+
     /// The numeric description of the arm now (run-time parameters read from their fields).
     fn model(&self) -> SpatialModel<N>;
 

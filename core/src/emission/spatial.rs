@@ -127,6 +127,20 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
             quote!(#v)
         }),
     ));
+    fns.push(Fn::new(
+        "inverse_dynamics",
+        vec![
+            q,
+            Param::Joints("qd", Input::Qd),
+            Param::Joints("qdd", Input::Qdd),
+        ],
+        quote!(::planar_arm::nalgebra::SVector<__T, #nn>),
+        "The joint forces tau = M qdd + c + g + f (torques for hinges, forces for slides), M \
+         holding each joint's armature and f = damping qd + frictionloss sign(qd)."
+            .to_string(),
+        d.inverse_dynamics.clone(),
+        Box::new(vector),
+    ));
     let mut body = Vec::with_capacity(fns.len() + 3);
     for f in &fns {
         body.push(emit_fn(n, f, None)?);

@@ -9,6 +9,8 @@ use crate::mechanics::spatial::frames::{SpatialKinematics, EXPANSION_BUDGET};
 use crate::mechanics::spatial::spec::SpatialArmSpec;
 use crate::programs::method::Method;
 use crate::programs::spatial as product;
+use crate::programs::spatial_newton_euler as newton_euler;
+use crate::programs::unrolled::Terms;
 use crate::slp::Program;
 
 /// A spatial arm with its exact kinematics and the chosen programs.
@@ -27,6 +29,8 @@ pub struct SpatialDerived {
     pub gravity: Method,
     /// The potential energy.
     pub potential_energy: Method,
+    /// The joint forces `M qdd + c + g + f`, by the unrolled Newton-Euler recursion.
+    pub inverse_dynamics: Method,
 }
 
 /// The program that evaluates `rows` term by term.
@@ -110,6 +114,7 @@ impl SpatialDerived {
                 jacobian: product::jacobian(arm),
                 gravity: g_product,
                 potential_energy: v_product,
+                inverse_dynamics: newton_euler::inverse_dynamics(arm, Terms::ALL, true),
             };
         };
         let tip_pose = form.pick(product::tip_pose(arm), expanded(&frame_rows("", &k.tool)));
@@ -139,6 +144,7 @@ impl SpatialDerived {
             jacobian,
             gravity,
             potential_energy,
+            inverse_dynamics: newton_euler::inverse_dynamics(arm, Terms::ALL, true),
         }
     }
 }

@@ -14,13 +14,13 @@ use crate::slp::{Id, Program};
 
 /// A frame whose entries are program nodes.
 #[derive(Clone, Copy)]
-struct Nodes {
-    r: [[Id; 3]; 3],
-    p: [Id; 3],
+pub(crate) struct Nodes {
+    pub(crate) r: [[Id; 3]; 3],
+    pub(crate) p: [Id; 3],
 }
 
 impl Nodes {
-    fn of(p: &mut Program, f: &Frame) -> Self {
+    pub(crate) fn of(p: &mut Program, f: &Frame) -> Self {
         let mut node = |e: &Expr<Poly>| p.expr(e);
         let r = core::array::from_fn(|i| core::array::from_fn(|j| node(&f.r[i][j])));
         let t = core::array::from_fn(|i| node(&f.p[i]));
@@ -38,9 +38,17 @@ impl Nodes {
         Self { r, p: t }
     }
 
-    fn rotate(&self, p: &mut Program, v: &[Id; 3]) -> [Id; 3] {
+    pub(crate) fn rotate(&self, p: &mut Program, v: &[Id; 3]) -> [Id; 3] {
         core::array::from_fn(|i| {
             let terms: Vec<Id> = (0..3).map(|k| p.mul(self.r[i][k], v[k])).collect();
+            sum(p, &terms)
+        })
+    }
+
+    /// `r^T v`: a vector of the outer frame in this frame's axes.
+    pub(crate) fn rotate_back(&self, p: &mut Program, v: &[Id; 3]) -> [Id; 3] {
+        core::array::from_fn(|i| {
+            let terms: Vec<Id> = (0..3).map(|k| p.mul(self.r[k][i], v[k])).collect();
             sum(p, &terms)
         })
     }
@@ -51,7 +59,7 @@ impl Nodes {
     }
 }
 
-fn sum(p: &mut Program, terms: &[Id]) -> Id {
+pub(crate) fn sum(p: &mut Program, terms: &[Id]) -> Id {
     let mut acc = terms[0];
     for t in &terms[1..] {
         acc = p.add(acc, *t);
@@ -59,7 +67,7 @@ fn sum(p: &mut Program, terms: &[Id]) -> Id {
     acc
 }
 
-fn cross(p: &mut Program, a: &[Id; 3], b: &[Id; 3]) -> [Id; 3] {
+pub(crate) fn cross(p: &mut Program, a: &[Id; 3], b: &[Id; 3]) -> [Id; 3] {
     core::array::from_fn(|i| {
         let (j, k) = ((i + 1) % 3, (i + 2) % 3);
         let x = p.mul(a[j], b[k]);
@@ -68,7 +76,7 @@ fn cross(p: &mut Program, a: &[Id; 3], b: &[Id; 3]) -> [Id; 3] {
     })
 }
 
-fn dot(p: &mut Program, a: &[Id; 3], b: &[Id; 3]) -> Id {
+pub(crate) fn dot(p: &mut Program, a: &[Id; 3], b: &[Id; 3]) -> Id {
     let terms: Vec<Id> = (0..3).map(|i| p.mul(a[i], b[i])).collect();
     sum(p, &terms)
 }

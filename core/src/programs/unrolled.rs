@@ -15,9 +15,9 @@ use crate::trig::Angle;
 /// Which terms of `tau = M qdd + c + g` an unrolled Newton-Euler recursion evaluates.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Terms {
-    rates: bool,
-    accelerations: bool,
-    gravity: bool,
+    pub(crate) rates: bool,
+    pub(crate) accelerations: bool,
+    pub(crate) gravity: bool,
 }
 
 impl Terms {

@@ -102,6 +102,7 @@ fn stub(input: &DeriveInput) -> TokenStream {
             fn jacobian<__T: ::planar_arm::Real>(&self, _: #vt) -> ::planar_arm::nalgebra::SMatrix<__T, 6, #nn> #body
             fn gravity<__T: ::planar_arm::Real>(&self, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
             fn potential_energy<__T: ::planar_arm::Real>(&self, _: #vt) -> __T #body
+            fn inverse_dynamics<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
             fn model(&self) -> ::planar_arm::spatial::SpatialModel<#nn> #body
             fn inverse_kinematics(&self, _: &::planar_arm::nalgebra::Isometry3<#F64>)
                 -> ::core::result::Result<::planar_arm::spatial::IkSolutions<#nn>, ::planar_arm::ArmError> #body

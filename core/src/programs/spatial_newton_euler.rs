@@ -1,0 +1,231 @@
+//! The recursive Newton-Euler algorithm unrolled for one spatial arm, each link's quantities in
+//! its own frame, so that the constant parts of the joints' transformations (a Denavit-Hartenberg
+//! twist of pi/2 is a permutation with a sign) fold into the program and only each joint's
+//! motion costs arithmetic.
+//!
+//! Joint `i`'s transformation is `pre * motion(q_i) * post` (`frames::joint_parts`). The point
+//! `A_i`, `pre`'s origin, is on the joint's axis; in link `i`'s frame it sits at
+//! `-post_R^T post_p`, a constant, as is the axis `z_i = post_R^T u`. With `Q_i` the rotation
+//! taking link `i - 1`'s coordinates to link `i`'s, `w`, `dw` the angular velocity and
+//! acceleration and `a` the acceleration of the frame's origin:
+//!
+//! ```text
+//! w_i  = Q_i w_{i-1} + z_i qd_i                                 (a slide: Q_i w_{i-1})
+//! dw_i = Q_i dw_{i-1} + z_i qdd_i + (Q_i w_{i-1}) x z_i qd_i    (a slide: Q_i dw_{i-1})
+//! a_A  = Q_i (a_{i-1} + dw_{i-1} x pre_p + w_{i-1} x (w_{i-1} x pre_p))
+//! a_i  = a_A + dw_i x r_i + w_i x (w_i x r_i)                   (r_i = post_R^T post_p)
+//!        (a slide: r_i + z_i q_i, and + 2 w_i x z_i qd_i + z_i qdd_i)
+//! ```
+//!
+//! from `a_0 = -g`; inwards, each link's force `f` and moment `n` about its origin gather the
+//! links beyond, the torque is `z_i . (n_i + r_i x f_i)` (the moment about `A_i`) or the force
+//! `z_i . f_i`, and link `i - 1` receives `Q_i^T f_i` and `Q_i^T (n_i + r_i x f_i) + pre_p x
+//! Q_i^T f_i`.
+
+use crate::algebra::ring::int;
+use crate::mechanics::planar::JointKind;
+use crate::mechanics::spatial::frames::{joint_parts, motion};
+use crate::mechanics::spatial::spec::SpatialArmSpec;
+use crate::programs::method::Method;
+use crate::programs::spatial::{cross, dot, Nodes};
+use crate::programs::unrolled::Terms;
+use crate::slp::{Id, Input, Program};
+
+type V3 = [Id; 3];
+
+fn add(p: &mut Program, a: &V3, b: &V3) -> V3 {
+    core::array::from_fn(|k| p.add(a[k], b[k]))
+}
+
+fn scale(p: &mut Program, a: &V3, s: Id) -> V3 {
+    core::array::from_fn(|k| p.mul(a[k], s))
+}
+
+/// `w x (w x r) + dw x r`: the acceleration of a point `r` from the origin of a body turning at
+/// `w` and accelerating at `dw`, less the origin's.
+fn carried(p: &mut Program, w: &V3, dw: &V3, r: &V3) -> V3 {
+    let wr = cross(p, w, r);
+    let centripetal = cross(p, w, &wr);
+    let tangential = cross(p, dw, r);
+    add(p, &centripetal, &tangential)
+}
+
+/// A joint's constants as nodes, and its rotation `Q_i` in three factors applied one by one.
+struct Joint {
+    kind: JointKind,
+    pre: Nodes,
+    turn: Nodes,
+    post: Nodes,
+    /// The axis in the link's frame, and the vector from `A_i` to the link frame's origin.
+    z: V3,
+    r: V3,
+}
+
+impl Joint {
+    fn new(p: &mut Program, arm: &SpatialArmSpec, j: usize) -> Self {
+        let spec = &arm.joints[j];
+        let (pre, u, post) = joint_parts(spec);
+        let pre = Nodes::of(p, &pre);
+        let post = Nodes::of(p, &post);
+        let turn = match spec.kind {
+            JointKind::Revolute => Nodes::of(p, &motion(spec.kind, &u, j)),
+            // A slide does not turn: its rotation is the identity.
+            JointKind::Prismatic => {
+                Nodes::of(p, &crate::mechanics::spatial::frames::Frame::identity())
+            }
+        };
+        let u: V3 = core::array::from_fn(|k| p.poly(&u[k]));
+        let z = post.rotate_back(p, &u);
+        let r = post.rotate_back(p, &post.p);
+        Self {
+            kind: spec.kind,
+            pre,
+            turn,
+            post,
+            z,
+            r,
+        }
+    }
+
+    /// `Q_i v`: from link `i - 1`'s axes to link `i`'s.
+    fn inward(&self, p: &mut Program, v: &V3) -> V3 {
+        let v = self.pre.rotate_back(p, v);
+        let v = self.turn.rotate_back(p, &v);
+        self.post.rotate_back(p, &v)
+    }
+
+    /// `Q_i^T v`: from link `i`'s axes to link `i - 1`'s.
+    fn outward(&self, p: &mut Program, v: &V3) -> V3 {
+        let v = self.post.rotate(p, v);
+        let v = self.turn.rotate(p, &v);
+        self.pre.rotate(p, &v)
+    }
+}
+
+/// The joint forces of [`Terms`] by the unrolled recursion; `with_joint_terms` adds armature
+/// times acceleration and friction (`damping qd + frictionloss sign(qd)`) where the terms have
+/// accelerations and rates respectively.
+pub(crate) fn inverse_dynamics(
+    arm: &SpatialArmSpec,
+    terms: Terms,
+    with_joint_terms: bool,
+) -> Method {
+    let mut p = Program::new();
+    let n = arm.joints.len();
+    let zero = p.constant(int(0));
+    let rate = |p: &mut Program, on: bool, input: Input| if on { p.input(input) } else { zero };
+    let joints: Vec<Joint> = (0..n).map(|j| Joint::new(&mut p, arm, j)).collect();
+    let (mut w, mut dw) = ([zero; 3], [zero; 3]);
+    let mut a: V3 = if terms.gravity {
+        core::array::from_fn(|k| {
+            let g = p.poly(&arm.gravity[k]);
+            p.neg(g)
+        })
+    } else {
+        [zero; 3]
+    };
+    // Outwards: each link's motion, and its inertial force and moment about its origin.
+    let mut loads = Vec::with_capacity(n);
+    for (j, joint) in joints.iter().enumerate() {
+        let qd = rate(&mut p, terms.rates, Input::Qd(j));
+        let qdd = rate(&mut p, terms.accelerations, Input::Qdd(j));
+        let carried_a = carried(&mut p, &w, &dw, &joint.pre.p);
+        let at_axis = add(&mut p, &a, &carried_a);
+        let a_axis = joint.inward(&mut p, &at_axis);
+        let w_in = joint.inward(&mut p, &w);
+        let dw_in = joint.inward(&mut p, &dw);
+        let (r, slide_terms) = match joint.kind {
+            JointKind::Revolute => {
+                let spin = scale(&mut p, &joint.z, qd);
+                w = add(&mut p, &w_in, &spin);
+                let push = scale(&mut p, &joint.z, qdd);
+                let gyro = cross(&mut p, &w_in, &spin);
+                let sum = add(&mut p, &dw_in, &push);
+                dw = add(&mut p, &sum, &gyro);
+                (joint.r, [zero; 3])
+            }
+            JointKind::Prismatic => {
+                w = w_in;
+                dw = dw_in;
+                let q = p.input(Input::Q(j));
+                let along = scale(&mut p, &joint.z, q);
+                let r = add(&mut p, &joint.r, &along);
+                let v_rel = scale(&mut p, &joint.z, qd);
+                let coriolis = cross(&mut p, &w, &v_rel);
+                let two = p.constant(int(2));
+                let coriolis = scale(&mut p, &coriolis, two);
+                let a_rel = scale(&mut p, &joint.z, qdd);
+                (r, add(&mut p, &coriolis, &a_rel))
+            }
+        };
+        let carried_o = carried(&mut p, &w, &dw, &r);
+        let sum = add(&mut p, &a_axis, &carried_o);
+        a = add(&mut p, &sum, &slide_terms);
+        let spec = &arm.joints[j];
+        let mass = p.poly(&spec.mass);
+        let com: V3 = core::array::from_fn(|k| p.poly(&spec.com[k]));
+        let carried_c = carried(&mut p, &w, &dw, &com);
+        let a_com = add(&mut p, &a, &carried_c);
+        let force = scale(&mut p, &a_com, mass);
+        let [xx, yy, zz, xy, xz, yz] = core::array::from_fn(|k| p.poly(&spec.inertia[k]));
+        let tensor = [[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]];
+        let times = |p: &mut Program, v: &V3| -> V3 {
+            core::array::from_fn(|i| {
+                let terms: Vec<Id> = (0..3).map(|k| p.mul(tensor[i][k], v[k])).collect();
+                crate::programs::spatial::sum(p, &terms)
+            })
+        };
+        let i_dw = times(&mut p, &dw);
+        let i_w = times(&mut p, &w);
+        let gyro = cross(&mut p, &w, &i_w);
+        let about_com = add(&mut p, &i_dw, &gyro);
+        let lever = cross(&mut p, &com, &force);
+        let moment = add(&mut p, &about_com, &lever);
+        loads.push((force, moment, r));
+    }
+    // Inwards: what each joint transmits, read on its axis.
+    let (mut f_out, mut n_out) = ([zero; 3], [zero; 3]);
+    let mut torques = vec![zero; n];
+    for j in (0..n).rev() {
+        let (force, moment, r) = &loads[j];
+        let f = add(&mut p, force, &f_out);
+        let n_origin = add(&mut p, moment, &n_out);
+        let shift = cross(&mut p, r, &f);
+        let n_axis = add(&mut p, &n_origin, &shift);
+        let joint = &joints[j];
+        torques[j] = match joint.kind {
+            JointKind::Revolute => dot(&mut p, &joint.z, &n_axis),
+            JointKind::Prismatic => dot(&mut p, &joint.z, &f),
+        };
+        if j > 0 {
+            f_out = joint.outward(&mut p, &f);
+            let back = joint.outward(&mut p, &n_axis);
+            let lever = cross(&mut p, &joint.pre.p, &f_out);
+            n_out = add(&mut p, &back, &lever);
+        }
+    }
+    let mut outputs = Vec::with_capacity(n);
+    for (j, spec) in arm.joints.iter().enumerate() {
+        let mut t = torques[j];
+        if with_joint_terms && terms.accelerations {
+            let armature = p.poly(&spec.armature);
+            let qdd = p.input(Input::Qdd(j));
+            let reflected = p.mul(armature, qdd);
+            t = p.add(t, reflected);
+        }
+        if with_joint_terms && terms.rates {
+            let qd = p.input(Input::Qd(j));
+            let damping = p.poly(&spec.damping);
+            let viscous = p.mul(damping, qd);
+            let loss = p.poly(&spec.frictionloss);
+            let sign = p.sign(qd);
+            let coulomb = p.mul(loss, sign);
+            let friction = p.add(viscous, coulomb);
+            t = p.add(t, friction);
+        }
+        outputs.push((format!("t{}", j + 1), t));
+    }
+    Method::new(p, outputs).described(
+        "the recursive Newton-Euler algorithm unrolled, each link in its own frame, the joints' constant transformations folded in",
+    )
+}
