@@ -90,7 +90,8 @@ def crate(root, n, params, lengths=False, repo=REPO, derivatives=False, prismati
 def spatial_crate(root, n, params, repo=REPO):
     """A crate deriving an `n`-joint spatial arm: the PUMA 560 at six joints, Franka's Panda
     (modified DH) at seven, otherwise a chain of alternating twists; with `params` its masses
-    and centres of mass are run-time parameters."""
+    and centres of mass are run-time parameters. It calls the kinematics, the closed-form IK,
+    and the inverse and forward dynamics, mass matrix and bias, so that those are compiled."""
     name = f"spatial{n}{'p' if params else ''}"
     path = os.path.join(root, name)
     os.makedirs(os.path.join(path, "src"), exist_ok=True)
@@ -138,7 +139,12 @@ def spatial_crate(root, n, params, repo=REPO):
             "    let j = arm.jacobian(&q);\n"
             "    let g = arm.gravity(&q);\n"
             "    let ik = arm.inverse_kinematics(&pose).map_or(0, |s| s.len());\n"
+            "    let tau = arm.inverse_dynamics(&q, &q, &q);\n"
+            "    let qdd = arm.forward_dynamics(&q, &q, &tau);\n"
+            "    let m = arm.mass_matrix(&q);\n"
+            "    let h = arm.bias(&q, &q);\n"
             '    println!("{} {} {} {ik}", pose.translation.vector.norm(), j.norm(), g.norm());\n'
+            '    println!("{} {} {} {}", tau.norm(), qdd.norm(), m.norm(), h.norm());\n'
             "}\n"
         )
     return name, path

@@ -3,4 +3,5 @@
 
 mod planar;
 
+pub(crate) use planar::finite;
 pub use planar::PlanarArm;

@@ -513,11 +513,14 @@ fn random_q<const N: usize>(rng: &mut Rng, model: &SpatialModel<N>) -> SVector<f
 
 /// Tool and link poses, Jacobian, gravity and potential energy against the reference's, at
 /// 200 random configurations.
+/// Every method against the reference at 200 random states; how many of them had a mass
+/// matrix regular enough to check the forward dynamics.
 fn against_reference<A: SpatialArm<N>, const N: usize>(
     arm: &A,
     hand: &SpatialModel<N>,
     rng: &mut Rng,
-) {
+) -> usize {
+    let mut solved = 0;
     same_model(&arm.model(), hand);
     for _ in 0..200 {
         let q = random_q(rng, hand);
@@ -554,7 +557,46 @@ fn against_reference<A: SpatialArm<N>, const N: usize>(
             (tau - tr).amax() < 1e-12 * (1.0 + tr.amax()),
             "{q} {qd} {qdd}: {tau} vs {tr}"
         );
+        let m = arm.mass_matrix(&q);
+        let mr = reference::mass_matrix(hand, &q);
+        let scale = 1.0 + mr.amax();
+        assert!((m - mr).amax() < 1e-12 * scale, "{q}: {m} vs {mr}");
+        let c = arm.coriolis(&q, &qd);
+        let cr = reference::coriolis(hand, &q, &qd);
+        assert!(
+            (c - cr).amax() < 1e-12 * (1.0 + cr.amax()),
+            "{q}: {c} vs {cr}"
+        );
+        let f = arm.friction(&qd);
+        assert!((f - reference::friction(hand, &qd)).amax() < 1e-14, "{qd}");
+        let h = arm.bias(&q, &qd);
+        let hr = reference::bias_forces(hand, &q, &qd);
+        assert!(
+            (h - hr).amax() < 1e-12 * (1.0 + hr.amax()),
+            "{q}: {h} vs {hr}"
+        );
+        let (m2, h2) = arm.mass_matrix_and_bias(&q, &qd);
+        assert!((m2 - m).amax() < 1e-13 * scale && (h2 - h).amax() < 1e-13 * (1.0 + h.amax()));
+        let t = arm.kinetic_energy(&q, &qd);
+        let trf = reference::kinetic_energy(hand, &q, &qd);
+        assert!((t - trf).abs() < 1e-12 * (1.0 + trf), "{t} vs {trf}");
+        // The kinematic arms' last links are point masses on their own axes: M is singular
+        // there, and the solve is checked where it is not.
+        let eigenvalues = planar_arm::nalgebra::DMatrix::from_column_slice(N, N, mr.as_slice())
+            .symmetric_eigenvalues();
+        if eigenvalues.min() > 1e-9 * eigenvalues.max() {
+            let back = arm.forward_dynamics(&q, &qd, &tr);
+            let want = reference::forward_dynamics(hand, &q, &qd, &tr);
+            assert!(
+                (back - qdd).amax() < 1e-8 * (1.0 + qdd.amax()),
+                "{q}: {back} vs {qdd}"
+            );
+            assert!((back - want).amax() < 1e-8 * (1.0 + want.amax()));
+            assert_eq!(arm.try_forward_dynamics(&q, &qd, &tr), Ok(back));
+            solved += 1;
+        }
     }
+    solved
 }
 
 /// The Jacobian against central differences of the tool pose (the angular rows from the
@@ -590,17 +632,21 @@ fn against_differences<A: SpatialArm<N>, const N: usize>(
     }
 }
 
-fn check<A: SpatialArm<N>, const N: usize>(arm: &A, hand: &SpatialModel<N>, seed: u64) {
+/// [`against_reference`] and [`against_differences`]; the number of forward-dynamics checks.
+fn check<A: SpatialArm<N>, const N: usize>(arm: &A, hand: &SpatialModel<N>, seed: u64) -> usize {
     let mut rng = Rng(seed);
-    against_reference(arm, hand, &mut rng);
+    let solved = against_reference(arm, hand, &mut rng);
     against_differences(arm, hand, &mut rng);
+    solved
 }
 
 #[test]
 fn the_puma_in_each_convention_matches_the_reference() {
-    check(&Puma560::default(), &puma_model(), 1);
-    check(&PumaMdh::default(), &puma_mdh_model(), 2);
-    check(&PumaUrdf::default(), &puma_urdf_model(), 3);
+    // Corke's PUMA has inertia about every joint's axis: M is regular everywhere. The other
+    // two conventions' PUMAs are massless (M = 0): kinematics only.
+    assert_eq!(check(&Puma560::default(), &puma_model(), 1), 200);
+    assert_eq!(check(&PumaMdh::default(), &puma_mdh_model(), 2), 0);
+    assert_eq!(check(&PumaUrdf::default(), &puma_urdf_model(), 3), 0);
 }
 
 #[test]
@@ -665,7 +711,7 @@ fn zero_poses_are_the_hand_computed_ones() {
 
 #[test]
 fn odd_twists_slides_and_run_time_parameters_match_the_reference() {
-    check(&odd_dh(), &odd_dh_model(), 8);
+    assert!(check(&odd_dh(), &odd_dh_model(), 8) > 100);
     check(&OddMdh::default(), &odd_mdh_model(), 9);
     check(&OddUrdf::default(), &odd_urdf_model(), 10);
     check(&Single::default(), &single_model(), 11);
@@ -962,3 +1008,30 @@ fn roll_pitch_yaw_are_urdf_s_and_lose_accuracy_near_gimbal_lock() {
         assert!(UnitQuaternion::from_euler_angles(a, b, c).angle_to(&near) < 1e-9);
     }
 }
+
+/// A massless arm (written for its kinematics) has M = 0: its forward dynamics cannot be
+/// finite, and `try_forward_dynamics` says so; NaN input is named.
+#[test]
+fn singular_or_bad_dynamics_give_errors() {
+    let q = SVector::<f64, 6>::from([0.1, -0.4, 0.3, 1.0, 0.5, -0.2]);
+    let (qd, tau) = (SVector::repeat(0.5), SVector::repeat(1.0));
+    assert_eq!(PumaMdh::default().mass_matrix(&q), SMatrixOf6::zeros());
+    assert_eq!(
+        PumaMdh::default().try_forward_dynamics(&q, &qd, &tau),
+        Err(ArmError::NonFinite { argument: "result" })
+    );
+    let mut bad = q;
+    bad[2] = f64::NAN;
+    let puma = Puma560::default();
+    assert_eq!(
+        puma.try_forward_dynamics(&bad, &qd, &tau),
+        Err(ArmError::NonFinite { argument: "q" })
+    );
+    assert_eq!(
+        puma.try_inverse_dynamics(&q, &qd, &SVector::repeat(f64::INFINITY)),
+        Err(ArmError::NonFinite { argument: "qdd" })
+    );
+    assert!(puma.try_forward_dynamics(&q, &qd, &tau).is_ok());
+}
+
+type SMatrixOf6 = planar_arm::nalgebra::SMatrix<f64, 6, 6>;

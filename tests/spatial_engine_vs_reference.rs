@@ -385,6 +385,18 @@ fn compare<const N: usize>(d: &ArmDraw, derived: &SpatialDerived) -> Result<(), 
             "tau{i}: {got} vs {expected}"
         );
     }
+    let m = outputs(&derived.mass_matrix, qs, reach);
+    let expected = reference::mass_matrix(&model, &q);
+    let scale = 1.0 + expected.amax();
+    for i in 0..N {
+        for j in 0..N {
+            let got = m[&format!("m{}{}", i + 1, j + 1)];
+            prop_assert!(
+                (got - expected[(i, j)]).abs() < 1e-12 * scale,
+                "M{i}{j}: {got} vs {expected}"
+            );
+        }
+    }
     Ok(())
 }
 

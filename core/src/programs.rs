@@ -10,5 +10,6 @@ pub mod frozen;
 pub mod method;
 pub mod slp;
 pub(crate) mod spatial;
+pub(crate) mod spatial_composite;
 pub(crate) mod spatial_newton_euler;
 pub(crate) mod unrolled;

@@ -321,7 +321,11 @@ pub trait PlanarArm<const N: usize> {
     }
 }
 
-fn finite<const N: usize>(v: &SVector<f64, N>, argument: &'static str) -> Result<(), ArmError> {
+/// `Err(NonFinite { argument })` if `v` holds NaN or an infinity.
+pub(crate) fn finite<const N: usize>(
+    v: &SVector<f64, N>,
+    argument: &'static str,
+) -> Result<(), ArmError> {
     if v.iter().all(|x| x.is_finite()) {
         Ok(())
     } else {

@@ -141,6 +141,53 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
         d.inverse_dynamics.clone(),
         Box::new(vector),
     ));
+    let qd = Param::Joints("qd", Input::Qd);
+    let v = quote!(::planar_arm::nalgebra::SVector<__T, #nn>);
+    let mm = quote!(::planar_arm::nalgebra::SMatrix<__T, #nn, #nn>);
+    fns.push(Fn::new(
+        "mass_matrix",
+        vec![q],
+        mm.clone(),
+        "The mass matrix M(q), each joint's armature on its diagonal.".to_string(),
+        d.mass_matrix.clone(),
+        Box::new(move |ids| matrix(n, n, ids)),
+    ));
+    fns.push(Fn::new(
+        "coriolis",
+        vec![q, qd],
+        v.clone(),
+        "The velocity-product (Coriolis and centrifugal) forces c(q, qd).".to_string(),
+        d.coriolis.clone(),
+        Box::new(vector),
+    ));
+    fns.push(Fn::new(
+        "friction",
+        vec![qd],
+        v.clone(),
+        "The joint friction f = damping qd + frictionloss sign(qd), sign(0) = 0.".to_string(),
+        d.friction.clone(),
+        Box::new(vector),
+    ));
+    fns.push(Fn::new(
+        "bias",
+        vec![q, qd],
+        v.clone(),
+        "The bias h = c + g + f.".to_string(),
+        d.bias.clone(),
+        Box::new(vector),
+    ));
+    fns.push(Fn::new(
+        "mass_matrix_and_bias",
+        vec![q, qd],
+        quote!((#mm, #v)),
+        "The mass matrix and the bias h = c + g + f in one program.".to_string(),
+        d.mass_matrix_and_bias.clone(),
+        Box::new(move |ids| {
+            let m = matrix(n, n, &ids[..n * n]);
+            let h = vector(&ids[n * n..]);
+            quote!((#m, #h))
+        }),
+    ));
     let mut body = Vec::with_capacity(fns.len() + 3);
     for f in &fns {
         body.push(emit_fn(n, f, None)?);

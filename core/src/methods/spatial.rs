@@ -9,6 +9,7 @@ use crate::mechanics::spatial::frames::{SpatialKinematics, EXPANSION_BUDGET};
 use crate::mechanics::spatial::spec::SpatialArmSpec;
 use crate::programs::method::Method;
 use crate::programs::spatial as product;
+use crate::programs::spatial_composite as composite;
 use crate::programs::spatial_newton_euler as newton_euler;
 use crate::programs::unrolled::Terms;
 use crate::slp::Program;
@@ -31,6 +32,40 @@ pub struct SpatialDerived {
     pub potential_energy: Method,
     /// The joint forces `M qdd + c + g + f`, by the unrolled Newton-Euler recursion.
     pub inverse_dynamics: Method,
+    /// The mass matrix, row-major, by the unrolled composite-rigid-body algorithm.
+    pub mass_matrix: Method,
+    /// The velocity-product forces `c`.
+    pub coriolis: Method,
+    /// The bias `c + g + f`.
+    pub bias: Method,
+    /// The joint friction `f`.
+    pub friction: Method,
+    /// The mass matrix (row-major) and the bias in one program.
+    pub mass_matrix_and_bias: Method,
+}
+
+impl SpatialDerived {
+    /// The dynamics' programs, which do not depend on the form the kinematics take.
+    fn with_dynamics(
+        arm: &SpatialArmSpec,
+        kinematics: Option<SpatialKinematics>,
+        [tip_pose, link_poses, jacobian, gravity, potential_energy]: [Method; 5],
+    ) -> Self {
+        Self {
+            kinematics,
+            tip_pose,
+            link_poses,
+            jacobian,
+            gravity,
+            potential_energy,
+            inverse_dynamics: newton_euler::inverse_dynamics(arm, Terms::ALL, true),
+            mass_matrix: composite::mass_matrix(arm),
+            coriolis: newton_euler::inverse_dynamics(arm, Terms::CORIOLIS, false),
+            bias: newton_euler::inverse_dynamics(arm, Terms::BIAS, true),
+            friction: newton_euler::friction_method(arm),
+            mass_matrix_and_bias: composite::mass_matrix_and_bias(arm),
+        }
+    }
 }
 
 /// The program that evaluates `rows` term by term.
@@ -107,15 +142,14 @@ impl SpatialDerived {
     pub fn in_form(arm: &SpatialArmSpec, form: SpatialForm) -> Self {
         let (g_product, v_product) = product::gravity(arm);
         let Some(k) = SpatialKinematics::derive_within(arm, EXPANSION_BUDGET) else {
-            return Self {
-                kinematics: None,
-                tip_pose: product::tip_pose(arm),
-                link_poses: product::link_poses(arm),
-                jacobian: product::jacobian(arm),
-                gravity: g_product,
-                potential_energy: v_product,
-                inverse_dynamics: newton_euler::inverse_dynamics(arm, Terms::ALL, true),
-            };
+            let kinematics = [
+                product::tip_pose(arm),
+                product::link_poses(arm),
+                product::jacobian(arm),
+                g_product,
+                v_product,
+            ];
+            return Self::with_dynamics(arm, None, kinematics);
         };
         let tip_pose = form.pick(product::tip_pose(arm), expanded(&frame_rows("", &k.tool)));
         let link_rows: Vec<(String, &Expr<Poly>)> = k
@@ -137,15 +171,11 @@ impl SpatialDerived {
             v_product,
             expanded(&[("v".to_string(), &k.potential_energy)]),
         );
-        Self {
-            kinematics: Some(k),
-            tip_pose,
-            link_poses,
-            jacobian,
-            gravity,
-            potential_energy,
-            inverse_dynamics: newton_euler::inverse_dynamics(arm, Terms::ALL, true),
-        }
+        Self::with_dynamics(
+            arm,
+            Some(k),
+            [tip_pose, link_poses, jacobian, gravity, potential_energy],
+        )
     }
 }
 

@@ -31,13 +31,13 @@ use crate::programs::spatial::{cross, dot, Nodes};
 use crate::programs::unrolled::Terms;
 use crate::slp::{Id, Input, Program};
 
-type V3 = [Id; 3];
+pub(crate) type V3 = [Id; 3];
 
-fn add(p: &mut Program, a: &V3, b: &V3) -> V3 {
+pub(crate) fn add(p: &mut Program, a: &V3, b: &V3) -> V3 {
     core::array::from_fn(|k| p.add(a[k], b[k]))
 }
 
-fn scale(p: &mut Program, a: &V3, s: Id) -> V3 {
+pub(crate) fn scale(p: &mut Program, a: &V3, s: Id) -> V3 {
     core::array::from_fn(|k| p.mul(a[k], s))
 }
 
@@ -51,18 +51,18 @@ fn carried(p: &mut Program, w: &V3, dw: &V3, r: &V3) -> V3 {
 }
 
 /// A joint's constants as nodes, and its rotation `Q_i` in three factors applied one by one.
-struct Joint {
-    kind: JointKind,
-    pre: Nodes,
+pub(crate) struct Joint {
+    pub(crate) kind: JointKind,
+    pub(crate) pre: Nodes,
     turn: Nodes,
     post: Nodes,
     /// The axis in the link's frame, and the vector from `A_i` to the link frame's origin.
-    z: V3,
-    r: V3,
+    pub(crate) z: V3,
+    pub(crate) r: V3,
 }
 
 impl Joint {
-    fn new(p: &mut Program, arm: &SpatialArmSpec, j: usize) -> Self {
+    pub(crate) fn new(p: &mut Program, arm: &SpatialArmSpec, j: usize) -> Self {
         let spec = &arm.joints[j];
         let (pre, u, post) = joint_parts(spec);
         let pre = Nodes::of(p, &pre);
@@ -88,14 +88,14 @@ impl Joint {
     }
 
     /// `Q_i v`: from link `i - 1`'s axes to link `i`'s.
-    fn inward(&self, p: &mut Program, v: &V3) -> V3 {
+    pub(crate) fn inward(&self, p: &mut Program, v: &V3) -> V3 {
         let v = self.pre.rotate_back(p, v);
         let v = self.turn.rotate_back(p, &v);
         self.post.rotate_back(p, &v)
     }
 
     /// `Q_i^T v`: from link `i`'s axes to link `i - 1`'s.
-    fn outward(&self, p: &mut Program, v: &V3) -> V3 {
+    pub(crate) fn outward(&self, p: &mut Program, v: &V3) -> V3 {
         let v = self.post.rotate(p, v);
         let v = self.turn.rotate(p, &v);
         self.pre.rotate(p, &v)
@@ -111,10 +111,50 @@ pub(crate) fn inverse_dynamics(
     with_joint_terms: bool,
 ) -> Method {
     let mut p = Program::new();
+    let torques = newton_euler(&mut p, arm, terms, with_joint_terms);
+    let outputs = torques
+        .into_iter()
+        .enumerate()
+        .map(|(j, t)| (format!("t{}", j + 1), t))
+        .collect();
+    Method::new(p, outputs).described(DESCRIPTION)
+}
+
+/// How the recursion's methods are evaluated, for their docs.
+pub(crate) const DESCRIPTION: &str = "the recursive Newton-Euler algorithm unrolled, each link in its own frame, the joints' constant transformations folded in";
+
+/// Joint `j`'s friction `damping qd + frictionloss sign(qd)`.
+pub(crate) fn friction(p: &mut Program, arm: &SpatialArmSpec, j: usize) -> Id {
+    let spec = &arm.joints[j];
+    let qd = p.input(Input::Qd(j));
+    let damping = p.poly(&spec.damping);
+    let viscous = p.mul(damping, qd);
+    let loss = p.poly(&spec.frictionloss);
+    let sign = p.sign(qd);
+    let coulomb = p.mul(loss, sign);
+    p.add(viscous, coulomb)
+}
+
+/// The joints' friction `damping qd + frictionloss sign(qd)` alone.
+pub(crate) fn friction_method(arm: &SpatialArmSpec) -> Method {
+    let mut p = Program::new();
+    let outputs = (0..arm.joints.len())
+        .map(|j| (format!("f{}", j + 1), friction(&mut p, arm, j)))
+        .collect();
+    Method::new(p, outputs)
+}
+
+/// [`inverse_dynamics`]'s torques as nodes of `p`.
+pub(crate) fn newton_euler(
+    p: &mut Program,
+    arm: &SpatialArmSpec,
+    terms: Terms,
+    with_joint_terms: bool,
+) -> Vec<Id> {
     let n = arm.joints.len();
     let zero = p.constant(int(0));
     let rate = |p: &mut Program, on: bool, input: Input| if on { p.input(input) } else { zero };
-    let joints: Vec<Joint> = (0..n).map(|j| Joint::new(&mut p, arm, j)).collect();
+    let joints: Vec<Joint> = (0..n).map(|j| Joint::new(p, arm, j)).collect();
     let (mut w, mut dw) = ([zero; 3], [zero; 3]);
     let mut a: V3 = if terms.gravity {
         core::array::from_fn(|k| {
@@ -127,46 +167,46 @@ pub(crate) fn inverse_dynamics(
     // Outwards: each link's motion, and its inertial force and moment about its origin.
     let mut loads = Vec::with_capacity(n);
     for (j, joint) in joints.iter().enumerate() {
-        let qd = rate(&mut p, terms.rates, Input::Qd(j));
-        let qdd = rate(&mut p, terms.accelerations, Input::Qdd(j));
-        let carried_a = carried(&mut p, &w, &dw, &joint.pre.p);
-        let at_axis = add(&mut p, &a, &carried_a);
-        let a_axis = joint.inward(&mut p, &at_axis);
-        let w_in = joint.inward(&mut p, &w);
-        let dw_in = joint.inward(&mut p, &dw);
+        let qd = rate(p, terms.rates, Input::Qd(j));
+        let qdd = rate(p, terms.accelerations, Input::Qdd(j));
+        let carried_a = carried(p, &w, &dw, &joint.pre.p);
+        let at_axis = add(p, &a, &carried_a);
+        let a_axis = joint.inward(p, &at_axis);
+        let w_in = joint.inward(p, &w);
+        let dw_in = joint.inward(p, &dw);
         let (r, slide_terms) = match joint.kind {
             JointKind::Revolute => {
-                let spin = scale(&mut p, &joint.z, qd);
-                w = add(&mut p, &w_in, &spin);
-                let push = scale(&mut p, &joint.z, qdd);
-                let gyro = cross(&mut p, &w_in, &spin);
-                let sum = add(&mut p, &dw_in, &push);
-                dw = add(&mut p, &sum, &gyro);
+                let spin = scale(p, &joint.z, qd);
+                w = add(p, &w_in, &spin);
+                let push = scale(p, &joint.z, qdd);
+                let gyro = cross(p, &w_in, &spin);
+                let sum = add(p, &dw_in, &push);
+                dw = add(p, &sum, &gyro);
                 (joint.r, [zero; 3])
             }
             JointKind::Prismatic => {
                 w = w_in;
                 dw = dw_in;
                 let q = p.input(Input::Q(j));
-                let along = scale(&mut p, &joint.z, q);
-                let r = add(&mut p, &joint.r, &along);
-                let v_rel = scale(&mut p, &joint.z, qd);
-                let coriolis = cross(&mut p, &w, &v_rel);
+                let along = scale(p, &joint.z, q);
+                let r = add(p, &joint.r, &along);
+                let v_rel = scale(p, &joint.z, qd);
+                let coriolis = cross(p, &w, &v_rel);
                 let two = p.constant(int(2));
-                let coriolis = scale(&mut p, &coriolis, two);
-                let a_rel = scale(&mut p, &joint.z, qdd);
-                (r, add(&mut p, &coriolis, &a_rel))
+                let coriolis = scale(p, &coriolis, two);
+                let a_rel = scale(p, &joint.z, qdd);
+                (r, add(p, &coriolis, &a_rel))
             }
         };
-        let carried_o = carried(&mut p, &w, &dw, &r);
-        let sum = add(&mut p, &a_axis, &carried_o);
-        a = add(&mut p, &sum, &slide_terms);
+        let carried_o = carried(p, &w, &dw, &r);
+        let sum = add(p, &a_axis, &carried_o);
+        a = add(p, &sum, &slide_terms);
         let spec = &arm.joints[j];
         let mass = p.poly(&spec.mass);
         let com: V3 = core::array::from_fn(|k| p.poly(&spec.com[k]));
-        let carried_c = carried(&mut p, &w, &dw, &com);
-        let a_com = add(&mut p, &a, &carried_c);
-        let force = scale(&mut p, &a_com, mass);
+        let carried_c = carried(p, &w, &dw, &com);
+        let a_com = add(p, &a, &carried_c);
+        let force = scale(p, &a_com, mass);
         let [xx, yy, zz, xy, xz, yz] = core::array::from_fn(|k| p.poly(&spec.inertia[k]));
         let tensor = [[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]];
         let times = |p: &mut Program, v: &V3| -> V3 {
@@ -175,12 +215,12 @@ pub(crate) fn inverse_dynamics(
                 crate::programs::spatial::sum(p, &terms)
             })
         };
-        let i_dw = times(&mut p, &dw);
-        let i_w = times(&mut p, &w);
-        let gyro = cross(&mut p, &w, &i_w);
-        let about_com = add(&mut p, &i_dw, &gyro);
-        let lever = cross(&mut p, &com, &force);
-        let moment = add(&mut p, &about_com, &lever);
+        let i_dw = times(p, &dw);
+        let i_w = times(p, &w);
+        let gyro = cross(p, &w, &i_w);
+        let about_com = add(p, &i_dw, &gyro);
+        let lever = cross(p, &com, &force);
+        let moment = add(p, &about_com, &lever);
         loads.push((force, moment, r));
     }
     // Inwards: what each joint transmits, read on its axis.
@@ -188,44 +228,33 @@ pub(crate) fn inverse_dynamics(
     let mut torques = vec![zero; n];
     for j in (0..n).rev() {
         let (force, moment, r) = &loads[j];
-        let f = add(&mut p, force, &f_out);
-        let n_origin = add(&mut p, moment, &n_out);
-        let shift = cross(&mut p, r, &f);
-        let n_axis = add(&mut p, &n_origin, &shift);
+        let f = add(p, force, &f_out);
+        let n_origin = add(p, moment, &n_out);
+        let shift = cross(p, r, &f);
+        let n_axis = add(p, &n_origin, &shift);
         let joint = &joints[j];
         torques[j] = match joint.kind {
-            JointKind::Revolute => dot(&mut p, &joint.z, &n_axis),
-            JointKind::Prismatic => dot(&mut p, &joint.z, &f),
+            JointKind::Revolute => dot(p, &joint.z, &n_axis),
+            JointKind::Prismatic => dot(p, &joint.z, &f),
         };
         if j > 0 {
-            f_out = joint.outward(&mut p, &f);
-            let back = joint.outward(&mut p, &n_axis);
-            let lever = cross(&mut p, &joint.pre.p, &f_out);
-            n_out = add(&mut p, &back, &lever);
+            f_out = joint.outward(p, &f);
+            let back = joint.outward(p, &n_axis);
+            let lever = cross(p, &joint.pre.p, &f_out);
+            n_out = add(p, &back, &lever);
         }
     }
-    let mut outputs = Vec::with_capacity(n);
     for (j, spec) in arm.joints.iter().enumerate() {
-        let mut t = torques[j];
         if with_joint_terms && terms.accelerations {
             let armature = p.poly(&spec.armature);
             let qdd = p.input(Input::Qdd(j));
             let reflected = p.mul(armature, qdd);
-            t = p.add(t, reflected);
+            torques[j] = p.add(torques[j], reflected);
         }
         if with_joint_terms && terms.rates {
-            let qd = p.input(Input::Qd(j));
-            let damping = p.poly(&spec.damping);
-            let viscous = p.mul(damping, qd);
-            let loss = p.poly(&spec.frictionloss);
-            let sign = p.sign(qd);
-            let coulomb = p.mul(loss, sign);
-            let friction = p.add(viscous, coulomb);
-            t = p.add(t, friction);
+            let f = friction(p, arm, j);
+            torques[j] = p.add(torques[j], f);
         }
-        outputs.push((format!("t{}", j + 1), t));
     }
-    Method::new(p, outputs).described(
-        "the recursive Newton-Euler algorithm unrolled, each link in its own frame, the joints' constant transformations folded in",
-    )
+    torques
 }

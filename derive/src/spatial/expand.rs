@@ -103,6 +103,12 @@ fn stub(input: &DeriveInput) -> TokenStream {
             fn gravity<__T: ::planar_arm::Real>(&self, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
             fn potential_energy<__T: ::planar_arm::Real>(&self, _: #vt) -> __T #body
             fn inverse_dynamics<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
+            fn mass_matrix<__T: ::planar_arm::Real>(&self, _: #vt) -> ::planar_arm::nalgebra::SMatrix<__T, #nn, #nn> #body
+            fn coriolis<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
+            fn friction<__T: ::planar_arm::Real>(&self, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
+            fn bias<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
+            fn mass_matrix_and_bias<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt)
+                -> (::planar_arm::nalgebra::SMatrix<__T, #nn, #nn>, ::planar_arm::nalgebra::SVector<__T, #nn>) #body
             fn model(&self) -> ::planar_arm::spatial::SpatialModel<#nn> #body
             fn inverse_kinematics(&self, _: &::planar_arm::nalgebra::Isometry3<#F64>)
                 -> ::core::result::Result<::planar_arm::spatial::IkSolutions<#nn>, ::planar_arm::ArmError> #body
