@@ -339,7 +339,9 @@ fn kinematics_and_statics() {
 /// The two rods released from rest, q = (-1, 0.4), swing for 5 s under gravity; RK4 at 1 ms
 /// keeps their energy (no friction) to about 1e-11 J.
 fn simulate(arm: &Paper2) {
+    // The prelude's `Dynamics` trait, which the engine's `symbolic::Dynamics` above shadows.
     use planar_arm::sim::{from_fn, Rk4, Simulator};
+    use planar_arm::Dynamics as _;
     let energy =
         |q: &Vector2<f64>, qd: &Vector2<f64>| arm.kinetic_energy(q, qd) + arm.potential_energy(q);
     let start = Vector2::new(-1.0, 0.4);

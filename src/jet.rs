@@ -61,11 +61,11 @@ impl<const K: usize> Jet<K> {
 
     /// `(dtau/dq, dtau/dqd)` of `arm`'s generated inverse dynamics evaluated twice in jets,
     /// seeded once along the angles and once along the rates: what
-    /// [`PlanarArm::inverse_dynamics_derivatives`](crate::PlanarArm::inverse_dynamics_derivatives)
+    /// [`Dynamics::inverse_dynamics_derivatives`](crate::Dynamics::inverse_dynamics_derivatives)
     /// returns for arms too large for its derivatives to be emitted as code, and the check of
     /// the emitted ones.
     #[must_use]
-    pub fn inverse_dynamics_derivatives<A: crate::PlanarArm<K> + ?Sized>(
+    pub fn inverse_dynamics_derivatives<A: crate::Dynamics<K> + ?Sized>(
         arm: &A,
         q: &SVector<f64, K>,
         qd: &SVector<f64, K>,

@@ -254,7 +254,7 @@ pub mod __private;
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
 
-pub use arm::PlanarArm;
+pub use arm::{Dynamics, PlanarArm};
 pub use error::ArmError;
 pub use frozen::Frozen;
 pub use identification::Identification;
@@ -285,8 +285,8 @@ pub mod prelude {
     };
     pub use crate::spatial::{IkSolutions, SpatialArm};
     pub use crate::{
-        ArmError, Frozen, Identification, Joint, Linearize, Link, Model, Payload, PlanarArm,
-        Prismatic, Real, Revolute,
+        ArmError, Dynamics, Frozen, Identification, Joint, Linearize, Link, Model, Payload,
+        PlanarArm, Prismatic, Real, Revolute,
     };
     pub use nalgebra::{Isometry2, Isometry3, Point2, Point3, SMatrix, SVector, Vector2, Vector3};
 }

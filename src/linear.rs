@@ -3,13 +3,13 @@
 
 use nalgebra::{SMatrix, SVector};
 
-use crate::PlanarArm;
+use crate::Dynamics;
 
 /// The linearisation of `xd = f(x, u)` with state `x = (q, qd)` (2N) and input `u = tau` (N):
 /// `f(x, u) = (qd, forward_dynamics(q, qd, tau))`.
 ///
 /// Implemented for every arm of 1 to 32 links (`S = 2N`); nothing is generated for it. Built on
-/// [`PlanarArm::forward_dynamics_derivatives`]: exact to rounding, Coulomb friction's jump at
+/// [`Dynamics::forward_dynamics_derivatives`]: exact to rounding, Coulomb friction's jump at
 /// zero rate not differentiated.
 ///
 /// Its pairs are what the regulators take: [`lqr`](crate::lqr) the continuous `(A, B)` of
@@ -39,7 +39,7 @@ use crate::PlanarArm;
 /// assert!((ad - (a * 1e-3).exp()).amax() < 1e-12);
 /// # let _ = (b, bd);
 /// ```
-pub trait Linearize<const N: usize, const S: usize>: PlanarArm<N> {
+pub trait Linearize<const N: usize, const S: usize>: Dynamics<N> {
     /// `(A, B) = (df/dx, df/du)` at `(q, qd, tau)`: `A = [[0, I], [dqdd/dq, dqdd/dqd]]`,
     /// `B = [[0], [M^-1]]`.
     fn linearize(
@@ -81,7 +81,7 @@ pub trait Linearize<const N: usize, const S: usize>: PlanarArm<N> {
 /// The impl for one arm size: `$s = 2 N`, `$t = 3 N` (the augmented matrix).
 macro_rules! linearize {
     ($($n:literal $s:literal $t:literal),*) => {$(
-        impl<A: PlanarArm<$n> + ?Sized> Linearize<$n, $s> for A {
+        impl<A: Dynamics<$n> + ?Sized> Linearize<$n, $s> for A {
             #[cfg(feature = "std")]
             fn discretize(
                 &self,

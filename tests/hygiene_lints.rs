@@ -21,7 +21,7 @@
 
 use planar_arm::kinematics::{ClosedFormIk, TipForce, TipWrench};
 use planar_arm::nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2};
-use planar_arm::{ArmError, Link, PlanarArm, Revolute};
+use planar_arm::{ArmError, Dynamics, Link, PlanarArm, Revolute};
 
 #[derive(PlanarArm, Debug, Default)]
 #[arm(gravity = 9.81)]

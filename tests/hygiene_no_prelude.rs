@@ -3,7 +3,7 @@
 #![no_implicit_prelude]
 
 use ::planar_arm::nalgebra::SVector;
-use ::planar_arm::PlanarArm;
+use ::planar_arm::{Dynamics, PlanarArm};
 use ::std::assert;
 
 #[derive(::planar_arm::PlanarArm, ::std::default::Default)]

@@ -15,3 +15,4 @@ pub mod identification;
 pub mod paths;
 pub(crate) mod spatial;
 mod tokens;
+mod traits;

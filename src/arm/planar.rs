@@ -4,7 +4,7 @@
 use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2};
 
 use crate::kinematics::{self, DlsOptions, IkTarget, Workspace};
-use crate::{exact, mass_inverse, ArmError, Frozen, Jet, Link, Model, Real};
+use crate::{exact, ArmError, Dynamics, Frozen, Link, Model, Real};
 
 /// A planar serial arm of `N` links, revolute or prismatic, whose dynamics, kinematics and
 /// statics were derived at compile time by `#[derive(PlanarArm)]`.
@@ -36,7 +36,7 @@ use crate::{exact, mass_inverse, ArmError, Frozen, Jet, Link, Model, Real};
 /// applies); a NaN parameter makes the results that depend on it NaN, which the `try_`
 /// methods report as [`ArmError::NonFinite`] with argument `"result"`. Check identified or
 /// loaded values before use; [`Model::check`] does.
-pub trait PlanarArm<const N: usize> {
+pub trait PlanarArm<const N: usize>: Dynamics<N> {
     /// The exact symbolic result the generated code evaluates. Coefficients that involve
     /// run-time parameters carry them by name ([`exact::Term::params`]).
     const EXACT: exact::Derivation<N>;
@@ -51,108 +51,8 @@ pub trait PlanarArm<const N: usize> {
         self.model().links
     }
 
-    /// The mass (sensitivity) matrix M(q): symmetric positive definite.
-    fn mass_matrix<T: Real>(&self, q: &SVector<T, N>) -> SMatrix<T, N, N>;
-    /// The velocity-product (Coriolis and centrifugal) torques c(q, qd).
-    fn coriolis<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> SVector<T, N>;
     /// The Coriolis matrix C(q, qd) built from Christoffel symbols: `C qd = c` and `Mdot - 2C` is skew.
     fn coriolis_matrix<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> SMatrix<T, N, N>;
-    /// The torques that hold the arm against gravity, g(q) = dV/dq.
-    fn gravity<T: Real>(&self, q: &SVector<T, N>) -> SVector<T, N>;
-    /// The joint friction torques f(qd): viscous `damping qd_i` plus Coulomb
-    /// `frictionloss sign(qd_i)` (MuJoCo's `damping` and `frictionloss`), with `sign(0) = 0`.
-    /// The Coulomb term is discontinuous at `qd_i = 0`; an integrator stepping through zero
-    /// rate chatters around it (a stiction model is not part of this crate).
-    fn friction<T: Real>(&self, qd: &SVector<T, N>) -> SVector<T, N>;
-    /// The bias h(q, qd) = c + g + f: every torque but the inertial one, so that
-    /// `inverse_dynamics(q, qd, qdd) = mass_matrix(q) * qdd + bias(q, qd)` (Pinocchio's
-    /// `nonLinearEffects`; MuJoCo's `qfrc_bias` with the passive joint friction added).
-    fn bias<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> SVector<T, N>;
-    /// `(mass_matrix(q), bias(q, qd))` in one pass that shares the trigonometry and common
-    /// subexpressions: what a computed-torque or operational-space controller needs every cycle.
-    fn mass_matrix_and_bias<T: Real>(
-        &self,
-        q: &SVector<T, N>,
-        qd: &SVector<T, N>,
-    ) -> (SMatrix<T, N, N>, SVector<T, N>);
-    /// The joint torques tau = M qdd + c + g + f.
-    fn inverse_dynamics<T: Real>(
-        &self,
-        q: &SVector<T, N>,
-        qd: &SVector<T, N>,
-        qdd: &SVector<T, N>,
-    ) -> SVector<T, N>;
-    /// The joint accelerations qdd that solve M qdd = tau - c - g - f.
-    ///
-    /// With one joint, or two whose mass matrix has no run-time parameter, in closed form
-    /// (Cramer's rule, on the exact determinant) on M, c and g as
-    /// [`mass_matrix`](Self::mass_matrix), [`coriolis`](Self::coriolis) and
-    /// [`gravity`](Self::gravity) return them; otherwise (from three joints, and two with
-    /// parameters in M, whose determinant, a product of two of them, could overflow) M and
-    /// h = c + g + f as
-    /// [`mass_matrix_and_bias`](Self::mass_matrix_and_bias) returns them, solved by an
-    /// `L D L^T` factorisation whose pivots are floored at 2^-52 times a bound on `M_ii`, so an
-    /// ill-conditioned M gives finite accelerations. The method's docs on your arm give its
-    /// operation count.
-    fn forward_dynamics<T: Real>(
-        &self,
-        q: &SVector<T, N>,
-        qd: &SVector<T, N>,
-        tau: &SVector<T, N>,
-    ) -> SVector<T, N>;
-    /// The partial derivatives of [`inverse_dynamics`](Self::inverse_dynamics),
-    /// `(dtau/dq, dtau/dqd)`, N x N each (`dtau/dqdd` is [`mass_matrix`](Self::mass_matrix)),
-    /// as Pinocchio's `computeRNEADerivatives`.
-    ///
-    /// Exact to rounding. For arms whose derivative program stays small (about 4,000
-    /// operations, every arm up to 10 links at least) the derive emits it: the inverse dynamics'
-    /// straight-line program differentiated at compile time, its operation count in the
-    /// method's docs. For larger arms this default evaluates the generated inverse dynamics in
-    /// [`Jet<N>`](Jet) ([`Jet::inverse_dynamics_derivatives`]). Run-time parameters, armature,
-    /// damping and payload are included. Coulomb friction `frictionloss sign(qd_i)` jumps at
-    /// `qd_i = 0` and has no derivative there; it contributes 0 to `dtau/dqd` everywhere (its
-    /// derivative away from the jump).
-    fn inverse_dynamics_derivatives(
-        &self,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        qdd: &SVector<f64, N>,
-    ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
-        Jet::inverse_dynamics_derivatives(self, q, qd, qdd)
-    }
-
-    /// The partial derivatives of [`forward_dynamics`](Self::forward_dynamics),
-    /// `(dqdd/dq, dqdd/dqd, dqdd/dtau)`, N x N each, as Pinocchio's `computeABADerivatives`:
-    /// with `qdd = forward_dynamics(q, qd, tau)`, `dqdd/dq = -M^-1 dtau/dq`,
-    /// `dqdd/dqd = -M^-1 dtau/dqd` (from [`inverse_dynamics_derivatives`](Self::inverse_dynamics_derivatives)
-    /// at `qdd`) and `dqdd/dtau = M^-1`. Coulomb friction as there.
-    ///
-    /// For arms of up to five links the derive emits this as one straight-line program that
-    /// shares the trigonometry, M and its factorisation (guarded by the pivot floors of
-    /// `forward_dynamics`, so finite wherever `forward_dynamics` is); its operation count is in
-    /// the method's docs. For larger arms this default computes it from the methods above and
-    /// a fixed-size Cholesky factorisation of M (no allocation; 1.4x the time of the emitted
-    /// program at six links, measured in docs/performance.md, and none of its compile time),
-    /// NaN everywhere if that fails (only with NaN or infinite input). NaN input gives NaN
-    /// output either way, never a panic.
-    fn forward_dynamics_derivatives(
-        &self,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        tau: &SVector<f64, N>,
-    ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
-        let qdd = self.forward_dynamics(q, qd, tau);
-        let (dq, dqd) = self.inverse_dynamics_derivatives(q, qd, &qdd);
-        mass_inverse::inverse_products(&self.mass_matrix(q), &dq, &dqd).unwrap_or_else(|| {
-            let nan = SMatrix::from_element(f64::NAN);
-            (nan, nan, nan)
-        })
-    }
-
-    /// Kinetic energy, J: the links, the payload and the rotors (`armature qd_i^2 / 2`).
-    fn kinetic_energy<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> T;
-    /// Potential energy, J, measured from y = 0 at the base.
-    fn potential_energy<T: Real>(&self, q: &SVector<T, N>) -> T;
     /// Tip position and the orientation of the last link.
     fn tip_pose(&self, q: &SVector<f64, N>) -> Isometry2<f64>;
     /// The 3 x N Jacobian: rows are d/dt of tip x, tip y and the last link's angle.
@@ -280,55 +180,5 @@ pub trait PlanarArm<const N: usize> {
     /// for drawing the arm ([`kinematics::Skeleton::points`]).
     fn skeleton(&self, q: &SVector<f64, N>) -> kinematics::Skeleton<N> {
         kinematics::Skeleton::of(self, q)
-    }
-
-    /// [`forward_dynamics`](Self::forward_dynamics) for input that may be bad: NaN or infinite
-    /// states give an `Err` instead of NaN accelerations.
-    ///
-    /// # Errors
-    /// [`ArmError::NonFinite`] naming the first argument that holds NaN or an infinity, or
-    /// `"result"` when finite input overflowed.
-    fn try_forward_dynamics(
-        &self,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        tau: &SVector<f64, N>,
-    ) -> Result<SVector<f64, N>, ArmError> {
-        finite(q, "q")?;
-        finite(qd, "qd")?;
-        finite(tau, "tau")?;
-        let qdd = self.forward_dynamics(q, qd, tau);
-        finite(&qdd, "result")?;
-        Ok(qdd)
-    }
-
-    /// [`inverse_dynamics`](Self::inverse_dynamics) for input that may be bad.
-    ///
-    /// # Errors
-    /// [`ArmError::NonFinite`] as for [`try_forward_dynamics`](Self::try_forward_dynamics).
-    fn try_inverse_dynamics(
-        &self,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        qdd: &SVector<f64, N>,
-    ) -> Result<SVector<f64, N>, ArmError> {
-        finite(q, "q")?;
-        finite(qd, "qd")?;
-        finite(qdd, "qdd")?;
-        let tau = self.inverse_dynamics(q, qd, qdd);
-        finite(&tau, "result")?;
-        Ok(tau)
-    }
-}
-
-/// `Err(NonFinite { argument })` if `v` holds NaN or an infinity.
-pub(crate) fn finite<const N: usize>(
-    v: &SVector<f64, N>,
-    argument: &'static str,
-) -> Result<(), ArmError> {
-    if v.iter().all(|x| x.is_finite()) {
-        Ok(())
-    } else {
-        Err(ArmError::NonFinite { argument })
     }
 }

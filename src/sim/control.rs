@@ -4,7 +4,7 @@ use nalgebra::SVector;
 
 use super::error::finite;
 use super::{Controller, SimError, Trajectory};
-use crate::PlanarArm;
+use crate::Dynamics;
 
 /// Computed torque: the model's inverse dynamics along the desired motion corrected by PD
 /// feedback, `tau = M(q) (qdd* + kp (q* - q) + kd (qd* - qd)) + h(q, qd)` with the model's M
@@ -59,7 +59,7 @@ pub struct ComputedTorque<'m, M: ?Sized, R, const N: usize> {
     pub kd: SVector<f64, N>,
 }
 
-impl<'m, M: PlanarArm<N> + ?Sized, R: Trajectory<N>, const N: usize> ComputedTorque<'m, M, R, N> {
+impl<'m, M: Dynamics<N> + ?Sized, R: Trajectory<N>, const N: usize> ComputedTorque<'m, M, R, N> {
     /// Critically damped error dynamics of natural frequency `omega` (rad/s) on every joint:
     /// `kp = omega^2`, `kd = 2 omega`. `omega = 0` is dead reckoning alone.
     pub fn critically_damped(model: &'m M, reference: R, omega: f64) -> Self {
@@ -72,7 +72,7 @@ impl<'m, M: PlanarArm<N> + ?Sized, R: Trajectory<N>, const N: usize> ComputedTor
     }
 }
 
-impl<M: PlanarArm<N> + ?Sized, R: Trajectory<N>, const N: usize> Controller<N>
+impl<M: Dynamics<N> + ?Sized, R: Trajectory<N>, const N: usize> Controller<N>
     for ComputedTorque<'_, M, R, N>
 {
     fn torque(&mut self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> SVector<f64, N> {
@@ -123,7 +123,7 @@ pub struct PdGravity<'m, M: ?Sized, R, const N: usize> {
     pub kd: SVector<f64, N>,
 }
 
-impl<'m, M: PlanarArm<N> + ?Sized, R: Trajectory<N>, const N: usize> PdGravity<'m, M, R, N> {
+impl<'m, M: Dynamics<N> + ?Sized, R: Trajectory<N>, const N: usize> PdGravity<'m, M, R, N> {
     /// The controller with gains `kp` (N m/rad) and `kd` (N m s/rad).
     pub fn new(model: &'m M, reference: R, kp: SVector<f64, N>, kd: SVector<f64, N>) -> Self {
         Self {
@@ -135,7 +135,7 @@ impl<'m, M: PlanarArm<N> + ?Sized, R: Trajectory<N>, const N: usize> PdGravity<'
     }
 }
 
-impl<M: PlanarArm<N> + ?Sized, R: Trajectory<N>, const N: usize> Controller<N>
+impl<M: Dynamics<N> + ?Sized, R: Trajectory<N>, const N: usize> Controller<N>
     for PdGravity<'_, M, R, N>
 {
     fn torque(&mut self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> SVector<f64, N> {
@@ -176,7 +176,7 @@ impl<M: PlanarArm<N> + ?Sized, R: Trajectory<N>, const N: usize> Controller<N>
 /// assert!((rate - 15.0).abs() < 1e-12);
 /// # Ok::<(), planar_arm::sim::SimError>(())
 /// ```
-pub fn fastest_rate<A: PlanarArm<N> + ?Sized, const N: usize>(
+pub fn fastest_rate<A: Dynamics<N> + ?Sized, const N: usize>(
     arm: &A,
     q: &SVector<f64, N>,
     kp: &SVector<f64, N>,

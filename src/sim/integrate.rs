@@ -4,7 +4,7 @@ use nalgebra::SVector;
 
 use super::error::{finite, positive};
 use super::SimError;
-use crate::PlanarArm;
+use crate::{Dynamics, Jet};
 
 /// A fixed-step integrator: advances `(q, qd)` by `dt` with the joint torque `tau` held
 /// constant over the step (a zero-order hold, what a digital controller applies).
@@ -19,7 +19,7 @@ pub trait Integrator {
     /// [`SimError::BadArgument`] for a `dt` that is not positive and finite,
     /// [`SimError::NonFinite`] for NaN or infinite input or result, and for the implicit
     /// integrators [`SimError::NoConvergence`].
-    fn step<A: PlanarArm<N> + ?Sized, const N: usize>(
+    fn step<A: Dynamics<N> + ?Sized, const N: usize>(
         &self,
         arm: &A,
         q: &SVector<f64, N>,
@@ -83,7 +83,7 @@ fn done<const N: usize>(
 pub struct Rk4;
 
 impl Integrator for Rk4 {
-    fn step<A: PlanarArm<N> + ?Sized, const N: usize>(
+    fn step<A: Dynamics<N> + ?Sized, const N: usize>(
         &self,
         arm: &A,
         q: &SVector<f64, N>,
@@ -148,7 +148,7 @@ impl Integrator for Rk4 {
 pub struct SemiImplicitEuler;
 
 impl Integrator for SemiImplicitEuler {
-    fn step<A: PlanarArm<N> + ?Sized, const N: usize>(
+    fn step<A: Dynamics<N> + ?Sized, const N: usize>(
         &self,
         arm: &A,
         q: &SVector<f64, N>,
@@ -236,7 +236,7 @@ impl VariationalMidpoint {
     ///
     /// # Errors
     /// As [`Integrator::step`].
-    pub fn step_counted<A: PlanarArm<N> + ?Sized, const N: usize>(
+    pub fn step_counted<A: Dynamics<N> + ?Sized, const N: usize>(
         &self,
         arm: &A,
         q: &SVector<f64, N>,
@@ -264,10 +264,11 @@ impl VariationalMidpoint {
         let mut change = f64::INFINITY;
         for iteration in 1..=self.max_iterations {
             let qm = q + v * h;
-            let coriolis = arm.coriolis_matrix(&qm, &v);
             let g = arm.gravity(&qm);
             // p0 + h (C^T v - g + tau - f) + g, solved against M(qm).
-            let rhs = p0 + (coriolis.tr_mul(&v) + tau - arm.friction(&v)) * h + g * (1.0 - h);
+            let rhs = p0
+                + (transposed_coriolis(arm, &qm, &v) + tau - arm.friction(&v)) * h
+                + g * (1.0 - h);
             let next = arm.forward_dynamics(&qm, &zero, &rhs);
             let previous = change;
             change = (next - v).amax();
@@ -293,8 +294,24 @@ impl VariationalMidpoint {
     }
 }
 
+/// `C(q, v)^T v` for the Christoffel matrix `C`: `Mdot = C + C^T` makes it `Mdot v - C v`, and
+/// `Mdot` (along `v`) is the mass matrix evaluated in a one-dimensional jet seeded with `v`,
+/// `C v` the velocity-product forces. Any arm's dynamics give it, planar or spatial.
+fn transposed_coriolis<A: Dynamics<N> + ?Sized, const N: usize>(
+    arm: &A,
+    q: &SVector<f64, N>,
+    v: &SVector<f64, N>,
+) -> SVector<f64, N> {
+    let seeded = SVector::<Jet<1>, N>::from_fn(|i, _| Jet {
+        re: q[i],
+        eps: [v[i]],
+    });
+    let m_dot = arm.mass_matrix(&seeded).map(|x| x.eps[0]);
+    m_dot * v - arm.coriolis(q, v)
+}
+
 impl Integrator for VariationalMidpoint {
-    fn step<A: PlanarArm<N> + ?Sized, const N: usize>(
+    fn step<A: Dynamics<N> + ?Sized, const N: usize>(
         &self,
         arm: &A,
         q: &SVector<f64, N>,
@@ -359,7 +376,7 @@ impl Variational4 {
 }
 
 impl Integrator for Variational4 {
-    fn step<A: PlanarArm<N> + ?Sized, const N: usize>(
+    fn step<A: Dynamics<N> + ?Sized, const N: usize>(
         &self,
         arm: &A,
         q: &SVector<f64, N>,

@@ -4,7 +4,7 @@ use nalgebra::SVector;
 
 use super::error::{finite, positive};
 use super::{Integrator, SimError};
-use crate::PlanarArm;
+use crate::Dynamics;
 
 /// What drives the arm: joint torques from the time and the measured state, called once per
 /// control period by [`Simulator::run`] (the torque is then held until the next call).
@@ -194,7 +194,7 @@ impl<I: Integrator> Simulator<I> {
         controller: C,
     ) -> Result<Run<'a, A, I, C, N>, SimError>
     where
-        A: PlanarArm<N> + ?Sized,
+        A: Dynamics<N> + ?Sized,
         I: Clone,
         C: Controller<N>,
     {
@@ -240,7 +240,7 @@ pub struct Run<'a, A: ?Sized, I, C, const N: usize> {
 
 impl<A, I, C, const N: usize> Run<'_, A, I, C, N>
 where
-    A: PlanarArm<N> + ?Sized,
+    A: Dynamics<N> + ?Sized,
     I: Integrator,
     C: Controller<N>,
 {
@@ -261,7 +261,7 @@ where
 
 impl<A, I, C, const N: usize> Iterator for Run<'_, A, I, C, N>
 where
-    A: PlanarArm<N> + ?Sized,
+    A: Dynamics<N> + ?Sized,
     I: Integrator,
     C: Controller<N>,
 {

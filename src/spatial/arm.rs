@@ -5,7 +5,7 @@ use nalgebra::{Isometry3, SMatrix, SVector, Vector3};
 use super::{numeric, IkSolutions, SpatialModel};
 use crate::exact::SpatialDerivation;
 use crate::kinematics::DlsOptions;
-use crate::{ArmError, Real};
+use crate::{ArmError, Dynamics, Real};
 
 /// A spatial serial arm of `N` joints, revolute or prismatic, whose kinematics and gravity were
 /// derived at compile time by `#[derive(SpatialArm)]`.
@@ -16,7 +16,7 @@ use crate::{ArmError, Real};
 /// rows 0-2 are the tool origin's linear velocity and rows 3-5 the angular velocity, both in
 /// base coordinates (Pinocchio's `LOCAL_WORLD_ALIGNED`). Gravity torques `g = dV/dq` are what
 /// the joints apply to hold the arm still.
-pub trait SpatialArm<const N: usize> {
+pub trait SpatialArm<const N: usize>: Dynamics<N> {
     /// The exact tool pose and gravity, as `const` data with `Display` and LaTeX.
     const EXACT: SpatialDerivation<N>;
 
@@ -29,111 +29,6 @@ pub trait SpatialArm<const N: usize> {
     /// The geometric Jacobian of the tool frame: rows 0-2 the linear velocity of its origin,
     /// rows 3-5 the angular velocity, both in base coordinates.
     fn jacobian<T: Real>(&self, q: &SVector<T, N>) -> SMatrix<T, 6, N>;
-
-    /// The gravity torques (forces for slides) that hold the arm at `q`.
-    fn gravity<T: Real>(&self, q: &SVector<T, N>) -> SVector<T, N>;
-
-    /// The potential energy at `q`, J, zero at the base origin.
-    fn potential_energy<T: Real>(&self, q: &SVector<T, N>) -> T;
-
-    /// The mass matrix `M(q)`, symmetric positive definite for an arm whose every joint moves
-    /// some mass, inertia or armature, each joint's armature on its diagonal: the
-    /// composite-rigid-body algorithm unrolled at compile time for this arm, each link in its
-    /// own frame.
-    fn mass_matrix<T: Real>(&self, q: &SVector<T, N>) -> SMatrix<T, N, N>;
-
-    /// The velocity-product (Coriolis and centrifugal) forces `c(q, qd)`.
-    fn coriolis<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> SVector<T, N>;
-
-    /// The joint friction `f_i = damping_i qd_i + frictionloss_i sign(qd_i)`, `sign(0) = 0`
-    /// (MuJoCo's `damping` and `frictionloss`).
-    fn friction<T: Real>(&self, qd: &SVector<T, N>) -> SVector<T, N>;
-
-    /// The bias `h(q, qd) = c + g + f`, so that
-    /// `inverse_dynamics(q, qd, qdd) = mass_matrix(q) * qdd + bias(q, qd)` (Pinocchio's
-    /// `nonLinearEffects` plus friction).
-    fn bias<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> SVector<T, N>;
-
-    /// `(mass_matrix(q), bias(q, qd))` in one program that shares the trigonometry and the
-    /// joints' transformations.
-    fn mass_matrix_and_bias<T: Real>(
-        &self,
-        q: &SVector<T, N>,
-        qd: &SVector<T, N>,
-    ) -> (SMatrix<T, N, N>, SVector<T, N>);
-
-    /// The accelerations `qdd` that solve `M qdd = tau - c - g - f`: `M` and `h` from
-    /// [`mass_matrix_and_bias`](Self::mass_matrix_and_bias), then the `L D L^T` solve planar
-    /// arms use, each pivot floored at 2^-52 `M_ii`. An arm with a joint that moves no mass,
-    /// inertia or armature (the massless arms written for kinematics alone) has a singular
-    /// `M`, and its accelerations are not finite; [`try_forward_dynamics`](Self::try_forward_dynamics)
-    /// says so with an `Err`.
-    #[inline]
-    fn forward_dynamics<T: Real>(
-        &self,
-        q: &SVector<T, N>,
-        qd: &SVector<T, N>,
-        tau: &SVector<T, N>,
-    ) -> SVector<T, N> {
-        let (m, h) = self.mass_matrix_and_bias(q, qd);
-        crate::__private::forward_solve(&m, tau, &h, [crate::__private::Floor::Relative; N])
-    }
-
-    /// The kinetic energy `qd^T M qd / 2`, J, armature included.
-    #[inline]
-    fn kinetic_energy<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> T {
-        crate::__private::kinetic_energy(&self.mass_matrix(q), qd)
-    }
-
-    /// [`forward_dynamics`](Self::forward_dynamics) for input that may be bad.
-    ///
-    /// # Errors
-    /// [`ArmError::NonFinite`] naming the first argument that holds NaN or an infinity, or
-    /// `"result"` when finite input gave accelerations that are not (a singular `M`).
-    fn try_forward_dynamics(
-        &self,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        tau: &SVector<f64, N>,
-    ) -> Result<SVector<f64, N>, ArmError> {
-        crate::arm::finite(q, "q")?;
-        crate::arm::finite(qd, "qd")?;
-        crate::arm::finite(tau, "tau")?;
-        let qdd = self.forward_dynamics(q, qd, tau);
-        crate::arm::finite(&qdd, "result")?;
-        Ok(qdd)
-    }
-
-    /// [`inverse_dynamics`](Self::inverse_dynamics) for input that may be bad.
-    ///
-    /// # Errors
-    /// [`ArmError::NonFinite`] as for [`try_forward_dynamics`](Self::try_forward_dynamics).
-    fn try_inverse_dynamics(
-        &self,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        qdd: &SVector<f64, N>,
-    ) -> Result<SVector<f64, N>, ArmError> {
-        crate::arm::finite(q, "q")?;
-        crate::arm::finite(qd, "qd")?;
-        crate::arm::finite(qdd, "qdd")?;
-        let tau = self.inverse_dynamics(q, qd, qdd);
-        crate::arm::finite(&tau, "result")?;
-        Ok(tau)
-    }
-
-    /// The joint forces `tau = M qdd + c + g + f` that give the arm the accelerations `qdd` at
-    /// `(q, qd)`, as [`PlanarArm::inverse_dynamics`](crate::PlanarArm::inverse_dynamics):
-    /// `M` holds each joint's armature, `g` is [`gravity`](Self::gravity) and
-    /// `f_i = damping_i qd_i + frictionloss_i sign(qd_i)` (MuJoCo's joint friction). The
-    /// recursive Newton-Euler algorithm unrolled at compile time for this arm, each link in its
-    /// own frame, with the constant parts of the joints' transformations folded in.
-    fn inverse_dynamics<T: Real>(
-        &self,
-        q: &SVector<T, N>,
-        qd: &SVector<T, N>,
-        qdd: &SVector<T, N>,
-    ) -> SVector<T, N>;
 
     /// The numeric description of the arm now (run-time parameters read from their fields).
     fn model(&self) -> SpatialModel<N>;

@@ -3,9 +3,12 @@
 //!
 //! `#[derive(SpatialArm)]` reads one joint per field (`Revolute` or `Prismatic`) in one of
 //! three conventions and generates [`SpatialArm`]: the tool and link poses, the geometric
-//! Jacobian, gravity, statics and, for six-joint arms whose wrist decouples, every
-//! inverse-kinematics solution in closed form. The crate page's "Three-dimensional arms"
-//! works through the PUMA 560; `examples/puma.rs` draws its solutions.
+//! Jacobian, statics and, for six-joint arms whose wrist decouples, every inverse-kinematics
+//! solution in closed form; and [`Dynamics`](crate::Dynamics), the equations of motion planar
+//! arms have, with the same names (the inverse dynamics by the recursive Newton-Euler
+//! algorithm and the mass matrix by the composite-rigid-body algorithm, each unrolled at
+//! compile time in the links' own frames). The crate page's "Three-dimensional arms" works
+//! through the PUMA 560; `examples/puma.rs` draws its solutions.
 //!
 //! How the derive builds the code: each joint is `pre * motion(q) * post`, constant parts
 //! around one rotation about (or slide along) the joint's axis. Multiplied out exactly, with

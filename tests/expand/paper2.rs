@@ -1,68 +1,6 @@
 #[automatically_derived]
 #[allow(clippy::nursery)]
-impl ::planar_arm::PlanarArm<2> for Paper2 {
-    const EXACT: ::planar_arm::exact::Derivation<2> = {
-        const __NAMES: &[&::core::primitive::str] = &[];
-        ::planar_arm::exact::Derivation {
-            kinetic_energy: ::planar_arm::__private::terms(
-                b"AKMBACABCECBBBCBACAACGCABDBABCECBBBCCABDBAACMBDCA",
-                __NAMES,
-            ),
-            potential_energy: ::planar_arm::__private::terms(
-                b"C+3FwMBBABCAACq9BwMCBACCAA",
-                __NAMES,
-            ),
-            mass_matrix: [
-                [
-                    ::planar_arm::__private::terms(b"AKGAABCCCBBBCAA", __NAMES),
-                    ::planar_arm::__private::terms(b"ACGAABCECBBBCAA", __NAMES),
-                ],
-                [
-                    ::planar_arm::__private::terms(b"ACGAABCECBBBCAA", __NAMES),
-                    ::planar_arm::__private::terms(b"ACGAA", __NAMES),
-                ],
-            ],
-            coriolis: [
-                ::planar_arm::__private::terms(b"CBCCBBBCCABDBACBECBBBCBDCA", __NAMES),
-                ::planar_arm::__private::terms(b"CCECBBBCBACA", __NAMES),
-            ],
-            gravity: [
-                ::planar_arm::__private::terms(b"B+3FwMBBABCAABq9BwMCBACCAA", __NAMES),
-                ::planar_arm::__private::terms(b"Bq9BwMCBACCAA", __NAMES),
-            ],
-        }
-    };
-    #[inline]
-    fn model(&self) -> ::planar_arm::Model<2> {
-        ::planar_arm::Model {
-            links: [
-                ::planar_arm::Link {
-                    length: 1.0,
-                    mass: 1.0,
-                    inertia: (1.0 / 12.0),
-                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 2.0), 0.0),
-                    armature: 0.0,
-                    damping: 0.0,
-                    frictionloss: 0.0,
-                    joint: ::planar_arm::Joint::Revolute,
-                    range: ::core::option::Option::None,
-                },
-                ::planar_arm::Link {
-                    length: 1.0,
-                    mass: 1.0,
-                    inertia: (1.0 / 12.0),
-                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 2.0), 0.0),
-                    armature: 0.0,
-                    damping: 0.0,
-                    frictionloss: 0.0,
-                    joint: ::planar_arm::Joint::Revolute,
-                    range: ::core::option::Option::None,
-                },
-            ],
-            gravity: (981.0 / 100.0),
-            payload: ::planar_arm::Payload::NONE,
-        }
-    }
+impl ::planar_arm::Dynamics<2> for Paper2 {
     /**The mass matrix M(q), derived exactly (symmetric; upper triangle shown). Joint angles `q`, rates `qd`, accelerations `qdd` (1-based in the formulas); `cK` and `sK...` are the cosine and sine of the sum of the joint angles named by the digits.
 
 ```text
@@ -108,36 +46,6 @@ Cost: 7 multiplications, 2 additions, 0 divisions, 1 sin_cos pairs.*/
         let __cor1 = -(__s2 * __qd1 * __qd2) - __t1 * __qd2 * __qd2;
         let __cor2 = __t1 * __qd1 * __qd1;
         ::planar_arm::__private::vector([__cor1, __cor2])
-    }
-    /**The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.
-
-```text
-C11 = -1/2 s2 qd2
-C12 = -1/2 s2 qd1 - 1/2 s2 qd2
-C21 = 1/2 s2 qd1
-C22 = 0
-```
-
-
-Evaluated in the links' absolute angles, where each entry of C is a sum of products `dM~_ab/dphi_b w_b` of one small derivative and one absolute rate (see `planar_arm::symbolic::christoffel`).
-
-Cost: 3 multiplications, 3 additions, 0 divisions, 1 sin_cos pairs.*/
-    #[inline]
-    fn coriolis_matrix<__T: ::planar_arm::Real>(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
-        __qd: &::planar_arm::nalgebra::SVector<__T, 2>,
-    ) -> ::planar_arm::nalgebra::SMatrix<__T, 2, 2> {
-        let [_, __q2] = ::planar_arm::__private::unpack(__q);
-        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
-        let [(__s2, _)] = ::planar_arm::__private::sin_cos([__q2]);
-        let __t1 = __T::from_f64(1.0 / 2.0) * __s2;
-        let __t2 = (__qd1 + __qd2) * __t1;
-        let __cm12 = -__t2;
-        let __cm21 = __qd1 * __t1;
-        let __cm11 = __cm21 - __t2;
-        let __cm22 = __T::from_f64(0.0);
-        ::planar_arm::__private::matrix([[__cm11, __cm12], [__cm21, __cm22]])
     }
     /**The gravity torques g(q) = dV/dq.
 
@@ -345,125 +253,6 @@ Cost: 4 multiplications, 2 additions, 0 divisions, 2 sin_cos pairs.*/
             + __T::from_f64(981.0 / 200.0) * __s12;
         __potential
     }
-    /**The tip pose; the orientation is the last link's angle q1 + q2.
-
-```text
-x = c1 + c12
-y = s1 + s12
-```
-
-
-Cost: 4 multiplications, 4 additions, 0 divisions, 2 sin_cos pairs.*/
-    #[inline]
-    fn tip_pose(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
-    ) -> ::planar_arm::nalgebra::Isometry2<::core::primitive::f64> {
-        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
-        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
-            __q1,
-            __q2,
-        ]);
-        let __cos_phi = __c1 * __c2 - __s1 * __s2;
-        let __sin_phi = __s1 * __c2 + __c1 * __s2;
-        let __x = __c1 + __cos_phi;
-        let __y = __s1 + __sin_phi;
-        ::planar_arm::__private::pose(__x, __y, __cos_phi, __sin_phi)
-    }
-    /**The Jacobian d(x, y, phi)/dq.
-
-```text
-J11 = -s1 - s12
-J12 = -s12
-J21 = c1 + c12
-J22 = c12
-J31 = 1
-J32 = 1
-```
-
-
-Cost: 4 multiplications, 6 additions, 0 divisions, 2 sin_cos pairs.*/
-    #[inline]
-    fn jacobian<__T: ::planar_arm::Real>(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
-    ) -> ::planar_arm::nalgebra::SMatrix<__T, 3, 2> {
-        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
-        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
-            __q1,
-            __q2,
-        ]);
-        let __j22 = __c1 * __c2 - __s1 * __s2;
-        let __s12 = __s1 * __c2 + __c1 * __s2;
-        let __j11 = -__s1 - __s12;
-        let __j12 = -__s12;
-        let __j21 = __c1 + __j22;
-        let __j31 = __T::from_f64(1.0);
-        ::planar_arm::__private::matrix([[__j11, __j12], [__j21, __j22], [__j31, __j31]])
-    }
-    /**The position of each joint, joint 1 at the origin.
-
-Cost: 0 multiplications, 0 additions, 0 divisions, 1 sin_cos pairs.*/
-    #[inline]
-    fn joint_positions<__T: ::planar_arm::Real>(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
-    ) -> [::planar_arm::nalgebra::Point2<__T>; 2] {
-        let [__q1, _] = ::planar_arm::__private::unpack(__q);
-        let [(__s1, __c1)] = ::planar_arm::__private::sin_cos([__q1]);
-        let __x1 = __T::from_f64(0.0);
-        [
-            ::planar_arm::nalgebra::Point2::new(__x1, __x1),
-            ::planar_arm::nalgebra::Point2::new(__c1, __s1),
-        ]
-    }
-    /**The tip in polar form: r from r^2 (which does not depend on q1), theta = atan2(y, x).
-
-```text
-r^2 = 2 + 2 c2
-```
-
-
-Cost: 5 multiplications, 5 additions, 0 divisions, 2 sin_cos pairs.*/
-    #[inline]
-    fn tip_polar(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
-    ) -> (::core::primitive::f64, ::core::primitive::f64) {
-        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
-        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
-            __q1,
-            __q2,
-        ]);
-        let __r2 = 2.0 + 2.0 * __c2;
-        let __c12 = __c2 * __c1 - __s2 * __s1;
-        let __s12 = __c2 * __s1 + __s2 * __c1;
-        let __x = __c1 + __c12;
-        let __y = __s1 + __s12;
-        ::planar_arm::__private::polar(__r2, __x, __y)
-    }
-    /**Statics: tau = J^T (u, v, torque), the motor torques that make the tip exert force (u, v) and torque `torque`.
-
-Cost: 8 multiplications, 10 additions, 0 divisions, 2 sin_cos pairs.*/
-    #[inline]
-    fn joint_torques(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
-        __force: &::planar_arm::nalgebra::Vector2<::core::primitive::f64>,
-        __torque: ::core::primitive::f64,
-    ) -> ::planar_arm::nalgebra::SVector<::core::primitive::f64, 2> {
-        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
-        let [__u, __v] = ::planar_arm::__private::unpack(__force);
-        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
-            __q1,
-            __q2,
-        ]);
-        let __c12 = __c1 * __c2 - __s1 * __s2;
-        let __s12 = __s1 * __c2 + __c1 * __s2;
-        let __tau1 = __torque + __u * (-__s1 - __s12) + __v * (__c1 + __c12);
-        let __tau2 = __torque + __u * (-__s12) + __v * __c12;
-        ::planar_arm::__private::vector([__tau1, __tau2])
-    }
     /**The partial derivatives of `inverse_dynamics`, `(dtau/dq, dtau/dqd)` (`dtau/dqdd` is `mass_matrix`), straight-line code differentiated exactly at compile time. Coulomb friction contributes 0 to `dtau/dqd`, also at `qd_i = 0` where it jumps.
 
 Differentiated exactly at compile time: each torque's expanded formula differentiated symbolically (exact rational coefficients), evaluated term by term.
@@ -590,6 +379,221 @@ Cost: 47 multiplications, 36 additions, 3 divisions, 2 sin_cos pairs.*/
                 [__dqdd1_dtau2, __dqdd2_dtau2],
             ]),
         )
+    }
+}
+#[automatically_derived]
+#[allow(clippy::nursery)]
+impl ::planar_arm::PlanarArm<2> for Paper2 {
+    const EXACT: ::planar_arm::exact::Derivation<2> = {
+        const __NAMES: &[&::core::primitive::str] = &[];
+        ::planar_arm::exact::Derivation {
+            kinetic_energy: ::planar_arm::__private::terms(
+                b"AKMBACABCECBBBCBACAACGCABDBABCECBBBCCABDBAACMBDCA",
+                __NAMES,
+            ),
+            potential_energy: ::planar_arm::__private::terms(
+                b"C+3FwMBBABCAACq9BwMCBACCAA",
+                __NAMES,
+            ),
+            mass_matrix: [
+                [
+                    ::planar_arm::__private::terms(b"AKGAABCCCBBBCAA", __NAMES),
+                    ::planar_arm::__private::terms(b"ACGAABCECBBBCAA", __NAMES),
+                ],
+                [
+                    ::planar_arm::__private::terms(b"ACGAABCECBBBCAA", __NAMES),
+                    ::planar_arm::__private::terms(b"ACGAA", __NAMES),
+                ],
+            ],
+            coriolis: [
+                ::planar_arm::__private::terms(b"CBCCBBBCCABDBACBECBBBCBDCA", __NAMES),
+                ::planar_arm::__private::terms(b"CCECBBBCBACA", __NAMES),
+            ],
+            gravity: [
+                ::planar_arm::__private::terms(b"B+3FwMBBABCAABq9BwMCBACCAA", __NAMES),
+                ::planar_arm::__private::terms(b"Bq9BwMCBACCAA", __NAMES),
+            ],
+        }
+    };
+    #[inline]
+    fn model(&self) -> ::planar_arm::Model<2> {
+        ::planar_arm::Model {
+            links: [
+                ::planar_arm::Link {
+                    length: 1.0,
+                    mass: 1.0,
+                    inertia: (1.0 / 12.0),
+                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 2.0), 0.0),
+                    armature: 0.0,
+                    damping: 0.0,
+                    frictionloss: 0.0,
+                    joint: ::planar_arm::Joint::Revolute,
+                    range: ::core::option::Option::None,
+                },
+                ::planar_arm::Link {
+                    length: 1.0,
+                    mass: 1.0,
+                    inertia: (1.0 / 12.0),
+                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 2.0), 0.0),
+                    armature: 0.0,
+                    damping: 0.0,
+                    frictionloss: 0.0,
+                    joint: ::planar_arm::Joint::Revolute,
+                    range: ::core::option::Option::None,
+                },
+            ],
+            gravity: (981.0 / 100.0),
+            payload: ::planar_arm::Payload::NONE,
+        }
+    }
+    /**The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.
+
+```text
+C11 = -1/2 s2 qd2
+C12 = -1/2 s2 qd1 - 1/2 s2 qd2
+C21 = 1/2 s2 qd1
+C22 = 0
+```
+
+
+Evaluated in the links' absolute angles, where each entry of C is a sum of products `dM~_ab/dphi_b w_b` of one small derivative and one absolute rate (see `planar_arm::symbolic::christoffel`).
+
+Cost: 3 multiplications, 3 additions, 0 divisions, 1 sin_cos pairs.*/
+    #[inline]
+    fn coriolis_matrix<__T: ::planar_arm::Real>(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 2>,
+    ) -> ::planar_arm::nalgebra::SMatrix<__T, 2, 2> {
+        let [_, __q2] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
+        let [(__s2, _)] = ::planar_arm::__private::sin_cos([__q2]);
+        let __t1 = __T::from_f64(1.0 / 2.0) * __s2;
+        let __t2 = (__qd1 + __qd2) * __t1;
+        let __cm12 = -__t2;
+        let __cm21 = __qd1 * __t1;
+        let __cm11 = __cm21 - __t2;
+        let __cm22 = __T::from_f64(0.0);
+        ::planar_arm::__private::matrix([[__cm11, __cm12], [__cm21, __cm22]])
+    }
+    /**The tip pose; the orientation is the last link's angle q1 + q2.
+
+```text
+x = c1 + c12
+y = s1 + s12
+```
+
+
+Cost: 4 multiplications, 4 additions, 0 divisions, 2 sin_cos pairs.*/
+    #[inline]
+    fn tip_pose(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+    ) -> ::planar_arm::nalgebra::Isometry2<::core::primitive::f64> {
+        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
+        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+        ]);
+        let __cos_phi = __c1 * __c2 - __s1 * __s2;
+        let __sin_phi = __s1 * __c2 + __c1 * __s2;
+        let __x = __c1 + __cos_phi;
+        let __y = __s1 + __sin_phi;
+        ::planar_arm::__private::pose(__x, __y, __cos_phi, __sin_phi)
+    }
+    /**The Jacobian d(x, y, phi)/dq.
+
+```text
+J11 = -s1 - s12
+J12 = -s12
+J21 = c1 + c12
+J22 = c12
+J31 = 1
+J32 = 1
+```
+
+
+Cost: 4 multiplications, 6 additions, 0 divisions, 2 sin_cos pairs.*/
+    #[inline]
+    fn jacobian<__T: ::planar_arm::Real>(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
+    ) -> ::planar_arm::nalgebra::SMatrix<__T, 3, 2> {
+        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
+        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+        ]);
+        let __j22 = __c1 * __c2 - __s1 * __s2;
+        let __s12 = __s1 * __c2 + __c1 * __s2;
+        let __j11 = -__s1 - __s12;
+        let __j12 = -__s12;
+        let __j21 = __c1 + __j22;
+        let __j31 = __T::from_f64(1.0);
+        ::planar_arm::__private::matrix([[__j11, __j12], [__j21, __j22], [__j31, __j31]])
+    }
+    /**The position of each joint, joint 1 at the origin.
+
+Cost: 0 multiplications, 0 additions, 0 divisions, 1 sin_cos pairs.*/
+    #[inline]
+    fn joint_positions<__T: ::planar_arm::Real>(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
+    ) -> [::planar_arm::nalgebra::Point2<__T>; 2] {
+        let [__q1, _] = ::planar_arm::__private::unpack(__q);
+        let [(__s1, __c1)] = ::planar_arm::__private::sin_cos([__q1]);
+        let __x1 = __T::from_f64(0.0);
+        [
+            ::planar_arm::nalgebra::Point2::new(__x1, __x1),
+            ::planar_arm::nalgebra::Point2::new(__c1, __s1),
+        ]
+    }
+    /**The tip in polar form: r from r^2 (which does not depend on q1), theta = atan2(y, x).
+
+```text
+r^2 = 2 + 2 c2
+```
+
+
+Cost: 5 multiplications, 5 additions, 0 divisions, 2 sin_cos pairs.*/
+    #[inline]
+    fn tip_polar(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+    ) -> (::core::primitive::f64, ::core::primitive::f64) {
+        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
+        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+        ]);
+        let __r2 = 2.0 + 2.0 * __c2;
+        let __c12 = __c2 * __c1 - __s2 * __s1;
+        let __s12 = __c2 * __s1 + __s2 * __c1;
+        let __x = __c1 + __c12;
+        let __y = __s1 + __s12;
+        ::planar_arm::__private::polar(__r2, __x, __y)
+    }
+    /**Statics: tau = J^T (u, v, torque), the motor torques that make the tip exert force (u, v) and torque `torque`.
+
+Cost: 8 multiplications, 10 additions, 0 divisions, 2 sin_cos pairs.*/
+    #[inline]
+    fn joint_torques(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+        __force: &::planar_arm::nalgebra::Vector2<::core::primitive::f64>,
+        __torque: ::core::primitive::f64,
+    ) -> ::planar_arm::nalgebra::SVector<::core::primitive::f64, 2> {
+        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
+        let [__u, __v] = ::planar_arm::__private::unpack(__force);
+        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+        ]);
+        let __c12 = __c1 * __c2 - __s1 * __s2;
+        let __s12 = __s1 * __c2 + __c1 * __s2;
+        let __tau1 = __torque + __u * (-__s1 - __s12) + __v * (__c1 + __c12);
+        let __tau2 = __torque + __u * (-__s12) + __v * __c12;
+        ::planar_arm::__private::vector([__tau1, __tau2])
     }
     #[doc(hidden)]
     type __Frozen = ::planar_arm::__private::Block<0>;

@@ -1,112 +1,6 @@
 #[automatically_derived]
 #[allow(clippy::nursery)]
-impl ::planar_arm::PlanarArm<3> for Paper3 {
-    const EXACT: ::planar_arm::exact::Derivation<3> = {
-        const __NAMES: &[&::core::primitive::str] = &[];
-        ::planar_arm::exact::Derivation {
-            kinetic_energy: ::planar_arm::__private::terms(
-                b"AECBACABGECBBBCBACABCEDBBCCBACABCEDBCBCBACAAKGCABDBABGECBBBCCABDBABCEDBBCCCABDBABCCDBCBCCABDBAACGCABGBABCEDBBCCCABGBABCEDBCBCCABGBAAKMBDCABCEDBCBCBDCAACGCDBGBABCEDBCBCCDBGBAACMBGCA",
-                __NAMES,
-            ),
-            potential_energy: ::planar_arm::__private::terms(
-                b"Cq9BwCBBABCAAC+3FwMCBACCAACq9BwMDBADCAA",
-                __NAMES,
-            ),
-            mass_matrix: [
-                [
-                    ::planar_arm::__private::terms(
-                        b"AICAABGCCBBBCAABCCDBBCCAABCCDBCBCAA",
-                        __NAMES,
-                    ),
-                    ::planar_arm::__private::terms(
-                        b"AKGAABGECBBBCAABCEDBBCCAABCCDBCBCAA",
-                        __NAMES,
-                    ),
-                    ::planar_arm::__private::terms(b"ACGAABCEDBBCCAABCEDBCBCAA", __NAMES),
-                ],
-                [
-                    ::planar_arm::__private::terms(
-                        b"AKGAABGECBBBCAABCEDBBCCAABCCDBCBCAA",
-                        __NAMES,
-                    ),
-                    ::planar_arm::__private::terms(b"AKGAABCCDBCBCAA", __NAMES),
-                    ::planar_arm::__private::terms(b"ACGAABCEDBCBCAA", __NAMES),
-                ],
-                [
-                    ::planar_arm::__private::terms(
-                        b"ACGAABCEDBBCCAABCEDBCBCAA",
-                        __NAMES,
-                    ),
-                    ::planar_arm::__private::terms(b"ACGAABCEDBCBCAA", __NAMES),
-                    ::planar_arm::__private::terms(b"ACGAA", __NAMES),
-                ],
-            ],
-            coriolis: [
-                ::planar_arm::__private::terms(
-                    b"CFCCBBBCCABDBACBCDBBCCCABDBACBCDBBCCCABGBACBCDBCBCCABGBACFECBBBCBDCACBEDBBCCBDCACBCDBBCCCDBGBACBCDBCBCCDBGBACBEDBBCCBGCACBEDBCBCBGCA",
-                    __NAMES,
-                ),
-                ::planar_arm::__private::terms(
-                    b"CGECBBBCBACACCEDBBCCBACACBCDBCBCCABGBACBCDBCBCCDBGBACBEDBCBCBGCA",
-                    __NAMES,
-                ),
-                ::planar_arm::__private::terms(
-                    b"CCEDBBCCBACACCEDBCBCBACACCCDBCBCCABDBACCEDBCBCBDCA",
-                    __NAMES,
-                ),
-            ],
-            gravity: [
-                ::planar_arm::__private::terms(
-                    b"Bq9BwCBBABCAAB+3FwMCBACCAABq9BwMDBADCAA",
-                    __NAMES,
-                ),
-                ::planar_arm::__private::terms(b"B+3FwMCBACCAABq9BwMDBADCAA", __NAMES),
-                ::planar_arm::__private::terms(b"Bq9BwMDBADCAA", __NAMES),
-            ],
-        }
-    };
-    #[inline]
-    fn model(&self) -> ::planar_arm::Model<3> {
-        ::planar_arm::Model {
-            links: [
-                ::planar_arm::Link {
-                    length: 1.0,
-                    mass: 1.0,
-                    inertia: (1.0 / 12.0),
-                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 2.0), 0.0),
-                    armature: 0.0,
-                    damping: 0.0,
-                    frictionloss: 0.0,
-                    joint: ::planar_arm::Joint::Revolute,
-                    range: ::core::option::Option::None,
-                },
-                ::planar_arm::Link {
-                    length: 1.0,
-                    mass: 1.0,
-                    inertia: (1.0 / 12.0),
-                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 2.0), 0.0),
-                    armature: 0.0,
-                    damping: 0.0,
-                    frictionloss: 0.0,
-                    joint: ::planar_arm::Joint::Revolute,
-                    range: ::core::option::Option::None,
-                },
-                ::planar_arm::Link {
-                    length: 1.0,
-                    mass: 1.0,
-                    inertia: (1.0 / 12.0),
-                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 2.0), 0.0),
-                    armature: 0.0,
-                    damping: 0.0,
-                    frictionloss: 0.0,
-                    joint: ::planar_arm::Joint::Revolute,
-                    range: ::core::option::Option::None,
-                },
-            ],
-            gravity: (981.0 / 100.0),
-            payload: ::planar_arm::Payload::NONE,
-        }
-    }
+impl ::planar_arm::Dynamics<3> for Paper3 {
     /**The mass matrix M(q), derived exactly (symmetric; upper triangle shown). Joint angles `q`, rates `qd`, accelerations `qdd` (1-based in the formulas); `cK` and `sK...` are the cosine and sine of the sum of the joint angles named by the digits.
 
 ```text
@@ -191,60 +85,6 @@ Cost: 19 multiplications, 17 additions, 0 divisions, 2 sin_cos pairs.*/
         let __fy1 = __s2 * __fx2 + __c2 * __fy2;
         let __cor1 = __cor2 + __fy1;
         ::planar_arm::__private::vector([__cor1, __cor2, __cor3])
-    }
-    /**The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.
-
-```text
-C11 = (-3/2 s2 - 1/2 s23) qd2 + (-1/2 s23 - 1/2 s3) qd3
-C12 = (-3/2 s2 - 1/2 s23) qd1 + (-3/2 s2 - 1/2 s23) qd2 + (-1/2 s23 - 1/2 s3) qd3
-C13 = (-1/2 s23 - 1/2 s3) qd1 + (-1/2 s23 - 1/2 s3) qd2 + (-1/2 s23 - 1/2 s3) qd3
-C21 = (3/2 s2 + 1/2 s23) qd1 - 1/2 s3 qd3
-C22 = -1/2 s3 qd3
-C23 = -1/2 s3 qd1 - 1/2 s3 qd2 - 1/2 s3 qd3
-C31 = (1/2 s23 + 1/2 s3) qd1 + 1/2 s3 qd2
-C32 = 1/2 s3 qd1 + 1/2 s3 qd2
-C33 = 0
-```
-
-
-Evaluated in the links' absolute angles, where each entry of C is a sum of products `dM~_ab/dphi_b w_b` of one small derivative and one absolute rate (see `planar_arm::symbolic::christoffel`).
-
-Cost: 11 multiplications, 13 additions, 0 divisions, 2 sin_cos pairs.*/
-    #[inline]
-    fn coriolis_matrix<__T: ::planar_arm::Real>(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
-        __qd: &::planar_arm::nalgebra::SVector<__T, 3>,
-    ) -> ::planar_arm::nalgebra::SMatrix<__T, 3, 3> {
-        let [_, __q2, __q3] = ::planar_arm::__private::unpack(__q);
-        let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
-        let [(__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
-            __q2,
-            __q3,
-        ]);
-        let __t1 = __qd1 + __qd2;
-        let __t2 = __t1 + __qd3;
-        let __t3 = __T::from_f64(3.0 / 2.0) * __s2;
-        let __s23 = __s2 * __c3 + __c2 * __s3;
-        let __t4 = __T::from_f64(1.0 / 2.0) * __s23;
-        let __t5 = __T::from_f64(1.0 / 2.0) * __s3;
-        let __t6 = -(__t2 * __t4);
-        let __t7 = __t6 - __t1 * __t3;
-        let __t8 = __t2 * __t5;
-        let __cm23 = -__t8;
-        let __cm32 = __t1 * __t5;
-        let __cm31 = __cm32 + __qd1 * __t4;
-        let __cm21 = __qd1 * __t3 - __t8 + __cm31;
-        let __cm11 = __t7 + __cm21;
-        let __cm22 = __cm32 - __t8;
-        let __cm12 = __t7 + __cm22;
-        let __cm13 = __t6 - __t8;
-        let __cm33 = __T::from_f64(0.0);
-        ::planar_arm::__private::matrix([
-            [__cm11, __cm12, __cm13],
-            [__cm21, __cm22, __cm23],
-            [__cm31, __cm32, __cm33],
-        ])
     }
     /**The gravity torques g(q) = dV/dq.
 
@@ -505,157 +345,6 @@ Cost: 9 multiplications, 5 additions, 0 divisions, 3 sin_cos pairs.*/
         let __potential = __T::from_f64(981.0 / 200.0) * __s123
             + __T::from_f64(981.0 / 40.0) * __s1 + __T::from_f64(2943.0 / 200.0) * __s12;
         __potential
-    }
-    /**The tip pose; the orientation is the last link's angle q1 + q2 + q3.
-
-```text
-x = c1 + c12 + c123
-y = s1 + s12 + s123
-```
-
-
-Cost: 8 multiplications, 8 additions, 0 divisions, 3 sin_cos pairs.*/
-    #[inline]
-    fn tip_pose(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
-    ) -> ::planar_arm::nalgebra::Isometry2<::core::primitive::f64> {
-        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
-        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
-            __q1,
-            __q2,
-            __q3,
-        ]);
-        let __c12 = __c1 * __c2 - __s1 * __s2;
-        let __s12 = __s1 * __c2 + __c1 * __s2;
-        let __cos_phi = __c12 * __c3 - __s12 * __s3;
-        let __sin_phi = __s12 * __c3 + __c12 * __s3;
-        let __x = __cos_phi + __c1 + __c12;
-        let __y = __sin_phi + __s1 + __s12;
-        ::planar_arm::__private::pose(__x, __y, __cos_phi, __sin_phi)
-    }
-    /**The Jacobian d(x, y, phi)/dq.
-
-```text
-J11 = -s1 - s12 - s123
-J12 = -s12 - s123
-J13 = -s123
-J21 = c1 + c12 + c123
-J22 = c12 + c123
-J23 = c123
-J31 = 1
-J32 = 1
-J33 = 1
-```
-
-
-Cost: 8 multiplications, 13 additions, 0 divisions, 3 sin_cos pairs.*/
-    #[inline]
-    fn jacobian<__T: ::planar_arm::Real>(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
-    ) -> ::planar_arm::nalgebra::SMatrix<__T, 3, 3> {
-        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
-        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
-            __q1,
-            __q2,
-            __q3,
-        ]);
-        let __c12 = __c1 * __c2 - __s1 * __s2;
-        let __s12 = __s1 * __c2 + __c1 * __s2;
-        let __j23 = __c12 * __c3 - __s12 * __s3;
-        let __s123 = __s12 * __c3 + __c12 * __s3;
-        let __j11 = -__s1 - (__s12 + __s123);
-        let __j12 = -__s12 - __s123;
-        let __j13 = -__s123;
-        let __j21 = __j23 + __c1 + __c12;
-        let __j22 = __c12 + __j23;
-        let __j31 = __T::from_f64(1.0);
-        ::planar_arm::__private::matrix([
-            [__j11, __j12, __j13],
-            [__j21, __j22, __j23],
-            [__j31, __j31, __j31],
-        ])
-    }
-    /**The position of each joint, joint 1 at the origin.
-
-Cost: 4 multiplications, 4 additions, 0 divisions, 2 sin_cos pairs.*/
-    #[inline]
-    fn joint_positions<__T: ::planar_arm::Real>(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
-    ) -> [::planar_arm::nalgebra::Point2<__T>; 3] {
-        let [__q1, __q2, _] = ::planar_arm::__private::unpack(__q);
-        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
-            __q1,
-            __q2,
-        ]);
-        let __c12 = __c1 * __c2 - __s1 * __s2;
-        let __s12 = __s1 * __c2 + __c1 * __s2;
-        let __x3 = __c1 + __c12;
-        let __y3 = __s1 + __s12;
-        let __x1 = __T::from_f64(0.0);
-        [
-            ::planar_arm::nalgebra::Point2::new(__x1, __x1),
-            ::planar_arm::nalgebra::Point2::new(__c1, __s1),
-            ::planar_arm::nalgebra::Point2::new(__x3, __y3),
-        ]
-    }
-    /**The tip in polar form: r from r^2 (which does not depend on q1), theta = atan2(y, x).
-
-```text
-r^2 = 3 + 2 c2 + 2 c23 + 2 c3
-```
-
-
-Cost: 13 multiplications, 12 additions, 0 divisions, 3 sin_cos pairs.*/
-    #[inline]
-    fn tip_polar(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
-    ) -> (::core::primitive::f64, ::core::primitive::f64) {
-        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
-        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
-            __q1,
-            __q2,
-            __q3,
-        ]);
-        let __c23 = __c2 * __c3 - __s2 * __s3;
-        let __r2 = 3.0 + 2.0 * __c2 + 2.0 * __c23 + 2.0 * __c3;
-        let __c12 = __c2 * __c1 - __s2 * __s1;
-        let __s12 = __c2 * __s1 + __s2 * __c1;
-        let __c123 = __c3 * __c12 - __s3 * __s12;
-        let __s123 = __c3 * __s12 + __s3 * __c12;
-        let __x = __c123 + __c1 + __c12;
-        let __y = __s123 + __s1 + __s12;
-        ::planar_arm::__private::polar(__r2, __x, __y)
-    }
-    /**Statics: tau = J^T (u, v, torque), the motor torques that make the tip exert force (u, v) and torque `torque`.
-
-Cost: 14 multiplications, 19 additions, 0 divisions, 3 sin_cos pairs.*/
-    #[inline]
-    fn joint_torques(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
-        __force: &::planar_arm::nalgebra::Vector2<::core::primitive::f64>,
-        __torque: ::core::primitive::f64,
-    ) -> ::planar_arm::nalgebra::SVector<::core::primitive::f64, 3> {
-        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
-        let [__u, __v] = ::planar_arm::__private::unpack(__force);
-        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
-            __q1,
-            __q2,
-            __q3,
-        ]);
-        let __c12 = __c1 * __c2 - __s1 * __s2;
-        let __s12 = __s1 * __c2 + __c1 * __s2;
-        let __c123 = __c12 * __c3 - __s12 * __s3;
-        let __s123 = __s12 * __c3 + __c12 * __s3;
-        let __tau1 = __torque + __u * (-__s1 - (__s12 + __s123))
-            + __v * (__c123 + __c1 + __c12);
-        let __tau2 = __torque + __u * (-__s12 - __s123) + __v * (__c12 + __c123);
-        let __tau3 = __torque + __u * (-__s123) + __v * __c123;
-        ::planar_arm::__private::vector([__tau1, __tau2, __tau3])
     }
     /**The partial derivatives of `inverse_dynamics`, `(dtau/dq, dtau/dqd)` (`dtau/dqdd` is `mass_matrix`), straight-line code differentiated exactly at compile time. Coulomb friction contributes 0 to `dtau/dqd`, also at `qd_i = 0` where it jumps.
 
@@ -943,6 +632,321 @@ Cost: 47 multiplications, 44 additions, 3 divisions, 3 sin_cos pairs.*/
                 ::planar_arm::__private::Floor::Fixed(0.00000000000000007401486830834377),
             ],
         )
+    }
+}
+#[automatically_derived]
+#[allow(clippy::nursery)]
+impl ::planar_arm::PlanarArm<3> for Paper3 {
+    const EXACT: ::planar_arm::exact::Derivation<3> = {
+        const __NAMES: &[&::core::primitive::str] = &[];
+        ::planar_arm::exact::Derivation {
+            kinetic_energy: ::planar_arm::__private::terms(
+                b"AECBACABGECBBBCBACABCEDBBCCBACABCEDBCBCBACAAKGCABDBABGECBBBCCABDBABCEDBBCCCABDBABCCDBCBCCABDBAACGCABGBABCEDBBCCCABGBABCEDBCBCCABGBAAKMBDCABCEDBCBCBDCAACGCDBGBABCEDBCBCCDBGBAACMBGCA",
+                __NAMES,
+            ),
+            potential_energy: ::planar_arm::__private::terms(
+                b"Cq9BwCBBABCAAC+3FwMCBACCAACq9BwMDBADCAA",
+                __NAMES,
+            ),
+            mass_matrix: [
+                [
+                    ::planar_arm::__private::terms(
+                        b"AICAABGCCBBBCAABCCDBBCCAABCCDBCBCAA",
+                        __NAMES,
+                    ),
+                    ::planar_arm::__private::terms(
+                        b"AKGAABGECBBBCAABCEDBBCCAABCCDBCBCAA",
+                        __NAMES,
+                    ),
+                    ::planar_arm::__private::terms(b"ACGAABCEDBBCCAABCEDBCBCAA", __NAMES),
+                ],
+                [
+                    ::planar_arm::__private::terms(
+                        b"AKGAABGECBBBCAABCEDBBCCAABCCDBCBCAA",
+                        __NAMES,
+                    ),
+                    ::planar_arm::__private::terms(b"AKGAABCCDBCBCAA", __NAMES),
+                    ::planar_arm::__private::terms(b"ACGAABCEDBCBCAA", __NAMES),
+                ],
+                [
+                    ::planar_arm::__private::terms(
+                        b"ACGAABCEDBBCCAABCEDBCBCAA",
+                        __NAMES,
+                    ),
+                    ::planar_arm::__private::terms(b"ACGAABCEDBCBCAA", __NAMES),
+                    ::planar_arm::__private::terms(b"ACGAA", __NAMES),
+                ],
+            ],
+            coriolis: [
+                ::planar_arm::__private::terms(
+                    b"CFCCBBBCCABDBACBCDBBCCCABDBACBCDBBCCCABGBACBCDBCBCCABGBACFECBBBCBDCACBEDBBCCBDCACBCDBBCCCDBGBACBCDBCBCCDBGBACBEDBBCCBGCACBEDBCBCBGCA",
+                    __NAMES,
+                ),
+                ::planar_arm::__private::terms(
+                    b"CGECBBBCBACACCEDBBCCBACACBCDBCBCCABGBACBCDBCBCCDBGBACBEDBCBCBGCA",
+                    __NAMES,
+                ),
+                ::planar_arm::__private::terms(
+                    b"CCEDBBCCBACACCEDBCBCBACACCCDBCBCCABDBACCEDBCBCBDCA",
+                    __NAMES,
+                ),
+            ],
+            gravity: [
+                ::planar_arm::__private::terms(
+                    b"Bq9BwCBBABCAAB+3FwMCBACCAABq9BwMDBADCAA",
+                    __NAMES,
+                ),
+                ::planar_arm::__private::terms(b"B+3FwMCBACCAABq9BwMDBADCAA", __NAMES),
+                ::planar_arm::__private::terms(b"Bq9BwMDBADCAA", __NAMES),
+            ],
+        }
+    };
+    #[inline]
+    fn model(&self) -> ::planar_arm::Model<3> {
+        ::planar_arm::Model {
+            links: [
+                ::planar_arm::Link {
+                    length: 1.0,
+                    mass: 1.0,
+                    inertia: (1.0 / 12.0),
+                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 2.0), 0.0),
+                    armature: 0.0,
+                    damping: 0.0,
+                    frictionloss: 0.0,
+                    joint: ::planar_arm::Joint::Revolute,
+                    range: ::core::option::Option::None,
+                },
+                ::planar_arm::Link {
+                    length: 1.0,
+                    mass: 1.0,
+                    inertia: (1.0 / 12.0),
+                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 2.0), 0.0),
+                    armature: 0.0,
+                    damping: 0.0,
+                    frictionloss: 0.0,
+                    joint: ::planar_arm::Joint::Revolute,
+                    range: ::core::option::Option::None,
+                },
+                ::planar_arm::Link {
+                    length: 1.0,
+                    mass: 1.0,
+                    inertia: (1.0 / 12.0),
+                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 2.0), 0.0),
+                    armature: 0.0,
+                    damping: 0.0,
+                    frictionloss: 0.0,
+                    joint: ::planar_arm::Joint::Revolute,
+                    range: ::core::option::Option::None,
+                },
+            ],
+            gravity: (981.0 / 100.0),
+            payload: ::planar_arm::Payload::NONE,
+        }
+    }
+    /**The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.
+
+```text
+C11 = (-3/2 s2 - 1/2 s23) qd2 + (-1/2 s23 - 1/2 s3) qd3
+C12 = (-3/2 s2 - 1/2 s23) qd1 + (-3/2 s2 - 1/2 s23) qd2 + (-1/2 s23 - 1/2 s3) qd3
+C13 = (-1/2 s23 - 1/2 s3) qd1 + (-1/2 s23 - 1/2 s3) qd2 + (-1/2 s23 - 1/2 s3) qd3
+C21 = (3/2 s2 + 1/2 s23) qd1 - 1/2 s3 qd3
+C22 = -1/2 s3 qd3
+C23 = -1/2 s3 qd1 - 1/2 s3 qd2 - 1/2 s3 qd3
+C31 = (1/2 s23 + 1/2 s3) qd1 + 1/2 s3 qd2
+C32 = 1/2 s3 qd1 + 1/2 s3 qd2
+C33 = 0
+```
+
+
+Evaluated in the links' absolute angles, where each entry of C is a sum of products `dM~_ab/dphi_b w_b` of one small derivative and one absolute rate (see `planar_arm::symbolic::christoffel`).
+
+Cost: 11 multiplications, 13 additions, 0 divisions, 2 sin_cos pairs.*/
+    #[inline]
+    fn coriolis_matrix<__T: ::planar_arm::Real>(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 3>,
+    ) -> ::planar_arm::nalgebra::SMatrix<__T, 3, 3> {
+        let [_, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
+        let [(__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q2,
+            __q3,
+        ]);
+        let __t1 = __qd1 + __qd2;
+        let __t2 = __t1 + __qd3;
+        let __t3 = __T::from_f64(3.0 / 2.0) * __s2;
+        let __s23 = __s2 * __c3 + __c2 * __s3;
+        let __t4 = __T::from_f64(1.0 / 2.0) * __s23;
+        let __t5 = __T::from_f64(1.0 / 2.0) * __s3;
+        let __t6 = -(__t2 * __t4);
+        let __t7 = __t6 - __t1 * __t3;
+        let __t8 = __t2 * __t5;
+        let __cm23 = -__t8;
+        let __cm32 = __t1 * __t5;
+        let __cm31 = __cm32 + __qd1 * __t4;
+        let __cm21 = __qd1 * __t3 - __t8 + __cm31;
+        let __cm11 = __t7 + __cm21;
+        let __cm22 = __cm32 - __t8;
+        let __cm12 = __t7 + __cm22;
+        let __cm13 = __t6 - __t8;
+        let __cm33 = __T::from_f64(0.0);
+        ::planar_arm::__private::matrix([
+            [__cm11, __cm12, __cm13],
+            [__cm21, __cm22, __cm23],
+            [__cm31, __cm32, __cm33],
+        ])
+    }
+    /**The tip pose; the orientation is the last link's angle q1 + q2 + q3.
+
+```text
+x = c1 + c12 + c123
+y = s1 + s12 + s123
+```
+
+
+Cost: 8 multiplications, 8 additions, 0 divisions, 3 sin_cos pairs.*/
+    #[inline]
+    fn tip_pose(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+    ) -> ::planar_arm::nalgebra::Isometry2<::core::primitive::f64> {
+        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+        ]);
+        let __c12 = __c1 * __c2 - __s1 * __s2;
+        let __s12 = __s1 * __c2 + __c1 * __s2;
+        let __cos_phi = __c12 * __c3 - __s12 * __s3;
+        let __sin_phi = __s12 * __c3 + __c12 * __s3;
+        let __x = __cos_phi + __c1 + __c12;
+        let __y = __sin_phi + __s1 + __s12;
+        ::planar_arm::__private::pose(__x, __y, __cos_phi, __sin_phi)
+    }
+    /**The Jacobian d(x, y, phi)/dq.
+
+```text
+J11 = -s1 - s12 - s123
+J12 = -s12 - s123
+J13 = -s123
+J21 = c1 + c12 + c123
+J22 = c12 + c123
+J23 = c123
+J31 = 1
+J32 = 1
+J33 = 1
+```
+
+
+Cost: 8 multiplications, 13 additions, 0 divisions, 3 sin_cos pairs.*/
+    #[inline]
+    fn jacobian<__T: ::planar_arm::Real>(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
+    ) -> ::planar_arm::nalgebra::SMatrix<__T, 3, 3> {
+        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+        ]);
+        let __c12 = __c1 * __c2 - __s1 * __s2;
+        let __s12 = __s1 * __c2 + __c1 * __s2;
+        let __j23 = __c12 * __c3 - __s12 * __s3;
+        let __s123 = __s12 * __c3 + __c12 * __s3;
+        let __j11 = -__s1 - (__s12 + __s123);
+        let __j12 = -__s12 - __s123;
+        let __j13 = -__s123;
+        let __j21 = __j23 + __c1 + __c12;
+        let __j22 = __c12 + __j23;
+        let __j31 = __T::from_f64(1.0);
+        ::planar_arm::__private::matrix([
+            [__j11, __j12, __j13],
+            [__j21, __j22, __j23],
+            [__j31, __j31, __j31],
+        ])
+    }
+    /**The position of each joint, joint 1 at the origin.
+
+Cost: 4 multiplications, 4 additions, 0 divisions, 2 sin_cos pairs.*/
+    #[inline]
+    fn joint_positions<__T: ::planar_arm::Real>(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
+    ) -> [::planar_arm::nalgebra::Point2<__T>; 3] {
+        let [__q1, __q2, _] = ::planar_arm::__private::unpack(__q);
+        let [(__s1, __c1), (__s2, __c2)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+        ]);
+        let __c12 = __c1 * __c2 - __s1 * __s2;
+        let __s12 = __s1 * __c2 + __c1 * __s2;
+        let __x3 = __c1 + __c12;
+        let __y3 = __s1 + __s12;
+        let __x1 = __T::from_f64(0.0);
+        [
+            ::planar_arm::nalgebra::Point2::new(__x1, __x1),
+            ::planar_arm::nalgebra::Point2::new(__c1, __s1),
+            ::planar_arm::nalgebra::Point2::new(__x3, __y3),
+        ]
+    }
+    /**The tip in polar form: r from r^2 (which does not depend on q1), theta = atan2(y, x).
+
+```text
+r^2 = 3 + 2 c2 + 2 c23 + 2 c3
+```
+
+
+Cost: 13 multiplications, 12 additions, 0 divisions, 3 sin_cos pairs.*/
+    #[inline]
+    fn tip_polar(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+    ) -> (::core::primitive::f64, ::core::primitive::f64) {
+        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+        ]);
+        let __c23 = __c2 * __c3 - __s2 * __s3;
+        let __r2 = 3.0 + 2.0 * __c2 + 2.0 * __c23 + 2.0 * __c3;
+        let __c12 = __c2 * __c1 - __s2 * __s1;
+        let __s12 = __c2 * __s1 + __s2 * __c1;
+        let __c123 = __c3 * __c12 - __s3 * __s12;
+        let __s123 = __c3 * __s12 + __s3 * __c12;
+        let __x = __c123 + __c1 + __c12;
+        let __y = __s123 + __s1 + __s12;
+        ::planar_arm::__private::polar(__r2, __x, __y)
+    }
+    /**Statics: tau = J^T (u, v, torque), the motor torques that make the tip exert force (u, v) and torque `torque`.
+
+Cost: 14 multiplications, 19 additions, 0 divisions, 3 sin_cos pairs.*/
+    #[inline]
+    fn joint_torques(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+        __force: &::planar_arm::nalgebra::Vector2<::core::primitive::f64>,
+        __torque: ::core::primitive::f64,
+    ) -> ::planar_arm::nalgebra::SVector<::core::primitive::f64, 3> {
+        let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let [__u, __v] = ::planar_arm::__private::unpack(__force);
+        let [(__s1, __c1), (__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q1,
+            __q2,
+            __q3,
+        ]);
+        let __c12 = __c1 * __c2 - __s1 * __s2;
+        let __s12 = __s1 * __c2 + __c1 * __s2;
+        let __c123 = __c12 * __c3 - __s12 * __s3;
+        let __s123 = __s12 * __c3 + __c12 * __s3;
+        let __tau1 = __torque + __u * (-__s1 - (__s12 + __s123))
+            + __v * (__c123 + __c1 + __c12);
+        let __tau2 = __torque + __u * (-__s12 - __s123) + __v * (__c12 + __c123);
+        let __tau3 = __torque + __u * (-__s123) + __v * __c123;
+        ::planar_arm::__private::vector([__tau1, __tau2, __tau3])
     }
     #[doc(hidden)]
     type __Frozen = ::planar_arm::__private::Block<0>;

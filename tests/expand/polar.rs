@@ -1,71 +1,6 @@
 #[automatically_derived]
 #[allow(clippy::nursery)]
-impl ::planar_arm::PlanarArm<2> for Polar {
-    const EXACT: ::planar_arm::exact::Derivation<2> = {
-        const __NAMES: &[&::core::primitive::str] = &[];
-        ::planar_arm::exact::Derivation {
-            kinetic_energy: ::planar_arm::__private::terms(
-                b"AGgBBACAAGIBDCAA2BwCCACFBAAGICACFCA",
-                __NAMES,
-            ),
-            potential_energy: ::planar_arm::__private::terms(
-                b"Cm3qCg6HBBABCAAC+3FwMBBABCBFBA",
-                __NAMES,
-            ),
-            mass_matrix: [
-                [
-                    ::planar_arm::__private::terms(b"AGQAAA2BoBBFBAAGEBFCA", __NAMES),
-                    ::planar_arm::__private::terms(b"", __NAMES),
-                ],
-                [
-                    ::planar_arm::__private::terms(b"", __NAMES),
-                    ::planar_arm::__private::terms(b"AGEAA", __NAMES),
-                ],
-            ],
-            coriolis: [
-                ::planar_arm::__private::terms(b"A2BoBCABDBAAGCDABDBFBA", __NAMES),
-                ::planar_arm::__private::terms(b"A1BwCBACAAFECACFBA", __NAMES),
-            ],
-            gravity: [
-                ::planar_arm::__private::terms(
-                    b"Bm3qCg6HBBABCAAB+3FwMBBABCBFBA",
-                    __NAMES,
-                ),
-                ::planar_arm::__private::terms(b"C+3FwMBBABCAA", __NAMES),
-            ],
-        }
-    };
-    #[inline]
-    fn model(&self) -> ::planar_arm::Model<2> {
-        ::planar_arm::Model {
-            links: [
-                ::planar_arm::Link {
-                    length: (1.0 / 5.0),
-                    mass: 3.0,
-                    inertia: (1.0 / 100.0),
-                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 10.0), 0.0),
-                    armature: 0.0,
-                    damping: 0.0,
-                    frictionloss: 0.0,
-                    joint: ::planar_arm::Joint::Revolute,
-                    range: ::core::option::Option::None,
-                },
-                ::planar_arm::Link {
-                    length: (1.0 / 2.0),
-                    mass: (3.0 / 2.0),
-                    inertia: (1.0 / 32.0),
-                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 4.0), 0.0),
-                    armature: 0.0,
-                    damping: 0.0,
-                    frictionloss: 0.0,
-                    joint: ::planar_arm::Joint::Prismatic,
-                    range: ::core::option::Option::Some((0.0, (3.0 / 5.0))),
-                },
-            ],
-            gravity: (981.0 / 100.0),
-            payload: ::planar_arm::Payload::NONE,
-        }
-    }
+impl ::planar_arm::Dynamics<2> for Polar {
     /**The mass matrix M(q), derived exactly (symmetric; upper triangle shown). Joint angles `q`, rates `qd`, accelerations `qdd` (1-based in the formulas); `cK` and `sK...` are the cosine and sine of the sum of the joint angles named by the digits.
 
 ```text
@@ -113,34 +48,6 @@ Cost: 8 multiplications, 3 additions, 0 divisions, 0 sin_cos pairs.*/
         let __cor2 = -(__T::from_f64(27.0 / 40.0) * __t2)
             - __T::from_f64(3.0 / 2.0) * __q2 * __t2;
         ::planar_arm::__private::vector([__cor1, __cor2])
-    }
-    /**The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.
-
-```text
-C11 = 27/40 qd2 + 3/2 qd2 q2
-C12 = 27/40 qd1 + 3/2 qd1 q2
-C21 = -27/40 qd1 - 3/2 qd1 q2
-C22 = 0
-```
-
-
-Cost: 6 multiplications, 4 additions, 0 divisions, 0 sin_cos pairs.*/
-    #[inline]
-    fn coriolis_matrix<__T: ::planar_arm::Real>(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
-        __qd: &::planar_arm::nalgebra::SVector<__T, 2>,
-    ) -> ::planar_arm::nalgebra::SMatrix<__T, 2, 2> {
-        let [_, __q2] = ::planar_arm::__private::unpack(__q);
-        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
-        let __cm11 = __T::from_f64(27.0 / 40.0) * __qd2
-            + __T::from_f64(3.0 / 2.0) * __qd2 * __q2;
-        let __t1 = __T::from_f64(27.0 / 40.0) * __qd1;
-        let __t2 = __T::from_f64(3.0 / 2.0) * __q2 * __qd1;
-        let __cm12 = __t1 + __t2;
-        let __cm21 = -__t1 - __t2;
-        let __cm22 = __T::from_f64(0.0);
-        ::planar_arm::__private::matrix([[__cm11, __cm12], [__cm21, __cm22]])
     }
     /**The gravity torques g(q) = dV/dq.
 
@@ -341,6 +248,203 @@ Cost: 3 multiplications, 1 additions, 0 divisions, 1 sin_cos pairs.*/
             + __T::from_f64(2943.0 / 200.0) * __s1 * __q2;
         __potential
     }
+    /**The partial derivatives of `inverse_dynamics`, `(dtau/dq, dtau/dqd)` (`dtau/dqdd` is `mass_matrix`), straight-line code differentiated exactly at compile time. Coulomb friction contributes 0 to `dtau/dqd`, also at `qd_i = 0` where it jumps.
+
+Differentiated exactly at compile time: each torque's expanded formula differentiated symbolically (exact rational coefficients), evaluated term by term.
+
+Cost: 17 multiplications, 10 additions, 0 divisions, 1 sin_cos pairs.*/
+    #[inline]
+    fn inverse_dynamics_derivatives(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+        __qdd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+    ) -> (
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
+    ) {
+        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
+        let [__qdd1, _] = ::planar_arm::__private::unpack(__qdd);
+        let [(__s1, __c1)] = ::planar_arm::__private::sin_cos([__q1]);
+        let __dtau1_dq1 = -((38259.0 / 4000.0) * __s1) - (2943.0 / 200.0) * __s1 * __q2;
+        let __dtau2_dq1 = (2943.0 / 200.0) * __c1;
+        let __dtau1_dq2 = __dtau2_dq1 + (27.0 / 20.0) * __qdd1 + 3.0 * __qd1 * __qd2
+            + 3.0 * __q2 * __qdd1;
+        let __dtau2_dq2 = -((3.0 / 2.0) * __qd1 * __qd1);
+        let __dtau1_dqd1 = (27.0 / 20.0) * __qd2 + 3.0 * __q2 * __qd2;
+        let __t1 = (27.0 / 20.0) * __qd1;
+        let __t2 = 3.0 * __q2 * __qd1;
+        let __dtau1_dqd2 = __t1 + __t2;
+        let __dtau2_dqd1 = -__t1 - __t2;
+        let __dtau2_dqd2 = 0.0;
+        (
+            ::planar_arm::__private::matrix([
+                [__dtau1_dq1, __dtau1_dq2],
+                [__dtau2_dq1, __dtau2_dq2],
+            ]),
+            ::planar_arm::__private::matrix([
+                [__dtau1_dqd1, __dtau1_dqd2],
+                [__dtau2_dqd1, __dtau2_dqd2],
+            ]),
+        )
+    }
+    /**The partial derivatives of `forward_dynamics`, `(dqdd/dq, dqdd/dqd, dqdd/dtau)`, straight-line code built at compile time. Coulomb friction as in `inverse_dynamics_derivatives`.
+
+qdd from the forward dynamics program; dtau/dq and dtau/dqd at that qdd as `inverse_dynamics_derivatives` computes them; M^-1 by Cramer's rule with 1 / det M computed once; then dqdd/dq = -M^-1 dtau/dq and dqdd/dqd = -M^-1 dtau/dqd as products.
+
+Cost: 36 multiplications, 18 additions, 2 divisions, 1 sin_cos pairs.*/
+    #[inline]
+    fn forward_dynamics_derivatives(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+        __tau: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+    ) -> (
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
+    ) {
+        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
+        let [__tau1, _] = ::planar_arm::__private::unpack(__tau);
+        let [(__s1, __c1)] = ::planar_arm::__private::sin_cos([__q1]);
+        let __t1 = (3.0 / 2.0) * __q2 * __q2 + (3.0 / 8.0) + (27.0 / 20.0) * __q2;
+        let __t2 = __qd1 * __qd2;
+        let __t3 = (2943.0 / 200.0) * __c1;
+        let __rhs1 = __tau1 - ((27.0 / 20.0) * __t2 + 3.0 * __q2 * __t2)
+            - ((38259.0 / 4000.0) * __c1 + __q2 * __t3);
+        let __det = (3.0 / 2.0) * __t1;
+        let __t4 = (3.0 / 2.0) * __rhs1 / __det;
+        let __t5 = (27.0 / 20.0) * __qd1;
+        let __t6 = 3.0 * __q2 * __qd1;
+        let __inv_det = 1.0 / __det;
+        let __dqdd1_dtau1 = (3.0 / 2.0) * __inv_det;
+        let __dqdd2_dtau2 = __t1 * __inv_det;
+        let __t7 = -__dqdd1_dtau1;
+        let __t8 = -__dqdd2_dtau2;
+        let __dqdd1_dq1 = (-((38259.0 / 4000.0) * __s1) - __q2 * (2943.0 / 200.0) * __s1)
+            * __t7;
+        let __dqdd2_dq1 = __t3 * __t8;
+        let __dqdd1_dq2 = (__t3 + (27.0 / 20.0) * __t4 + 3.0 * __t2 + 3.0 * __q2 * __t4)
+            * __t7;
+        let __dqdd2_dq2 = (-((3.0 / 2.0) * __qd1 * __qd1)) * __t8;
+        let __dqdd1_dqd1 = ((27.0 / 20.0) * __qd2 + 3.0 * __q2 * __qd2) * __t7;
+        let __dqdd2_dqd1 = (-__t5 - __t6) * __t8;
+        let __dqdd1_dqd2 = (__t5 + __t6) * __t7;
+        let __dqdd2_dqd2 = 0.0;
+        (
+            ::planar_arm::__private::matrix([
+                [__dqdd1_dq1, __dqdd1_dq2],
+                [__dqdd2_dq1, __dqdd2_dq2],
+            ]),
+            ::planar_arm::__private::matrix([
+                [__dqdd1_dqd1, __dqdd1_dqd2],
+                [__dqdd2_dqd1, __dqdd2_dqd2],
+            ]),
+            ::planar_arm::__private::matrix([
+                [__dqdd1_dtau1, __dqdd2_dqd2],
+                [__dqdd2_dqd2, __dqdd2_dtau2],
+            ]),
+        )
+    }
+}
+#[automatically_derived]
+#[allow(clippy::nursery)]
+impl ::planar_arm::PlanarArm<2> for Polar {
+    const EXACT: ::planar_arm::exact::Derivation<2> = {
+        const __NAMES: &[&::core::primitive::str] = &[];
+        ::planar_arm::exact::Derivation {
+            kinetic_energy: ::planar_arm::__private::terms(
+                b"AGgBBACAAGIBDCAA2BwCCACFBAAGICACFCA",
+                __NAMES,
+            ),
+            potential_energy: ::planar_arm::__private::terms(
+                b"Cm3qCg6HBBABCAAC+3FwMBBABCBFBA",
+                __NAMES,
+            ),
+            mass_matrix: [
+                [
+                    ::planar_arm::__private::terms(b"AGQAAA2BoBBFBAAGEBFCA", __NAMES),
+                    ::planar_arm::__private::terms(b"", __NAMES),
+                ],
+                [
+                    ::planar_arm::__private::terms(b"", __NAMES),
+                    ::planar_arm::__private::terms(b"AGEAA", __NAMES),
+                ],
+            ],
+            coriolis: [
+                ::planar_arm::__private::terms(b"A2BoBCABDBAAGCDABDBFBA", __NAMES),
+                ::planar_arm::__private::terms(b"A1BwCBACAAFECACFBA", __NAMES),
+            ],
+            gravity: [
+                ::planar_arm::__private::terms(
+                    b"Bm3qCg6HBBABCAAB+3FwMBBABCBFBA",
+                    __NAMES,
+                ),
+                ::planar_arm::__private::terms(b"C+3FwMBBABCAA", __NAMES),
+            ],
+        }
+    };
+    #[inline]
+    fn model(&self) -> ::planar_arm::Model<2> {
+        ::planar_arm::Model {
+            links: [
+                ::planar_arm::Link {
+                    length: (1.0 / 5.0),
+                    mass: 3.0,
+                    inertia: (1.0 / 100.0),
+                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 10.0), 0.0),
+                    armature: 0.0,
+                    damping: 0.0,
+                    frictionloss: 0.0,
+                    joint: ::planar_arm::Joint::Revolute,
+                    range: ::core::option::Option::None,
+                },
+                ::planar_arm::Link {
+                    length: (1.0 / 2.0),
+                    mass: (3.0 / 2.0),
+                    inertia: (1.0 / 32.0),
+                    com: ::planar_arm::nalgebra::Vector2::new((1.0 / 4.0), 0.0),
+                    armature: 0.0,
+                    damping: 0.0,
+                    frictionloss: 0.0,
+                    joint: ::planar_arm::Joint::Prismatic,
+                    range: ::core::option::Option::Some((0.0, (3.0 / 5.0))),
+                },
+            ],
+            gravity: (981.0 / 100.0),
+            payload: ::planar_arm::Payload::NONE,
+        }
+    }
+    /**The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.
+
+```text
+C11 = 27/40 qd2 + 3/2 qd2 q2
+C12 = 27/40 qd1 + 3/2 qd1 q2
+C21 = -27/40 qd1 - 3/2 qd1 q2
+C22 = 0
+```
+
+
+Cost: 6 multiplications, 4 additions, 0 divisions, 0 sin_cos pairs.*/
+    #[inline]
+    fn coriolis_matrix<__T: ::planar_arm::Real>(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 2>,
+    ) -> ::planar_arm::nalgebra::SMatrix<__T, 2, 2> {
+        let [_, __q2] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
+        let __cm11 = __T::from_f64(27.0 / 40.0) * __qd2
+            + __T::from_f64(3.0 / 2.0) * __qd2 * __q2;
+        let __t1 = __T::from_f64(27.0 / 40.0) * __qd1;
+        let __t2 = __T::from_f64(3.0 / 2.0) * __q2 * __qd1;
+        let __cm12 = __t1 + __t2;
+        let __cm21 = -__t1 - __t2;
+        let __cm22 = __T::from_f64(0.0);
+        ::planar_arm::__private::matrix([[__cm11, __cm12], [__cm21, __cm22]])
+    }
     /**The tip pose; the orientation is the last link's angle q1.
 
 ```text
@@ -442,106 +546,6 @@ Cost: 8 multiplications, 7 additions, 0 divisions, 1 sin_cos pairs.*/
             + __v * ((7.0 / 10.0) * __c1 + __c1 * __q2);
         let __tau2 = __torque + __u * __c1 + __v * __s1;
         ::planar_arm::__private::vector([__tau1, __tau2])
-    }
-    /**The partial derivatives of `inverse_dynamics`, `(dtau/dq, dtau/dqd)` (`dtau/dqdd` is `mass_matrix`), straight-line code differentiated exactly at compile time. Coulomb friction contributes 0 to `dtau/dqd`, also at `qd_i = 0` where it jumps.
-
-Differentiated exactly at compile time: each torque's expanded formula differentiated symbolically (exact rational coefficients), evaluated term by term.
-
-Cost: 17 multiplications, 10 additions, 0 divisions, 1 sin_cos pairs.*/
-    #[inline]
-    fn inverse_dynamics_derivatives(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
-        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
-        __qdd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
-    ) -> (
-        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
-        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
-    ) {
-        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
-        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
-        let [__qdd1, _] = ::planar_arm::__private::unpack(__qdd);
-        let [(__s1, __c1)] = ::planar_arm::__private::sin_cos([__q1]);
-        let __dtau1_dq1 = -((38259.0 / 4000.0) * __s1) - (2943.0 / 200.0) * __s1 * __q2;
-        let __dtau2_dq1 = (2943.0 / 200.0) * __c1;
-        let __dtau1_dq2 = __dtau2_dq1 + (27.0 / 20.0) * __qdd1 + 3.0 * __qd1 * __qd2
-            + 3.0 * __q2 * __qdd1;
-        let __dtau2_dq2 = -((3.0 / 2.0) * __qd1 * __qd1);
-        let __dtau1_dqd1 = (27.0 / 20.0) * __qd2 + 3.0 * __q2 * __qd2;
-        let __t1 = (27.0 / 20.0) * __qd1;
-        let __t2 = 3.0 * __q2 * __qd1;
-        let __dtau1_dqd2 = __t1 + __t2;
-        let __dtau2_dqd1 = -__t1 - __t2;
-        let __dtau2_dqd2 = 0.0;
-        (
-            ::planar_arm::__private::matrix([
-                [__dtau1_dq1, __dtau1_dq2],
-                [__dtau2_dq1, __dtau2_dq2],
-            ]),
-            ::planar_arm::__private::matrix([
-                [__dtau1_dqd1, __dtau1_dqd2],
-                [__dtau2_dqd1, __dtau2_dqd2],
-            ]),
-        )
-    }
-    /**The partial derivatives of `forward_dynamics`, `(dqdd/dq, dqdd/dqd, dqdd/dtau)`, straight-line code built at compile time. Coulomb friction as in `inverse_dynamics_derivatives`.
-
-qdd from the forward dynamics program; dtau/dq and dtau/dqd at that qdd as `inverse_dynamics_derivatives` computes them; M^-1 by Cramer's rule with 1 / det M computed once; then dqdd/dq = -M^-1 dtau/dq and dqdd/dqd = -M^-1 dtau/dqd as products.
-
-Cost: 36 multiplications, 18 additions, 2 divisions, 1 sin_cos pairs.*/
-    #[inline]
-    fn forward_dynamics_derivatives(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
-        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
-        __tau: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
-    ) -> (
-        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
-        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
-        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
-    ) {
-        let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
-        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
-        let [__tau1, _] = ::planar_arm::__private::unpack(__tau);
-        let [(__s1, __c1)] = ::planar_arm::__private::sin_cos([__q1]);
-        let __t1 = (3.0 / 2.0) * __q2 * __q2 + (3.0 / 8.0) + (27.0 / 20.0) * __q2;
-        let __t2 = __qd1 * __qd2;
-        let __t3 = (2943.0 / 200.0) * __c1;
-        let __rhs1 = __tau1 - ((27.0 / 20.0) * __t2 + 3.0 * __q2 * __t2)
-            - ((38259.0 / 4000.0) * __c1 + __q2 * __t3);
-        let __det = (3.0 / 2.0) * __t1;
-        let __t4 = (3.0 / 2.0) * __rhs1 / __det;
-        let __t5 = (27.0 / 20.0) * __qd1;
-        let __t6 = 3.0 * __q2 * __qd1;
-        let __inv_det = 1.0 / __det;
-        let __dqdd1_dtau1 = (3.0 / 2.0) * __inv_det;
-        let __dqdd2_dtau2 = __t1 * __inv_det;
-        let __t7 = -__dqdd1_dtau1;
-        let __t8 = -__dqdd2_dtau2;
-        let __dqdd1_dq1 = (-((38259.0 / 4000.0) * __s1) - __q2 * (2943.0 / 200.0) * __s1)
-            * __t7;
-        let __dqdd2_dq1 = __t3 * __t8;
-        let __dqdd1_dq2 = (__t3 + (27.0 / 20.0) * __t4 + 3.0 * __t2 + 3.0 * __q2 * __t4)
-            * __t7;
-        let __dqdd2_dq2 = (-((3.0 / 2.0) * __qd1 * __qd1)) * __t8;
-        let __dqdd1_dqd1 = ((27.0 / 20.0) * __qd2 + 3.0 * __q2 * __qd2) * __t7;
-        let __dqdd2_dqd1 = (-__t5 - __t6) * __t8;
-        let __dqdd1_dqd2 = (__t5 + __t6) * __t7;
-        let __dqdd2_dqd2 = 0.0;
-        (
-            ::planar_arm::__private::matrix([
-                [__dqdd1_dq1, __dqdd1_dq2],
-                [__dqdd2_dq1, __dqdd2_dq2],
-            ]),
-            ::planar_arm::__private::matrix([
-                [__dqdd1_dqd1, __dqdd1_dqd2],
-                [__dqdd2_dqd1, __dqdd2_dqd2],
-            ]),
-            ::planar_arm::__private::matrix([
-                [__dqdd1_dtau1, __dqdd2_dqd2],
-                [__dqdd2_dqd2, __dqdd2_dtau2],
-            ]),
-        )
     }
     #[doc(hidden)]
     type __Frozen = ::planar_arm::__private::Block<0>;

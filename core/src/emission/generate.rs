@@ -133,9 +133,15 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
         ..
     } = header;
     let nn = &cx.nn;
+    let (dynamics, methods) = super::traits::split_dynamics(methods);
     Ok(quote! {
         #[automatically_derived]
         #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
+        impl #impl_generics ::planar_arm::Dynamics<#nn> for #ty #where_clause {
+            #(#dynamics)*
+        }
+        #[automatically_derived]
+        #[allow(clippy::nursery)]
         impl #impl_generics ::planar_arm::PlanarArm<#nn> for #ty #where_clause {
             #exact
             #[inline]
@@ -170,7 +176,7 @@ pub fn summary<C: Emit>(d: &Derived<C>) -> String {
     s
 }
 
-/// A stub `impl PlanarArm<n>` whose methods are unreachable: emitted next to a compile error
+/// Stub `impl Dynamics<n>` and `impl PlanarArm<n>` whose methods are unreachable: emitted next to a compile error
 /// so that uses of the trait elsewhere do not add a cascade of errors.
 #[must_use]
 pub fn stub(n: usize, header: &Header) -> TokenStream {
@@ -191,6 +197,19 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
     quote! {
         #[automatically_derived]
         #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
+        impl #impl_generics ::planar_arm::Dynamics<#nn> for #ty #where_clause {
+            fn mass_matrix #g(&self, _: #vt) -> #mt #body
+            fn coriolis #g(&self, _: #vt, _: #vt) -> #svt #body
+            fn gravity #g(&self, _: #vt) -> #svt #body
+            fn friction #g(&self, _: #vt) -> #svt #body
+            fn bias #g(&self, _: #vt, _: #vt) -> #svt #body
+            fn mass_matrix_and_bias #g(&self, _: #vt, _: #vt) -> (#mt, #svt) #body
+            fn inverse_dynamics #g(&self, _: #vt, _: #vt, _: #vt) -> #svt #body
+            fn forward_dynamics #g(&self, _: #vt, _: #vt, _: #vt) -> #svt #body
+            fn kinetic_energy #g(&self, _: #vt, _: #vt) -> __T #body
+            fn potential_energy #g(&self, _: #vt) -> __T #body
+        }
+        #[automatically_derived]
         impl #impl_generics ::planar_arm::PlanarArm<#nn> for #ty #where_clause {
             const EXACT: ::planar_arm::exact::Derivation<#nn> = ::planar_arm::exact::Derivation {
                 kinetic_energy: ::planar_arm::__private::terms(b"", &[]),
@@ -199,19 +218,9 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
                 coriolis: [::planar_arm::__private::terms(b"", &[]); #nn],
                 gravity: [::planar_arm::__private::terms(b"", &[]); #nn],
             };
-            fn mass_matrix #g(&self, _: #vt) -> #mt #body
-            fn coriolis #g(&self, _: #vt, _: #vt) -> #svt #body
             fn coriolis_matrix #g(&self, _: #vt, _: #vt) -> #mt #body
-            fn gravity #g(&self, _: #vt) -> #svt #body
-            fn friction #g(&self, _: #vt) -> #svt #body
-            fn bias #g(&self, _: #vt, _: #vt) -> #svt #body
-            fn mass_matrix_and_bias #g(&self, _: #vt, _: #vt) -> (#mt, #svt) #body
             type __Frozen = ::planar_arm::__private::Block<0>;
             fn model(&self) -> ::planar_arm::Model<#nn> #body
-            fn inverse_dynamics #g(&self, _: #vt, _: #vt, _: #vt) -> #svt #body
-            fn forward_dynamics #g(&self, _: #vt, _: #vt, _: #vt) -> #svt #body
-            fn kinetic_energy #g(&self, _: #vt, _: #vt) -> __T #body
-            fn potential_energy #g(&self, _: #vt) -> __T #body
             fn tip_pose(&self, _: #v) -> ::planar_arm::nalgebra::Isometry2<#F64> #body
             fn jacobian #g(&self, _: #vt) -> ::planar_arm::nalgebra::SMatrix<__T, 3, #nn> #body
             fn joint_positions #g(&self, _: #vt) -> [::planar_arm::nalgebra::Point2<__T>; #nn] #body

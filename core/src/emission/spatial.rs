@@ -188,10 +188,11 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
             quote!((#m, #h))
         }),
     ));
-    let mut body = Vec::with_capacity(fns.len() + 3);
+    let mut body = Vec::with_capacity(fns.len() + 5);
     for f in &fns {
         body.push(emit_fn(n, f, None)?);
     }
+    body.extend(solved(n));
     body.push(exact(n, &d)?);
     body.push(model(arm)?);
     body.push(inverse_kinematics(arm)?);
@@ -201,13 +202,52 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
         where_clause,
         ..
     } = header;
+    let (dynamics, body) = super::traits::split_dynamics(body);
     Ok(quote! {
         #[automatically_derived]
         #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
+        impl #impl_generics ::planar_arm::Dynamics<#nn> for #ty #where_clause {
+            #(#dynamics)*
+        }
+        #[automatically_derived]
+        #[allow(clippy::nursery)]
         impl #impl_generics ::planar_arm::spatial::SpatialArm<#nn> for #ty #where_clause {
             #(#body)*
         }
     })
+}
+
+/// `forward_dynamics` and `kinetic_energy`, written as calls of the generated
+/// `mass_matrix_and_bias` and `mass_matrix` and of the run-time crate: planar arms' `L D L^T`
+/// solve (each pivot floored at 2^-52 `M_ii`) and quadratic form.
+fn solved(n: usize) -> [TokenStream; 2] {
+    let nn = Literal::usize_unsuffixed(n);
+    let v = quote!(::planar_arm::nalgebra::SVector<__T, #nn>);
+    let (q, qd, tau) = (local("q"), local("qd"), local("tau"));
+    let (m, h) = (local("m"), local("h"));
+    [
+        quote! {
+            /// The accelerations qdd that solve M qdd = tau - c - g - f: M and h = c + g + f from
+            /// `mass_matrix_and_bias` (one program), then an L D L^T factorisation of M (no
+            /// square roots, no allocation), each pivot floored at 2^-52 M_ii. An arm with a
+            /// joint that moves no mass, inertia or armature has a singular M and accelerations
+            /// that are not finite; `try_forward_dynamics` says so with an `Err`.
+            #[inline]
+            fn forward_dynamics<__T: ::planar_arm::Real>(&self, #q: &#v, #qd: &#v, #tau: &#v) -> #v {
+                let (#m, #h) = self.mass_matrix_and_bias(#q, #qd);
+                ::planar_arm::__private::forward_solve(
+                    &#m, #tau, &#h, [::planar_arm::__private::Floor::Relative; #nn],
+                )
+            }
+        },
+        quote! {
+            /// The kinetic energy qd^T M qd / 2, J, armature included.
+            #[inline]
+            fn kinetic_energy<__T: ::planar_arm::Real>(&self, #q: &#v, #qd: &#v) -> __T {
+                ::planar_arm::__private::kinetic_energy(&self.mass_matrix(#q), #qd)
+            }
+        },
+    ]
 }
 
 /// `__private::isometry3` of twelve outputs: the rotation row-major, then the position.

@@ -93,6 +93,20 @@ fn stub(input: &DeriveInput) -> TokenStream {
     let _ = ToTokens::to_token_stream(&input.ident);
     quote! {
         #[automatically_derived]
+        impl #impl_generics ::planar_arm::Dynamics<#nn> for #ty #where_clause {
+            fn gravity<__T: ::planar_arm::Real>(&self, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
+            fn potential_energy<__T: ::planar_arm::Real>(&self, _: #vt) -> __T #body
+            fn inverse_dynamics<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
+            fn forward_dynamics<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
+            fn kinetic_energy<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt) -> __T #body
+            fn mass_matrix<__T: ::planar_arm::Real>(&self, _: #vt) -> ::planar_arm::nalgebra::SMatrix<__T, #nn, #nn> #body
+            fn coriolis<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
+            fn friction<__T: ::planar_arm::Real>(&self, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
+            fn bias<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
+            fn mass_matrix_and_bias<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt)
+                -> (::planar_arm::nalgebra::SMatrix<__T, #nn, #nn>, ::planar_arm::nalgebra::SVector<__T, #nn>) #body
+        }
+        #[automatically_derived]
         impl #impl_generics ::planar_arm::spatial::SpatialArm<#nn> for #ty #where_clause {
             const EXACT: ::planar_arm::exact::SpatialDerivation<#nn> = ::planar_arm::exact::SpatialDerivation {
                 expansion: ::core::option::Option::None,
@@ -100,15 +114,6 @@ fn stub(input: &DeriveInput) -> TokenStream {
             fn tip_pose(&self, _: #v) -> ::planar_arm::nalgebra::Isometry3<#F64> #body
             fn link_poses(&self, _: #v) -> [::planar_arm::nalgebra::Isometry3<#F64>; #nn] #body
             fn jacobian<__T: ::planar_arm::Real>(&self, _: #vt) -> ::planar_arm::nalgebra::SMatrix<__T, 6, #nn> #body
-            fn gravity<__T: ::planar_arm::Real>(&self, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
-            fn potential_energy<__T: ::planar_arm::Real>(&self, _: #vt) -> __T #body
-            fn inverse_dynamics<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
-            fn mass_matrix<__T: ::planar_arm::Real>(&self, _: #vt) -> ::planar_arm::nalgebra::SMatrix<__T, #nn, #nn> #body
-            fn coriolis<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
-            fn friction<__T: ::planar_arm::Real>(&self, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
-            fn bias<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
-            fn mass_matrix_and_bias<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt)
-                -> (::planar_arm::nalgebra::SMatrix<__T, #nn, #nn>, ::planar_arm::nalgebra::SVector<__T, #nn>) #body
             fn model(&self) -> ::planar_arm::spatial::SpatialModel<#nn> #body
             fn inverse_kinematics(&self, _: &::planar_arm::nalgebra::Isometry3<#F64>)
                 -> ::core::result::Result<::planar_arm::spatial::IkSolutions<#nn>, ::planar_arm::ArmError> #body

@@ -6,7 +6,7 @@
 #![deny(warnings)]
 
 use planar_arm::nalgebra::{SMatrix, SVector, Vector2};
-use planar_arm::{ArmError, Linearize, PlanarArm, Revolute};
+use planar_arm::{ArmError, Dynamics, Linearize, PlanarArm, Revolute};
 
 /// A two-link arm with a run-time payload mass, friction and gravity.
 #[derive(PlanarArm)]

@@ -28,6 +28,7 @@ pub struct Found {
 mod tests {
     use super::*;
     use arm::nalgebra::Vector2;
+    use arm::Dynamics;
 
     #[test]
     fn the_renamed_crate_derives_and_runs() {
