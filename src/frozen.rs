@@ -102,21 +102,21 @@ impl<'a, A: PlanarArm<N> + ?Sized, const N: usize> Frozen<'a, A, N> {
         self.arm
     }
 
-    /// [`PlanarArm::mass_matrix`].
+    /// [`Dynamics::mass_matrix`](crate::Dynamics::mass_matrix).
     #[inline]
     #[must_use]
     pub fn mass_matrix<T: Real>(&self, q: &SVector<T, N>) -> SMatrix<T, N, N> {
         self.arm.__mass_matrix_frozen(&self.block, q)
     }
 
-    /// [`PlanarArm::bias`].
+    /// [`Dynamics::bias`](crate::Dynamics::bias).
     #[inline]
     #[must_use]
     pub fn bias<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> SVector<T, N> {
         self.arm.__bias_frozen(&self.block, q, qd)
     }
 
-    /// [`PlanarArm::mass_matrix_and_bias`].
+    /// [`Dynamics::mass_matrix_and_bias`](crate::Dynamics::mass_matrix_and_bias).
     #[inline]
     #[must_use]
     pub fn mass_matrix_and_bias<T: Real>(
@@ -127,7 +127,7 @@ impl<'a, A: PlanarArm<N> + ?Sized, const N: usize> Frozen<'a, A, N> {
         self.arm.__mass_matrix_and_bias_frozen(&self.block, q, qd)
     }
 
-    /// [`PlanarArm::inverse_dynamics`].
+    /// [`Dynamics::inverse_dynamics`](crate::Dynamics::inverse_dynamics).
     #[inline]
     #[must_use]
     pub fn inverse_dynamics<T: Real>(
@@ -139,7 +139,7 @@ impl<'a, A: PlanarArm<N> + ?Sized, const N: usize> Frozen<'a, A, N> {
         self.arm.__inverse_dynamics_frozen(&self.block, q, qd, qdd)
     }
 
-    /// [`PlanarArm::forward_dynamics`].
+    /// [`Dynamics::forward_dynamics`](crate::Dynamics::forward_dynamics).
     #[inline]
     #[must_use]
     pub fn forward_dynamics<T: Real>(

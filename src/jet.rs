@@ -13,7 +13,7 @@ use crate::Real;
 /// It implements [`Real`], so every generic generated method evaluates in it: seed the inputs
 /// with unit derivatives and the outputs carry their exact partial derivatives (to rounding),
 /// computed through the same straight-line code, in one pass.
-/// [`PlanarArm::inverse_dynamics_derivatives`](crate::PlanarArm::inverse_dynamics_derivatives)
+/// [`Dynamics::inverse_dynamics_derivatives`](crate::Dynamics::inverse_dynamics_derivatives)
 /// is built this way.
 ///
 /// ```

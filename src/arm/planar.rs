@@ -63,7 +63,7 @@ pub trait PlanarArm<const N: usize>: Dynamics<N> {
     /// The tip in polar form (r, theta); r does not depend on q1 when joint 1 is revolute.
     fn tip_polar(&self, q: &SVector<f64, N>) -> (f64, f64);
     /// Motor torques that make the tip exert force `force` and torque `torque` on what it
-    /// holds: tau = J^T w (gravity is separate, in [`gravity`](Self::gravity)).
+    /// holds: tau = J^T w (gravity is separate, in [`gravity`](crate::Dynamics::gravity)).
     fn joint_torques(
         &self,
         q: &SVector<f64, N>,

@@ -203,27 +203,27 @@ macro_rules! dyn_methods {
             pub fn links(&self) -> [Link; N] {
                 self.__dyn_model().links
             }
-            /// [`PlanarArm::mass_matrix`].
+            /// [`Dynamics::mass_matrix`](crate::Dynamics::mass_matrix).
             pub fn mass_matrix(&self, q: &SVector<f64, N>) -> SMatrix<f64, N, N> {
                 self.__dyn_mass_matrix(q)
             }
-            /// [`PlanarArm::coriolis`].
+            /// [`Dynamics::coriolis`](crate::Dynamics::coriolis).
             pub fn coriolis(&self, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> SVector<f64, N> {
                 self.__dyn_coriolis(q, qd)
             }
-            /// [`PlanarArm::gravity`].
+            /// [`Dynamics::gravity`](crate::Dynamics::gravity).
             pub fn gravity(&self, q: &SVector<f64, N>) -> SVector<f64, N> {
                 self.__dyn_gravity(q)
             }
-            /// [`PlanarArm::friction`].
+            /// [`Dynamics::friction`](crate::Dynamics::friction).
             pub fn friction(&self, qd: &SVector<f64, N>) -> SVector<f64, N> {
                 self.__dyn_friction(qd)
             }
-            /// [`PlanarArm::bias`].
+            /// [`Dynamics::bias`](crate::Dynamics::bias).
             pub fn bias(&self, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> SVector<f64, N> {
                 self.__dyn_bias(q, qd)
             }
-            /// [`PlanarArm::inverse_dynamics`].
+            /// [`Dynamics::inverse_dynamics`](crate::Dynamics::inverse_dynamics).
             pub fn inverse_dynamics(
                 &self,
                 q: &SVector<f64, N>,
@@ -232,7 +232,7 @@ macro_rules! dyn_methods {
             ) -> SVector<f64, N> {
                 self.__dyn_inverse_dynamics(q, qd, qdd)
             }
-            /// [`PlanarArm::forward_dynamics`].
+            /// [`Dynamics::forward_dynamics`](crate::Dynamics::forward_dynamics).
             pub fn forward_dynamics(
                 &self,
                 q: &SVector<f64, N>,
@@ -241,7 +241,7 @@ macro_rules! dyn_methods {
             ) -> SVector<f64, N> {
                 self.__dyn_forward_dynamics(q, qd, tau)
             }
-            /// [`PlanarArm::try_forward_dynamics`].
+            /// [`Dynamics::try_forward_dynamics`](crate::Dynamics::try_forward_dynamics).
             ///
             /// # Errors
             /// As there.
@@ -253,11 +253,11 @@ macro_rules! dyn_methods {
             ) -> Result<SVector<f64, N>, ArmError> {
                 self.__dyn_try_forward_dynamics(q, qd, tau)
             }
-            /// [`PlanarArm::kinetic_energy`].
+            /// [`Dynamics::kinetic_energy`](crate::Dynamics::kinetic_energy).
             pub fn kinetic_energy(&self, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> f64 {
                 self.__dyn_kinetic_energy(q, qd)
             }
-            /// [`PlanarArm::potential_energy`].
+            /// [`Dynamics::potential_energy`](crate::Dynamics::potential_energy).
             pub fn potential_energy(&self, q: &SVector<f64, N>) -> f64 {
                 self.__dyn_potential_energy(q)
             }
