@@ -4,6 +4,7 @@
 
 use nalgebra::{SMatrix, SVector};
 
+use crate::kinematics::check_vector;
 use crate::{mass_inverse, ArmError, Jet, Real};
 
 /// The dynamics of a serial arm of `N` joints, `tau = M(q) qdd + c(q, qd) + g(q) + f(qd)`, as
@@ -158,11 +159,11 @@ pub trait Dynamics<const N: usize> {
         qd: &SVector<f64, N>,
         tau: &SVector<f64, N>,
     ) -> Result<SVector<f64, N>, ArmError> {
-        finite(q, "q")?;
-        finite(qd, "qd")?;
-        finite(tau, "tau")?;
+        check_vector(q, "q")?;
+        check_vector(qd, "qd")?;
+        check_vector(tau, "tau")?;
         let qdd = self.forward_dynamics(q, qd, tau);
-        finite(&qdd, "result")?;
+        check_vector(&qdd, "result")?;
         Ok(qdd)
     }
 
@@ -176,23 +177,11 @@ pub trait Dynamics<const N: usize> {
         qd: &SVector<f64, N>,
         qdd: &SVector<f64, N>,
     ) -> Result<SVector<f64, N>, ArmError> {
-        finite(q, "q")?;
-        finite(qd, "qd")?;
-        finite(qdd, "qdd")?;
+        check_vector(q, "q")?;
+        check_vector(qd, "qd")?;
+        check_vector(qdd, "qdd")?;
         let tau = self.inverse_dynamics(q, qd, qdd);
-        finite(&tau, "result")?;
+        check_vector(&tau, "result")?;
         Ok(tau)
-    }
-}
-
-/// `Err(NonFinite { argument })` if `v` holds NaN or an infinity.
-pub(crate) fn finite<const N: usize>(
-    v: &SVector<f64, N>,
-    argument: &'static str,
-) -> Result<(), ArmError> {
-    if v.iter().all(|x| x.is_finite()) {
-        Ok(())
-    } else {
-        Err(ArmError::NonFinite { argument })
     }
 }

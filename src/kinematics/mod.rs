@@ -127,8 +127,9 @@ fn check_lengths(lengths: &[f64]) -> Result<(), ArmError> {
     }
 }
 
+/// `Err(NonFinite { argument })` if `v` holds NaN or an infinity.
 #[inline]
-fn check_vector<const N: usize>(
+pub(crate) fn check_vector<const N: usize>(
     v: &SVector<f64, N>,
     argument: &'static str,
 ) -> Result<(), ArmError> {
