@@ -567,6 +567,11 @@ fn against_reference<A: SpatialArm<N>, const N: usize>(
             (c - cr).amax() < 1e-12 * (1.0 + cr.amax()),
             "{q}: {c} vs {cr}"
         );
+        let cm = arm.coriolis_matrix(&q, &qd);
+        assert!(
+            (cm * qd - cr).amax() < 1e-12 * (1.0 + cr.amax()),
+            "{q}: C qd vs {cr}"
+        );
         let f = arm.friction(&qd);
         assert!((f - reference::friction(hand, &qd)).amax() < 1e-14, "{qd}");
         let h = arm.bias(&q, &qd);

@@ -397,6 +397,29 @@ fn compare<const N: usize>(d: &ArmDraw, derived: &SpatialDerived) -> Result<(), 
             );
         }
     }
+    // C qd is c, and Mdot - 2C is skew (Mdot along qd by central differences of the
+    // reference's M).
+    let c = outputs_at(&derived.coriolis_matrix, qs, qd.as_slice(), &[], reach);
+    let c = planar_arm::nalgebra::SMatrix::<f64, N, N>::from_fn(|i, j| {
+        c[&format!("c{}{}", i + 1, j + 1)]
+    });
+    let expected = reference::coriolis(&model, &q, &qd);
+    let scale = 1.0 + expected.amax();
+    prop_assert!(
+        (c * qd - expected).amax() < 1e-12 * scale,
+        "C qd {} vs {expected}",
+        c * qd
+    );
+    let h = 1e-6;
+    let m_dot = (reference::mass_matrix(&model, &(q + qd * h))
+        - reference::mass_matrix(&model, &(q - qd * h)))
+        / (2.0 * h);
+    let skew = m_dot - c * 2.0;
+    let scale = 1.0 + m_dot.amax();
+    prop_assert!(
+        (skew + skew.transpose()).amax() < 1e-6 * scale,
+        "Mdot - 2C not skew: {skew}"
+    );
     Ok(())
 }
 

@@ -50,6 +50,8 @@ pub trait Dynamics<const N: usize> {
     fn mass_matrix<T: Real>(&self, q: &SVector<T, N>) -> SMatrix<T, N, N>;
     /// The velocity-product (Coriolis and centrifugal) torques c(q, qd).
     fn coriolis<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> SVector<T, N>;
+    /// The Coriolis matrix C(q, qd) built from Christoffel symbols: `C qd = c` and `Mdot - 2C` is skew.
+    fn coriolis_matrix<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> SMatrix<T, N, N>;
     /// The torques that hold the arm against gravity, g(q) = dV/dq.
     fn gravity<T: Real>(&self, q: &SVector<T, N>) -> SVector<T, N>;
     /// The joint friction torques f(qd): viscous `damping qd_i` plus Coulomb

@@ -51,8 +51,6 @@ pub trait PlanarArm<const N: usize>: Dynamics<N> {
         self.model().links
     }
 
-    /// The Coriolis matrix C(q, qd) built from Christoffel symbols: `C qd = c` and `Mdot - 2C` is skew.
-    fn coriolis_matrix<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> SMatrix<T, N, N>;
     /// Tip position and the orientation of the last link.
     fn tip_pose(&self, q: &SVector<f64, N>) -> Isometry2<f64>;
     /// The 3 x N Jacobian: rows are d/dt of tip x, tip y and the last link's angle.

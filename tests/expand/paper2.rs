@@ -47,6 +47,36 @@ Cost: 7 multiplications, 2 additions, 0 divisions, 1 sin_cos pairs.*/
         let __cor2 = __t1 * __qd1 * __qd1;
         ::planar_arm::__private::vector([__cor1, __cor2])
     }
+    /**The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.
+
+```text
+C11 = -1/2 s2 qd2
+C12 = -1/2 s2 qd1 - 1/2 s2 qd2
+C21 = 1/2 s2 qd1
+C22 = 0
+```
+
+
+Evaluated in the links' absolute angles, where each entry of C is a sum of products `dM~_ab/dphi_b w_b` of one small derivative and one absolute rate (see `planar_arm::symbolic::christoffel`).
+
+Cost: 3 multiplications, 3 additions, 0 divisions, 1 sin_cos pairs.*/
+    #[inline]
+    fn coriolis_matrix<__T: ::planar_arm::Real>(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 2>,
+    ) -> ::planar_arm::nalgebra::SMatrix<__T, 2, 2> {
+        let [_, __q2] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
+        let [(__s2, _)] = ::planar_arm::__private::sin_cos([__q2]);
+        let __t1 = __T::from_f64(1.0 / 2.0) * __s2;
+        let __t2 = (__qd1 + __qd2) * __t1;
+        let __cm12 = -__t2;
+        let __cm21 = __qd1 * __t1;
+        let __cm11 = __cm21 - __t2;
+        let __cm22 = __T::from_f64(0.0);
+        ::planar_arm::__private::matrix([[__cm11, __cm12], [__cm21, __cm22]])
+    }
     /**The gravity torques g(q) = dV/dq.
 
 ```text
@@ -445,36 +475,6 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
             gravity: (981.0 / 100.0),
             payload: ::planar_arm::Payload::NONE,
         }
-    }
-    /**The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.
-
-```text
-C11 = -1/2 s2 qd2
-C12 = -1/2 s2 qd1 - 1/2 s2 qd2
-C21 = 1/2 s2 qd1
-C22 = 0
-```
-
-
-Evaluated in the links' absolute angles, where each entry of C is a sum of products `dM~_ab/dphi_b w_b` of one small derivative and one absolute rate (see `planar_arm::symbolic::christoffel`).
-
-Cost: 3 multiplications, 3 additions, 0 divisions, 1 sin_cos pairs.*/
-    #[inline]
-    fn coriolis_matrix<__T: ::planar_arm::Real>(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
-        __qd: &::planar_arm::nalgebra::SVector<__T, 2>,
-    ) -> ::planar_arm::nalgebra::SMatrix<__T, 2, 2> {
-        let [_, __q2] = ::planar_arm::__private::unpack(__q);
-        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
-        let [(__s2, _)] = ::planar_arm::__private::sin_cos([__q2]);
-        let __t1 = __T::from_f64(1.0 / 2.0) * __s2;
-        let __t2 = (__qd1 + __qd2) * __t1;
-        let __cm12 = -__t2;
-        let __cm21 = __qd1 * __t1;
-        let __cm11 = __cm21 - __t2;
-        let __cm22 = __T::from_f64(0.0);
-        ::planar_arm::__private::matrix([[__cm11, __cm12], [__cm21, __cm22]])
     }
     /**The tip pose; the orientation is the last link's angle q1 + q2.
 

@@ -86,6 +86,60 @@ Cost: 19 multiplications, 17 additions, 0 divisions, 2 sin_cos pairs.*/
         let __cor1 = __cor2 + __fy1;
         ::planar_arm::__private::vector([__cor1, __cor2, __cor3])
     }
+    /**The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.
+
+```text
+C11 = (-3/2 s2 - 1/2 s23) qd2 + (-1/2 s23 - 1/2 s3) qd3
+C12 = (-3/2 s2 - 1/2 s23) qd1 + (-3/2 s2 - 1/2 s23) qd2 + (-1/2 s23 - 1/2 s3) qd3
+C13 = (-1/2 s23 - 1/2 s3) qd1 + (-1/2 s23 - 1/2 s3) qd2 + (-1/2 s23 - 1/2 s3) qd3
+C21 = (3/2 s2 + 1/2 s23) qd1 - 1/2 s3 qd3
+C22 = -1/2 s3 qd3
+C23 = -1/2 s3 qd1 - 1/2 s3 qd2 - 1/2 s3 qd3
+C31 = (1/2 s23 + 1/2 s3) qd1 + 1/2 s3 qd2
+C32 = 1/2 s3 qd1 + 1/2 s3 qd2
+C33 = 0
+```
+
+
+Evaluated in the links' absolute angles, where each entry of C is a sum of products `dM~_ab/dphi_b w_b` of one small derivative and one absolute rate (see `planar_arm::symbolic::christoffel`).
+
+Cost: 11 multiplications, 13 additions, 0 divisions, 2 sin_cos pairs.*/
+    #[inline]
+    fn coriolis_matrix<__T: ::planar_arm::Real>(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 3>,
+    ) -> ::planar_arm::nalgebra::SMatrix<__T, 3, 3> {
+        let [_, __q2, __q3] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
+        let [(__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
+            __q2,
+            __q3,
+        ]);
+        let __t1 = __qd1 + __qd2;
+        let __t2 = __t1 + __qd3;
+        let __t3 = __T::from_f64(3.0 / 2.0) * __s2;
+        let __s23 = __s2 * __c3 + __c2 * __s3;
+        let __t4 = __T::from_f64(1.0 / 2.0) * __s23;
+        let __t5 = __T::from_f64(1.0 / 2.0) * __s3;
+        let __t6 = -(__t2 * __t4);
+        let __t7 = __t6 - __t1 * __t3;
+        let __t8 = __t2 * __t5;
+        let __cm23 = -__t8;
+        let __cm32 = __t1 * __t5;
+        let __cm31 = __cm32 + __qd1 * __t4;
+        let __cm21 = __qd1 * __t3 - __t8 + __cm31;
+        let __cm11 = __t7 + __cm21;
+        let __cm22 = __cm32 - __t8;
+        let __cm12 = __t7 + __cm22;
+        let __cm13 = __t6 - __t8;
+        let __cm33 = __T::from_f64(0.0);
+        ::planar_arm::__private::matrix([
+            [__cm11, __cm12, __cm13],
+            [__cm21, __cm22, __cm23],
+            [__cm31, __cm32, __cm33],
+        ])
+    }
     /**The gravity torques g(q) = dV/dq.
 
 ```text
@@ -742,60 +796,6 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
             gravity: (981.0 / 100.0),
             payload: ::planar_arm::Payload::NONE,
         }
-    }
-    /**The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.
-
-```text
-C11 = (-3/2 s2 - 1/2 s23) qd2 + (-1/2 s23 - 1/2 s3) qd3
-C12 = (-3/2 s2 - 1/2 s23) qd1 + (-3/2 s2 - 1/2 s23) qd2 + (-1/2 s23 - 1/2 s3) qd3
-C13 = (-1/2 s23 - 1/2 s3) qd1 + (-1/2 s23 - 1/2 s3) qd2 + (-1/2 s23 - 1/2 s3) qd3
-C21 = (3/2 s2 + 1/2 s23) qd1 - 1/2 s3 qd3
-C22 = -1/2 s3 qd3
-C23 = -1/2 s3 qd1 - 1/2 s3 qd2 - 1/2 s3 qd3
-C31 = (1/2 s23 + 1/2 s3) qd1 + 1/2 s3 qd2
-C32 = 1/2 s3 qd1 + 1/2 s3 qd2
-C33 = 0
-```
-
-
-Evaluated in the links' absolute angles, where each entry of C is a sum of products `dM~_ab/dphi_b w_b` of one small derivative and one absolute rate (see `planar_arm::symbolic::christoffel`).
-
-Cost: 11 multiplications, 13 additions, 0 divisions, 2 sin_cos pairs.*/
-    #[inline]
-    fn coriolis_matrix<__T: ::planar_arm::Real>(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<__T, 3>,
-        __qd: &::planar_arm::nalgebra::SVector<__T, 3>,
-    ) -> ::planar_arm::nalgebra::SMatrix<__T, 3, 3> {
-        let [_, __q2, __q3] = ::planar_arm::__private::unpack(__q);
-        let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
-        let [(__s2, __c2), (__s3, __c3)] = ::planar_arm::__private::sin_cos([
-            __q2,
-            __q3,
-        ]);
-        let __t1 = __qd1 + __qd2;
-        let __t2 = __t1 + __qd3;
-        let __t3 = __T::from_f64(3.0 / 2.0) * __s2;
-        let __s23 = __s2 * __c3 + __c2 * __s3;
-        let __t4 = __T::from_f64(1.0 / 2.0) * __s23;
-        let __t5 = __T::from_f64(1.0 / 2.0) * __s3;
-        let __t6 = -(__t2 * __t4);
-        let __t7 = __t6 - __t1 * __t3;
-        let __t8 = __t2 * __t5;
-        let __cm23 = -__t8;
-        let __cm32 = __t1 * __t5;
-        let __cm31 = __cm32 + __qd1 * __t4;
-        let __cm21 = __qd1 * __t3 - __t8 + __cm31;
-        let __cm11 = __t7 + __cm21;
-        let __cm22 = __cm32 - __t8;
-        let __cm12 = __t7 + __cm22;
-        let __cm13 = __t6 - __t8;
-        let __cm33 = __T::from_f64(0.0);
-        ::planar_arm::__private::matrix([
-            [__cm11, __cm12, __cm13],
-            [__cm21, __cm22, __cm23],
-            [__cm31, __cm32, __cm33],
-        ])
     }
     /**The tip pose; the orientation is the last link's angle q1 + q2 + q3.
 

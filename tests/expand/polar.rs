@@ -49,6 +49,34 @@ Cost: 8 multiplications, 3 additions, 0 divisions, 0 sin_cos pairs.*/
             - __T::from_f64(3.0 / 2.0) * __q2 * __t2;
         ::planar_arm::__private::vector([__cor1, __cor2])
     }
+    /**The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.
+
+```text
+C11 = 27/40 qd2 + 3/2 qd2 q2
+C12 = 27/40 qd1 + 3/2 qd1 q2
+C21 = -27/40 qd1 - 3/2 qd1 q2
+C22 = 0
+```
+
+
+Cost: 6 multiplications, 4 additions, 0 divisions, 0 sin_cos pairs.*/
+    #[inline]
+    fn coriolis_matrix<__T: ::planar_arm::Real>(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 2>,
+    ) -> ::planar_arm::nalgebra::SMatrix<__T, 2, 2> {
+        let [_, __q2] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
+        let __cm11 = __T::from_f64(27.0 / 40.0) * __qd2
+            + __T::from_f64(3.0 / 2.0) * __qd2 * __q2;
+        let __t1 = __T::from_f64(27.0 / 40.0) * __qd1;
+        let __t2 = __T::from_f64(3.0 / 2.0) * __q2 * __qd1;
+        let __cm12 = __t1 + __t2;
+        let __cm21 = -__t1 - __t2;
+        let __cm22 = __T::from_f64(0.0);
+        ::planar_arm::__private::matrix([[__cm11, __cm12], [__cm21, __cm22]])
+    }
     /**The gravity torques g(q) = dV/dq.
 
 ```text
@@ -416,34 +444,6 @@ impl ::planar_arm::PlanarArm<2> for Polar {
             gravity: (981.0 / 100.0),
             payload: ::planar_arm::Payload::NONE,
         }
-    }
-    /**The Coriolis matrix from Christoffel symbols, C_ij = sum_k 1/2 (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k.
-
-```text
-C11 = 27/40 qd2 + 3/2 qd2 q2
-C12 = 27/40 qd1 + 3/2 qd1 q2
-C21 = -27/40 qd1 - 3/2 qd1 q2
-C22 = 0
-```
-
-
-Cost: 6 multiplications, 4 additions, 0 divisions, 0 sin_cos pairs.*/
-    #[inline]
-    fn coriolis_matrix<__T: ::planar_arm::Real>(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<__T, 2>,
-        __qd: &::planar_arm::nalgebra::SVector<__T, 2>,
-    ) -> ::planar_arm::nalgebra::SMatrix<__T, 2, 2> {
-        let [_, __q2] = ::planar_arm::__private::unpack(__q);
-        let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
-        let __cm11 = __T::from_f64(27.0 / 40.0) * __qd2
-            + __T::from_f64(3.0 / 2.0) * __qd2 * __q2;
-        let __t1 = __T::from_f64(27.0 / 40.0) * __qd1;
-        let __t2 = __T::from_f64(3.0 / 2.0) * __q2 * __qd1;
-        let __cm12 = __t1 + __t2;
-        let __cm21 = -__t1 - __t2;
-        let __cm22 = __T::from_f64(0.0);
-        ::planar_arm::__private::matrix([[__cm11, __cm12], [__cm21, __cm22]])
     }
     /**The tip pose; the orientation is the last link's angle q1.
 

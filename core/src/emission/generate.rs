@@ -200,6 +200,7 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
         impl #impl_generics ::planar_arm::Dynamics<#nn> for #ty #where_clause {
             fn mass_matrix #g(&self, _: #vt) -> #mt #body
             fn coriolis #g(&self, _: #vt, _: #vt) -> #svt #body
+            fn coriolis_matrix #g(&self, _: #vt, _: #vt) -> #mt #body
             fn gravity #g(&self, _: #vt) -> #svt #body
             fn friction #g(&self, _: #vt) -> #svt #body
             fn bias #g(&self, _: #vt, _: #vt) -> #svt #body
@@ -218,7 +219,6 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
                 coriolis: [::planar_arm::__private::terms(b"", &[]); #nn],
                 gravity: [::planar_arm::__private::terms(b"", &[]); #nn],
             };
-            fn coriolis_matrix #g(&self, _: #vt, _: #vt) -> #mt #body
             type __Frozen = ::planar_arm::__private::Block<0>;
             fn model(&self) -> ::planar_arm::Model<#nn> #body
             fn tip_pose(&self, _: #v) -> ::planar_arm::nalgebra::Isometry2<#F64> #body

@@ -161,6 +161,15 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
         Box::new(vector),
     ));
     fns.push(Fn::new(
+        "coriolis_matrix",
+        vec![q, qd],
+        mm.clone(),
+        "The Coriolis matrix C(q, qd) from Christoffel symbols: C qd = c, and Mdot - 2C is skew."
+            .to_string(),
+        d.coriolis_matrix.clone(),
+        Box::new(move |ids| matrix(n, n, ids)),
+    ));
+    fns.push(Fn::new(
         "friction",
         vec![qd],
         v.clone(),

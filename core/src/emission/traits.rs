@@ -8,6 +8,7 @@ use proc_macro2::{TokenStream, TokenTree};
 const DYNAMICS: &[&str] = &[
     "mass_matrix",
     "coriolis",
+    "coriolis_matrix",
     "gravity",
     "friction",
     "bias",

@@ -42,6 +42,8 @@ pub struct SpatialDerived {
     pub friction: Method,
     /// The mass matrix (row-major) and the bias in one program.
     pub mass_matrix_and_bias: Method,
+    /// The Coriolis matrix (row-major), from Christoffel symbols of M.
+    pub coriolis_matrix: Method,
 }
 
 impl SpatialDerived {
@@ -64,6 +66,7 @@ impl SpatialDerived {
             bias: newton_euler::inverse_dynamics(arm, Terms::BIAS, true),
             friction: newton_euler::friction_method(arm),
             mass_matrix_and_bias: composite::mass_matrix_and_bias(arm),
+            coriolis_matrix: composite::coriolis_matrix(arm),
         }
     }
 }

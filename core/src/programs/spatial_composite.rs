@@ -237,3 +237,48 @@ pub(crate) fn mass_matrix_and_bias(arm: &SpatialArmSpec) -> Method {
         "the composite-rigid-body algorithm and the recursive Newton-Euler algorithm at zero acceleration, unrolled in one program, each link in its own frame",
     )
 }
+
+/// The Coriolis matrix from Christoffel symbols of the first kind, row-major `N x N`:
+/// `C_ij = sum_k (dM_ij/dq_k + dM_ik/dq_j - dM_jk/dq_i) qd_k / 2`, the derivatives of the
+/// unrolled composite-rigid-body program taken at compile time (`derivative`), so that
+/// `C qd = c` and `Mdot - 2 C` is skew.
+pub(crate) fn coriolis_matrix(arm: &SpatialArmSpec) -> Method {
+    let mut p = Program::new();
+    let m = composite(&mut p, arm);
+    let n = m.len();
+    let upper: Vec<(usize, usize)> = (0..n).flat_map(|i| (i..n).map(move |j| (i, j))).collect();
+    let nodes: Vec<Id> = upper.iter().map(|&(i, j)| m[i][j]).collect();
+    let directions: Vec<Input> = (0..n).map(Input::Q).collect();
+    let derivatives = crate::programs::derivative::differentiate(&mut p, &nodes, &directions)
+        .expect("the composite-rigid-body program takes no max");
+    let at = |i: usize, j: usize| {
+        let (a, b) = (i.min(j), i.max(j));
+        upper
+            .iter()
+            .position(|&e| e == (a, b))
+            .expect("an upper entry")
+    };
+    let half = p.constant(crate::algebra::ring::ratio(1, 2));
+    let rates: Vec<Id> = (0..n).map(|k| p.input(Input::Qd(k))).collect();
+    let mut outputs = Vec::with_capacity(n * n);
+    for i in 0..n {
+        for j in 0..n {
+            let mut terms = Vec::with_capacity(n);
+            for (k, &rate) in rates.iter().enumerate() {
+                let (a, b, c) = (
+                    derivatives[at(i, j)][k],
+                    derivatives[at(i, k)][j],
+                    derivatives[at(j, k)][i],
+                );
+                let ab = p.add(a, b);
+                let symbol = p.sub(ab, c);
+                terms.push(p.mul(symbol, rate));
+            }
+            let total = crate::programs::spatial::sum(&mut p, &terms);
+            outputs.push((format!("c{}", two(i, j)), p.mul(half, total)));
+        }
+    }
+    Method::new(p, outputs).described(
+        "Christoffel symbols of the unrolled composite-rigid-body program's mass matrix, differentiated at compile time",
+    )
+}

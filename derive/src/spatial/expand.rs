@@ -101,6 +101,7 @@ fn stub(input: &DeriveInput) -> TokenStream {
             fn kinetic_energy<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt) -> __T #body
             fn mass_matrix<__T: ::planar_arm::Real>(&self, _: #vt) -> ::planar_arm::nalgebra::SMatrix<__T, #nn, #nn> #body
             fn coriolis<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
+            fn coriolis_matrix<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt) -> ::planar_arm::nalgebra::SMatrix<__T, #nn, #nn> #body
             fn friction<__T: ::planar_arm::Real>(&self, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
             fn bias<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
             fn mass_matrix_and_bias<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt)
