@@ -7,8 +7,10 @@ use crate::exact::SpatialDerivation;
 use crate::kinematics::DlsOptions;
 use crate::{ArmError, Dynamics, Real};
 
-/// A spatial serial arm of `N` joints, revolute or prismatic, whose kinematics and gravity were
-/// derived at compile time by `#[derive(SpatialArm)]`.
+/// A spatial serial arm of `N` joints, revolute or prismatic, whose kinematics, statics and
+/// dynamics were derived at compile time by `#[derive(SpatialArm)]`. The equations of motion
+/// (`mass_matrix`, `inverse_dynamics`, `gravity`, ...) are its supertrait
+/// [`Dynamics`](crate::Dynamics), shared with planar arms.
 ///
 /// Conventions: `q[i]` is joint `i`'s angle (radians) or slide (metres); link `i`'s frame is
 /// the one its convention defines ([`JointGeometry`](super::JointGeometry)); the tool frame is
