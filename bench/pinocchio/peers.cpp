@@ -23,7 +23,11 @@
 // `spatial` (the PUMA 560, UR5 and Franka Panda of benches/spatial.rs, built from their DH
 // parameters; one op, computeFrameJacobian of the tool frame in LOCAL_WORLD_ALIGNED, which also
 // places the frame, over 64 states with angles in [-pi, pi); its tool pose and Jacobian at the
-// first four states printed first as `# value` lines, as for `prismatic`).
+// first four states printed first as `# value` lines, as for `prismatic`) or
+// `spatial-dynamics` (the PUMA 560, UR5 and Franka Panda of benches/spatial_dynamics.rs with
+// their mass properties: rnea, crba, aba and crba + nonLinearEffects, crba and aba in both
+// conventions, and crba + nonLinearEffects + Pinocchio's Cholesky solve for the accelerations;
+// their results at the first four states printed first).
 
 #include <algorithm>
 #include <chrono>
@@ -44,6 +48,7 @@
 #include <pinocchio/algorithm/rnea-derivatives.hpp>
 #include <pinocchio/algorithm/aba-derivatives.hpp>
 #include <pinocchio/algorithm/frames.hpp>
+#include <pinocchio/algorithm/cholesky.hpp>
 
 #ifndef VARIANT
 #define VARIANT "unnamed"
@@ -559,12 +564,327 @@ static void spatial_main(long calls)
   std::printf("# checksum %.17g\n", checksum);
 }
 
+// ---------------------------------------------------------------------------------------------
+// Spatial dynamics (argv[2] == "spatial-dynamics"): the arms of benches/spatial_dynamics.rs
+// with their mass properties; rnea, crba, nonLinearEffects and aba.
+
+// The PUMA 560 of examples/puma.rs: Corke's standard DH rows (a, alpha, d) and each link's
+// mass, centre of mass and inertia about it (xx, yy, zz, xy, xz, yz) in the link's DH frame.
+struct DhLink
+{
+  DhRow row;
+  double mass;
+  Eigen::Vector3d com;
+  double inertia[6];
+};
+
+static std::vector<DhLink> puma_links()
+{
+  const double h = M_PI / 2.;
+  return {
+    {{0., h, 0.}, 0., {0., 0., 0.}, {0., 0.35, 0., 0., 0., 0.}},
+    {{0.4318, 0., 0.}, 17.4, {-0.3638, 0.006, 0.2275}, {0.13, 0.524, 0.539, 0., 0., 0.}},
+    {{0.0203, -h, 0.15005}, 4.8, {-0.0203, -0.0141, 0.07}, {0.066, 0.086, 0.0125, 0., 0., 0.}},
+    {{0., h, 0.4318}, 0.82, {0., 0.019, 0.}, {1.8e-3, 1.3e-3, 1.8e-3, 0., 0., 0.}},
+    {{0., -h, 0.}, 0.34, {0., 0., 0.}, {0.3e-3, 0.4e-3, 0.3e-3, 0., 0., 0.}},
+    {{0., 0., 0.}, 0.09, {0., 0., 0.032}, {0.15e-3, 0.15e-3, 0.04e-3, 0., 0., 0.}},
+  };
+}
+
+// One URDF joint and its link: the joint's origin (xyz, rpy), its axis ('x', 'y' or 'z', all
+// positive here), the link's mass, centre of mass and inertia about it (xx, yy, zz, xy, xz,
+// yz) in the link frame. Printed by bench/pinocchio/urdf_arms.py from example-robot-data's
+// URDFs (the Panda's hand and fingers merged into link 7), as in benches/spatial_dynamics.rs.
+struct UrdfLink
+{
+  double xyz[3], rpy[3];
+  char axis;
+  double mass, com[3], inertia[6];
+};
+
+static std::vector<UrdfLink> ur5_links()
+{
+  const double H = M_PI / 2.;
+  return {
+     {{0, 0, 0.089159}, {0, 0, 0}, 'z', 3.7, {0, 0, 0},
+      {0.010267495893, 0.010267495893, 0.00666, 0, 0, 0}},
+     {{0, 0.13585, 0}, {0, H, 0}, 'y', 8.393, {0, 0, 0.28},
+      {0.22689067591, 0.22689067591, 0.0151074, 0, 0, 0}},
+     {{0, -0.1197, 0.425}, {0, 0, 0}, 'y', 2.275, {0, 0, 0.25},
+      {0.049443313556, 0.049443313556, 0.004095, 0, 0, 0}},
+     {{0, 0, 0.39225}, {0, H, 0}, 'y', 1.219, {0, 0, 0},
+      {0.111172755531, 0.111172755531, 0.21942, 0, 0, 0}},
+     {{0, 0.093, 0}, {0, 0, 0}, 'z', 1.219, {0, 0, 0},
+      {0.111172755531, 0.111172755531, 0.21942, 0, 0, 0}},
+     {{0, 0, 0.09465}, {0, 0, 0}, 'y', 0.1879, {0, 0, 0},
+      {0.0171364731454, 0.0171364731454, 0.033822, 0, 0, 0}},
+  };
+}
+
+static std::vector<UrdfLink> panda_links()
+{
+  const double H = M_PI / 2.;
+  return {
+     {{0, 0, 0.333}, {0, 0, 0}, 'z', 4.970684, {0.003875, 0.002081, -0.04762},
+      {0.70337, 0.70661, 0.009117, -0.000139, 0.006772, 0.019169}},
+     {{0, 0, 0}, {-H, 0, 0}, 'z', 0.646926, {-0.003141, -0.02872, 0.003495},
+      {0.007962, 0.02811, 0.025995, -0.003925, 0.010254, 0.000704}},
+     {{0, -0.316, 0}, {H, 0, 0}, 'z', 3.228604, {0.027518, 0.039252, -0.066502},
+      {0.037242, 0.036155, 0.01083, -0.004761, -0.011396, -0.012805}},
+     {{0.0825, 0, 0}, {H, 0, 0}, 'z', 3.587895, {-0.05317, 0.104419, 0.027454},
+      {0.025853, 0.019552, 0.028323, 0.007796, -0.001332, 0.008641}},
+     {{-0.0825, 0.384, 0}, {-H, 0, 0}, 'z', 1.225946, {-0.011953, 0.041065, -0.038437},
+      {0.035549, 0.029474, 0.008627, -0.002117, -0.004037, 0.000229}},
+     {{0, 0, 0}, {H, 0, 0}, 'z', 1.666555, {0.060149, -0.014117, -0.010517},
+      {0.001964, 0.004354, 0.005433, 0.000109, -0.001158, 0.000341}},
+     {{0.088, 0, 0}, {H, 0, 0}, 'z', 1.4955219999999998, {0.0017208742976286568, 0.001360354417161231, 0.1004852811486558},
+      {0.016529853712634632, 0.014107248642161837, 0.006676955556640956, 0.0003948922971191779, -0.0007066957106145017, -0.001051105327046708}},
+  };
+}
+
+// cos and sin with those of multiples of pi/2 exact (0, 1, -1), as the derive has them.
+static double snap(double x)
+{
+  for (double v : {0., 1., -1.})
+    if (std::abs(x - v) < 1e-15)
+      return v;
+  return x;
+}
+
+// URDF's roll-pitch-yaw: Rz(yaw) Ry(pitch) Rx(roll).
+static Eigen::Matrix3d rpy_matrix(const double rpy[3])
+{
+  const double cr = snap(std::cos(rpy[0])), sr = snap(std::sin(rpy[0]));
+  const double cp = snap(std::cos(rpy[1])), sp = snap(std::sin(rpy[1]));
+  const double cy = snap(std::cos(rpy[2])), sy = snap(std::sin(rpy[2]));
+  Eigen::Matrix3d x, y, z;
+  x << 1., 0., 0., 0., cr, -sr, 0., sr, cr;
+  y << cp, 0., sp, 0., 1., 0., -sp, 0., cp;
+  z << cy, -sy, 0., sy, cy, 0., 0., 0., 1.;
+  return z * y * x;
+}
+
+static pin::Inertia body_inertia(double mass, const Eigen::Vector3d & com, const double i[6])
+{
+  // Symmetric3(xx, xy, yy, xz, yz, zz), about the centre of mass.
+  return pin::Inertia(mass, com, pin::Symmetric3(i[0], i[3], i[1], i[4], i[5], i[2]));
+}
+
+// The PUMA: JointModelRZ joints placed as in build_spatial (standard DH: joint i at B_{i-1}),
+// each link's inertia placed in its joint's frame by B_i = Tz(d_i) Tx(a_i) Rx(alpha_i), which
+// carries the joint's frame to the link's DH frame (as bench/pinocchio/spatial_dynamics.py).
+static pin::Model build_puma_dynamics()
+{
+  pin::Model model;
+  model.gravity.linear(Eigen::Vector3d(0., 0., -9.81));
+  pin::SE3 carry = pin::SE3::Identity();
+  pin::JointIndex parent = 0;
+  int k = 0;
+  for (const DhLink & l : puma_links())
+  {
+    ++k;
+    parent = model.addJoint(parent, pin::JointModelRZ(), carry, "joint" + std::to_string(k));
+    carry = pin::SE3(rot_x(l.row.alpha), Eigen::Vector3d(l.row.a, 0., l.row.d));
+    model.appendBodyToJoint(parent, body_inertia(l.mass, l.com, l.inertia), carry);
+  }
+  return model;
+}
+
+// A URDF chain as Pinocchio's URDF parser builds it: joint i placed at its origin in the
+// previous joint's (= link's) frame, a JointModelRX/RY/RZ for an axis along x/y/z, the
+// link's inertia in the joint's frame. Gravity (0, 0, -9.81), Pinocchio's default.
+static pin::Model build_urdf(const std::vector<UrdfLink> & links)
+{
+  pin::Model model;
+  model.gravity.linear(Eigen::Vector3d(0., 0., -9.81));
+  pin::JointIndex parent = 0;
+  int k = 0;
+  for (const UrdfLink & l : links)
+  {
+    ++k;
+    const pin::SE3 placement(rpy_matrix(l.rpy), Eigen::Vector3d(l.xyz[0], l.xyz[1], l.xyz[2]));
+    const std::string name = "joint" + std::to_string(k);
+    switch (l.axis)
+    {
+    case 'x':
+      parent = model.addJoint(parent, pin::JointModelRX(), placement, name);
+      break;
+    case 'y':
+      parent = model.addJoint(parent, pin::JointModelRY(), placement, name);
+      break;
+    default:
+      parent = model.addJoint(parent, pin::JointModelRZ(), placement, name);
+    }
+    model.appendBodyToJoint(
+      parent, body_inertia(l.mass, Eigen::Vector3d(l.com[0], l.com[1], l.com[2]), l.inertia),
+      pin::SE3::Identity());
+  }
+  return model;
+}
+
+struct DynamicsArm
+{
+  const char * name;
+  pin::Model model;
+};
+
+static std::vector<DynamicsArm> dynamics_arms()
+{
+  return {
+    {"Puma560", build_puma_dynamics()},
+    {"Ur5", build_urdf(ur5_links())},
+    {"Panda", build_urdf(panda_links())},
+  };
+}
+
+// benches/spatial_dynamics.rs's states: q from seed 1000 + 3k in [-pi, pi), v from
+// 1001 + 3k and a (aba's tau) from 1002 + 3k in [-1, 1).
+static States dynamics_states(int n)
+{
+  States st;
+  for (int k = 0; k < NSTATES; ++k)
+  {
+    st.q.push_back(state(n, 1000 + 3 * k, M_PI));
+    st.v.push_back(state(n, 1001 + 3 * k, 1.));
+    st.a.push_back(state(n, 1002 + 3 * k, 1.));
+  }
+  return st;
+}
+
+// crba in either convention, both triangles (crba fills the upper one).
+static Eigen::MatrixXd full_crba(
+  const pin::Model & m, pin::Data & d, const Eigen::VectorXd & q, pin::Convention c)
+{
+  Eigen::MatrixXd M = pin::crba(m, d, Ref(q), c);
+  M.triangularView<Eigen::StrictlyLower>() = M.transpose().triangularView<Eigen::StrictlyLower>();
+  return M;
+}
+
+// The accelerations as the generated forward_dynamics gets them: crba, nonLinearEffects, then
+// Pinocchio's sparse (tree) Cholesky factorisation of M (cholesky::decompose, from crba's
+// upper triangle) and its solve of M qdd = tau - nle, in place in `x`.
+static double crba_nle_cholesky(
+  const pin::Model & m, pin::Data & d, const Eigen::VectorXd & q, const Eigen::VectorXd & v,
+  const Eigen::VectorXd & tau, Eigen::VectorXd & x)
+{
+  pin::crba(m, d, Ref(q));
+  pin::nonLinearEffects(m, d, q, v);
+  pin::cholesky::decompose(m, d);
+  x = tau - d.nle;
+  pin::cholesky::solve(m, d, x);
+  return x[m.nv - 1];
+}
+
+// Per arm, at the first four states: rnea, crba (both triangles, by columns), nonLinearEffects,
+// crba then nonLinearEffects (M by columns, then nle) and aba (a as tau), crba and aba in both
+// conventions (`_world` for Convention::WORLD), and the accelerations by crba,
+// nonLinearEffects and the Cholesky solve (`crba+nle+cholesky`), for run.sh to compare with the
+// generated code's (`cargo bench --bench spatial_dynamics -- --values`); then the timing of
+// rnea, crba, aba and crba + nonLinearEffects, crba and aba in both conventions, and of
+// crba + nonLinearEffects + the Cholesky solve.
+static void spatial_dynamics_main(long calls)
+{
+  std::printf("# checks (%s)\n", VARIANT);
+  for (DynamicsArm & arm : dynamics_arms())
+  {
+    const pin::Model & m = arm.model;
+    pin::Data d(m);
+    const int n = m.nv;
+    const States s = dynamics_states(n);
+    auto print = [&](const char * op, int k, const Eigen::VectorXd & x) {
+      std::printf("# value, %s, %s, %d,", arm.name, op, k);
+      for (int i = 0; i < x.size(); ++i)
+        std::printf(" %.17g", x[i]);
+      std::printf("\n");
+    };
+    auto flat = [](const Eigen::MatrixXd & M) {
+      return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(M.data(), M.size()));
+    };
+    for (int k = 0; k < 4; ++k)
+    {
+      const Eigen::VectorXd tau = pin::rnea(m, d, s.q[k], s.v[k], s.a[k]);
+      print("rnea", k, tau);
+      for (pin::Convention c : {pin::Convention::LOCAL, pin::Convention::WORLD})
+      {
+        const std::string sfx = c == pin::Convention::WORLD ? "_world" : "";
+        const Eigen::MatrixXd M = full_crba(m, d, s.q[k], c);
+        const Eigen::VectorXd nle = pin::nonLinearEffects(m, d, s.q[k], s.v[k]);
+        Eigen::VectorXd both(n * n + n);
+        both << flat(M), nle;
+        print(("crba" + sfx).c_str(), k, flat(M));
+        print(("crba" + sfx + "+nle").c_str(), k, both);
+        print(("aba" + sfx).c_str(), k, pin::aba(m, d, Ref(s.q[k]), Ref(s.v[k]), Ref(s.a[k]), c));
+        if (c == pin::Convention::LOCAL)
+        {
+          print("nle", k, nle);
+          Eigen::VectorXd x(n);
+          crba_nle_cholesky(m, d, s.q[k], s.v[k], s.a[k], x);
+          print("crba+nle+cholesky", k, x);
+          if (k == 0)
+            std::printf(
+              "# %s (N=%d): |M a + nle - rnea| = %.3g\n", arm.name, n,
+              (M * s.a[k] + nle - tau).cwiseAbs().maxCoeff());
+        }
+      }
+    }
+  }
+
+  std::printf("# variant=%s pinocchio=%s calls/round=%ld rounds=%d states=%d\n", VARIANT,
+              PINOCCHIO_VERSION, calls, ROUNDS, NSTATES);
+  std::printf("variant, N, op, wall ns/call, cpu ns/call\n");
+  for (DynamicsArm & arm : dynamics_arms())
+  {
+    const pin::Model & model = arm.model;
+    pin::Data data(model);
+    const int n = model.nv;
+    const States s = dynamics_states(n);
+    auto report = [&](const char * op, Timing t) {
+      std::printf("%s, %d, %s/%s, %.1f, %.1f\n", VARIANT, n, arm.name, op, t.wall, t.cpu);
+      std::fflush(stdout);
+    };
+    report("rnea", time_op(
+                     [&](int k) { return pin::rnea(model, data, s.q[k], s.v[k], s.a[k])[0]; },
+                     calls));
+    for (pin::Convention c : {pin::Convention::LOCAL, pin::Convention::WORLD})
+    {
+      const bool world = c == pin::Convention::WORLD;
+      report(world ? "crba_world" : "crba",
+             time_op([&](int k) { return pin::crba(model, data, Ref(s.q[k]), c)(0, n - 1); },
+                     calls));
+      report(world ? "aba_world" : "aba",
+             time_op(
+               [&](int k) {
+                 return pin::aba(model, data, Ref(s.q[k]), Ref(s.v[k]), Ref(s.a[k]), c)[n - 1];
+               },
+               calls));
+      report(world ? "crba_world+nle" : "crba+nle",
+             time_op(
+               [&](int k) {
+                 pin::crba(model, data, Ref(s.q[k]), c);
+                 pin::nonLinearEffects(model, data, s.q[k], s.v[k]);
+                 return data.M(0, n - 1) + data.nle[0];
+               },
+               calls));
+    }
+    Eigen::VectorXd x(n);
+    report("crba+nle+cholesky",
+           time_op([&](int k) { return crba_nle_cholesky(model, data, s.q[k], s.v[k], s.a[k], x); },
+                   calls));
+  }
+  std::printf("# checksum %.17g\n", checksum);
+}
+
 int main(int argc, char ** argv)
 {
   const long calls = argc > 1 ? std::atol(argv[1]) : 200000;
   if (argc > 2 && std::string(argv[2]) == "spatial")
   {
     spatial_main(calls);
+    return 0;
+  }
+  if (argc > 2 && std::string(argv[2]) == "spatial-dynamics")
+  {
+    spatial_dynamics_main(calls);
     return 0;
   }
   const bool prismatic = argc > 2 && std::string(argv[2]) == "prismatic";

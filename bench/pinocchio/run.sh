@@ -5,6 +5,7 @@
 #   CALLS=20000 bash bench/pinocchio/run.sh
 #   ARMS=prismatic VARIANTS=hdr-generic bash bench/pinocchio/run.sh
 #   ARMS=spatial VARIANTS=hdr-native bash bench/pinocchio/run.sh
+#   ARMS=spatial-dynamics VARIANTS=hdr-native REPS=7 bash bench/pinocchio/run.sh
 #
 # Environment:
 #   WORK        work dir (default /tmp/pinocchio_bench): venv, binaries, outputs
@@ -24,8 +25,17 @@
 #               `cargo bench --bench spatial -- --values`; then REPS turns, each timing the
 #               generated code (`cargo bench --bench spatial -- --peer CALLS`, the same protocol
 #               as peers.cpp) and then each Pinocchio build, the ratio of each pair taken within
-#               its turn and the median of the REPS ratios reported)
-#   REPS        ARMS=spatial only: how many times the two programs take turns (default 5)
+#               its turn and the median of the REPS ratios reported) or
+#               "spatial-dynamics" (the PUMA 560, UR5 and Franka Panda of
+#               benches/spatial_dynamics.rs with their mass properties: the generated
+#               inverse_dynamics, mass_matrix, forward_dynamics and mass_matrix_and_bias against
+#               rnea, crba, aba and crba + nonLinearEffects, crba and aba in both conventions,
+#               forward_dynamics also against crba + nonLinearEffects + cholesky::decompose +
+#               cholesky::solve; checked first with `cargo bench --bench spatial_dynamics --
+#               --values` (every one of those results against the generated code's), then timed
+#               in turns as "spatial")
+#   REPS        ARMS=spatial and spatial-dynamics: how many times the programs take turns
+#               (default 5)
 #
 # Builds (all -O3 -DNDEBUG -std=c++17 plus the compile definitions that the wheel's
 # pinocchio::pinocchio_headers CMake target exports):
@@ -51,8 +61,11 @@ case "$ARMS" in
   random) OUT=out ;;
   prismatic) OUT=out_prismatic ;;
   spatial) OUT=out_spatial ;;
-  *) echo "ARMS is random, prismatic or spatial, not $ARMS" >&2; exit 1 ;;
+  spatial-dynamics) OUT=out_spatial_dynamics ;;
+  *) echo "ARMS is random, prismatic, spatial or spatial-dynamics, not $ARMS" >&2; exit 1 ;;
 esac
+# The cargo bench that serves each mode.
+BENCH="${ARMS//-/_}"
 mkdir -p "$WORK"
 
 # 1. pin (+ its cmeel dependencies: boost, urdfdom, coal, ...) and Eigen's headers.
@@ -113,11 +126,16 @@ fi
 
 # The prismatic arms: Pinocchio's rnea, crba and aba against the generated code at the same
 # states (one call per round, so only the checks take time), to 1e-9 relative. The spatial
-# arms: Pinocchio's tool pose (oMf) and frame Jacobian against tip_pose and jacobian.
-if [ "$ARMS" = prismatic ] || [ "$ARMS" = spatial ]; then
-  (cd "$HERE/../.." && cargo bench -q --bench "$ARMS" -- --values) >"$WORK/values_rust.txt"
+# arms: Pinocchio's tool pose (oMf) and frame Jacobian against tip_pose and jacobian. The
+# spatial dynamics: rnea, crba, nonLinearEffects, crba + nonLinearEffects and aba (crba and aba
+# in both conventions, `_world` compared with the same generated result) against the generated
+# inverse_dynamics, mass_matrix, bias, mass_matrix_and_bias and forward_dynamics.
+if [ "$ARMS" != random ]; then
+  (cd "$HERE/../.." && cargo bench -q --bench "$BENCH" -- --values) >"$WORK/values_rust.txt"
+  grep -v '^# value' "$WORK/values_rust.txt" || true
   for v in $VARIANTS; do
     "$WORK/peers_$v" 1 "$ARMS" >"$WORK/values_$v.txt"
+    grep '^# .*|' "$WORK/values_$v.txt" || true
     "$PY" - "$WORK/values_rust.txt" "$WORK/values_$v.txt" "$v" <<'EOF'
 import sys
 def values(path):
@@ -128,16 +146,21 @@ def values(path):
             out[(arm, op, int(k))] = [float(x) for x in nums.split()]
     return out
 rust, pin, variant = values(sys.argv[1]), values(sys.argv[2]), sys.argv[3]
-assert rust and set(rust) == set(pin), "the two programs print different results"
+# Pinocchio's `_world` results (spatial-dynamics) are checked against the same generated ones,
+# and its accelerations by crba + nonLinearEffects + Cholesky against forward_dynamics too.
+alias = {"crba+nle+cholesky": "aba"}
+same = lambda key: (key[0], alias.get(key[1], key[1].replace("_world", "")), key[2])
+assert rust and set(rust) == {same(key) for key in pin}, "the two programs print different results"
 worst = {}
-for key, a in rust.items():
-    b = pin[key]
+for key, b in pin.items():
+    a = rust[same(key)]
+    assert len(a) == len(b), f"{key}: {len(a)} numbers against {len(b)}"
     scale = max(max(map(abs, a)), max(map(abs, b)), 1.0)
     err = max(abs(x - y) for x, y in zip(a, b)) / scale
     worst[key[:2]] = max(worst.get(key[:2], 0.0), err)
 print(f"# agreement ({variant}), generated vs Pinocchio, largest relative difference over 4 states:")
 for (arm, op), err in worst.items():
-    print(f"#   {arm:13s} {op:8s} {err:.1e}")
+    print(f"#   {arm:13s} {op:17s} {err:.1e}")
 if max(worst.values()) > 1e-9:
     sys.exit("generated and Pinocchio disagree")
 EOF
@@ -146,17 +169,19 @@ fi
 
 # The spatial arms: the generated code and Pinocchio take turns, REPS times; each ratio is
 # taken within one turn (the load drifts less within a turn than across the run).
-if [ "$ARMS" = spatial ]; then
+if [ "$ARMS" = spatial ] || [ "$ARMS" = spatial-dynamics ]; then
   REPS="${REPS:-5}"
   for r in $(seq 1 "$REPS"); do
     echo "# turn $r: generated (load: $(cut -d' ' -f1-3 /proc/loadavg))"
-    (cd "$HERE/../.." && cargo bench -q --bench spatial -- --peer "$CALLS") \
+    (cd "$HERE/../.." && cargo bench -q --bench "$BENCH" -- --peer "$CALLS") \
       | tee "$WORK/${OUT}_rust_$r.txt"
     for v in $VARIANTS; do
       echo "# turn $r: $v (load: $(cut -d' ' -f1-3 /proc/loadavg))"
-      "$WORK/peers_$v" "$CALLS" spatial | grep -v '^# value' | tee "$WORK/${OUT}_${v}_$r.txt"
+      "$WORK/peers_$v" "$CALLS" "$ARMS" | grep -v '^# value' | tee "$WORK/${OUT}_${v}_$r.txt"
     done
   done
+fi
+if [ "$ARMS" = spatial ]; then
   "$PY" - "$WORK" "$OUT" "$REPS" $VARIANTS <<'EOF'
 import statistics, sys
 work, out, reps, variants = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4:]
@@ -185,6 +210,54 @@ for idx, what in ((1, "thread CPU time"), (2, "wall clock")):
             line += (f" {statistics.median(p[arm][idx] for p in pin[v]):.1f} |"
                      f" {statistics.median(ratios):.2f}x ({min(ratios):.2f}-{max(ratios):.2f}) |")
         print(line)
+EOF
+  exit 0
+fi
+if [ "$ARMS" = spatial-dynamics ]; then
+  "$PY" - "$WORK" "$OUT" "$REPS" $VARIANTS <<'EOF'
+import statistics, sys
+work, out, reps, variants = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4:]
+def rows(path):
+    got = {}
+    for line in open(path):
+        if line.startswith("#") or line.startswith("variant"):
+            continue
+        _, n, op, wall, cpu = [x.strip() for x in line.split(",")]
+        arm, op = op.split("/")
+        got[(arm, op)] = (int(n), float(cpu), float(wall))
+    return got
+rust = [rows(f"{work}/{out}_rust_{r}.txt") for r in range(1, reps + 1)]
+pin = {v: [rows(f"{work}/{out}_{v}_{r}.txt") for r in range(1, reps + 1)] for v in variants}
+# Each generated method against each Pinocchio call that gives the same quantities.
+pairs = [
+    ("inverse_dynamics", "rnea"),
+    ("mass_matrix", "crba"),
+    ("mass_matrix", "crba_world"),
+    ("forward_dynamics", "aba"),
+    ("forward_dynamics", "aba_world"),
+    ("forward_dynamics", "crba+nle+cholesky"),
+    ("mass_matrix_and_bias", "crba+nle"),
+    ("mass_matrix_and_bias", "crba_world+nle"),
+]
+arms = list(dict.fromkeys(arm for arm, _ in rust[0]))
+for idx, what in ((1, "thread CPU time"), (2, "wall clock")):
+    print(f"\nmedian ns/call over {reps} turns, {what}; Pinocchio / generated: the median of "
+          f"the turns' ratios (smallest-largest)\n")
+    head = "| arm | N | generated | ns | Pinocchio |"
+    for v in variants:
+        head += f" {v} ns | Pinocchio / generated |"
+    print(head)
+    print("|---|---|---|---:|---|" + "---:|---:|" * len(variants))
+    for arm in arms:
+        for ours, theirs in pairs:
+            n = rust[0][(arm, ours)][0]
+            line = (f"| {arm} | {n} | {ours} | "
+                    f"{statistics.median(t[(arm, ours)][idx] for t in rust):.1f} | {theirs} |")
+            for v in variants:
+                ratios = [p[(arm, theirs)][idx] / t[(arm, ours)][idx] for p, t in zip(pin[v], rust)]
+                line += (f" {statistics.median(p[(arm, theirs)][idx] for p in pin[v]):.1f} |"
+                         f" {statistics.median(ratios):.2f}x ({min(ratios):.2f}-{max(ratios):.2f}) |")
+            print(line)
 EOF
   exit 0
 fi
