@@ -567,6 +567,14 @@ fn against_reference<A: SpatialArm<N>, const N: usize>(
             (c - cr).amax() < 1e-12 * (1.0 + cr.amax()),
             "{q}: {c} vs {cr}"
         );
+        // The emitted derivatives (where the arm has them) against run-time jets.
+        let (dq, dqd) = arm.inverse_dynamics_derivatives(&q, &qd, &qdd);
+        let (jq, jqd) = planar_arm::Jet::inverse_dynamics_derivatives(arm, &q, &qd, &qdd);
+        assert!((dq - jq).amax() < 1e-11 * (1.0 + jq.amax()), "{q}: dtau/dq");
+        assert!(
+            (dqd - jqd).amax() < 1e-11 * (1.0 + jqd.amax()),
+            "{q}: dtau/dqd"
+        );
         let cm = arm.coriolis_matrix(&q, &qd);
         assert!(
             (cm * qd - cr).amax() < 1e-12 * (1.0 + cr.amax()),

@@ -92,6 +92,10 @@ fn derivatives_and_linearisation_match_differences() {
         (dqd - fd_qd).amax() < 1e-6 * (1.0 + fd_qd.amax()),
         "{dqd} {fd_qd}"
     );
+    // The emitted program against the same derivatives by run-time jets.
+    let (jq, jqd) = planar_arm::Jet::inverse_dynamics_derivatives(&arm, &q, &qd, &qdd);
+    assert!((dq - jq).amax() < 1e-12 * (1.0 + jq.amax()));
+    assert!((dqd - jqd).amax() < 1e-12 * (1.0 + jqd.amax()));
     let tau = arm.inverse_dynamics(&q, &qd, &qdd);
     let (aq, aqd, atau) = arm.forward_dynamics_derivatives(&q, &qd, &tau);
     let fd = differences(|x| arm.forward_dynamics(x, &qd, &tau), &q, 1e-6);

@@ -197,6 +197,26 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
             quote!((#m, #h))
         }),
     ));
+    if let Some(method) = &d.inverse_dynamics_derivatives {
+        let f64mat = quote!(::planar_arm::nalgebra::SMatrix<#F64, #nn, #nn>);
+        fns.push(
+            Fn::new(
+                "inverse_dynamics_derivatives",
+                vec![q, qd, Param::Joints("qdd", Input::Qdd)],
+                quote!((#f64mat, #f64mat)),
+                "The partial derivatives of `inverse_dynamics`, `(dtau/dq, dtau/dqd)` (`dtau/dqdd` \
+                 is `mass_matrix`). Coulomb friction contributes 0 to `dtau/dqd`."
+                    .to_string(),
+                method.clone(),
+                Box::new(move |ids| {
+                    let dq = matrix(n, n, &ids[..n * n]);
+                    let dqd = matrix(n, n, &ids[n * n..]);
+                    quote!((#dq, #dqd))
+                }),
+            )
+            .in_f64(),
+        );
+    }
     let mut body = Vec::with_capacity(fns.len() + 5);
     for f in &fns {
         body.push(emit_fn(n, f, None)?);

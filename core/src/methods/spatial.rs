@@ -44,6 +44,8 @@ pub struct SpatialDerived {
     pub mass_matrix_and_bias: Method,
     /// The Coriolis matrix (row-major), from Christoffel symbols of M.
     pub coriolis_matrix: Method,
+    /// `(dtau/dq, dtau/dqd)`, row-major each, where the program stays small.
+    pub inverse_dynamics_derivatives: Option<Method>,
 }
 
 impl SpatialDerived {
@@ -67,6 +69,7 @@ impl SpatialDerived {
             friction: newton_euler::friction_method(arm),
             mass_matrix_and_bias: composite::mass_matrix_and_bias(arm),
             coriolis_matrix: composite::coriolis_matrix(arm),
+            inverse_dynamics_derivatives: newton_euler::inverse_dynamics_derivatives(arm),
         }
     }
 }

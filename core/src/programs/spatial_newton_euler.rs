@@ -258,3 +258,32 @@ pub(crate) fn newton_euler(
     }
     torques
 }
+
+/// `(dtau/dq, dtau/dqd)` of [`inverse_dynamics`], row-major each: the unrolled recursion
+/// differentiated at compile time along every angle and rate (`derivative`); `None` past
+/// [`MAX_OPS`](crate::programs::derivative::MAX_OPS) operations, where the trait's default
+/// (the generated inverse dynamics in run-time jets) costs a user's build less.
+pub(crate) fn inverse_dynamics_derivatives(arm: &SpatialArmSpec) -> Option<Method> {
+    let n = arm.joints.len();
+    if n > crate::programs::derivative::MAX_LINKS {
+        return None;
+    }
+    let mut p = Program::new();
+    let torques = newton_euler(&mut p, arm, Terms::ALL, true);
+    let directions: Vec<Input> = (0..n).map(Input::Q).chain((0..n).map(Input::Qd)).collect();
+    let jacobian =
+        crate::programs::derivative::differentiate(&mut p, &torques, &directions).ok()?;
+    let mut outputs = Vec::with_capacity(2 * n * n);
+    for (wrt, offset) in [("q", 0), ("qd", n)] {
+        for (i, row) in jacobian.iter().enumerate() {
+            for j in 0..n {
+                outputs.push((format!("dtau{}_d{wrt}{}", i + 1, j + 1), row[offset + j]));
+            }
+        }
+    }
+    let method = Method::new(p, outputs).described(
+        "the unrolled recursive Newton-Euler algorithm differentiated at compile time, operation by operation",
+    );
+    let ops = method.op_count();
+    (ops.mul + ops.add <= crate::programs::derivative::MAX_OPS).then_some(method)
+}
