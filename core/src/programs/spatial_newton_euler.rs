@@ -144,6 +144,37 @@ pub(crate) fn friction_method(arm: &SpatialArmSpec) -> Method {
     Method::new(p, outputs)
 }
 
+/// A link's inertial force and its moment about the link frame's origin, from the link's
+/// angular velocity `w` and acceleration `dw` and its origin's acceleration `a` (gravity
+/// included), all in the link's axes: `m a_c` and `I dw + w x I w + c x m a_c`.
+fn inertial_load(
+    p: &mut Program,
+    spec: &crate::mechanics::spatial::spec::SpatialJointSpec,
+    w: &V3,
+    dw: &V3,
+    a: &V3,
+) -> (V3, V3) {
+    let mass = p.poly(&spec.mass);
+    let com: V3 = core::array::from_fn(|k| p.poly(&spec.com[k]));
+    let carried_c = carried(p, w, dw, &com);
+    let a_com = add(p, a, &carried_c);
+    let force = scale(p, &a_com, mass);
+    let [xx, yy, zz, xy, xz, yz] = core::array::from_fn(|k| p.poly(&spec.inertia[k]));
+    let tensor = [[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]];
+    let times = |p: &mut Program, v: &V3| -> V3 {
+        core::array::from_fn(|i| {
+            let terms: Vec<Id> = (0..3).map(|k| p.mul(tensor[i][k], v[k])).collect();
+            crate::programs::spatial::sum(p, &terms)
+        })
+    };
+    let i_dw = times(p, dw);
+    let i_w = times(p, w);
+    let gyro = cross(p, w, &i_w);
+    let about_com = add(p, &i_dw, &gyro);
+    let lever = cross(p, &com, &force);
+    (force, add(p, &about_com, &lever))
+}
+
 /// [`inverse_dynamics`]'s torques as nodes of `p`.
 pub(crate) fn newton_euler(
     p: &mut Program,
@@ -201,26 +232,7 @@ pub(crate) fn newton_euler(
         let carried_o = carried(p, &w, &dw, &r);
         let sum = add(p, &a_axis, &carried_o);
         a = add(p, &sum, &slide_terms);
-        let spec = &arm.joints[j];
-        let mass = p.poly(&spec.mass);
-        let com: V3 = core::array::from_fn(|k| p.poly(&spec.com[k]));
-        let carried_c = carried(p, &w, &dw, &com);
-        let a_com = add(p, &a, &carried_c);
-        let force = scale(p, &a_com, mass);
-        let [xx, yy, zz, xy, xz, yz] = core::array::from_fn(|k| p.poly(&spec.inertia[k]));
-        let tensor = [[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]];
-        let times = |p: &mut Program, v: &V3| -> V3 {
-            core::array::from_fn(|i| {
-                let terms: Vec<Id> = (0..3).map(|k| p.mul(tensor[i][k], v[k])).collect();
-                crate::programs::spatial::sum(p, &terms)
-            })
-        };
-        let i_dw = times(p, &dw);
-        let i_w = times(p, &w);
-        let gyro = cross(p, &w, &i_w);
-        let about_com = add(p, &i_dw, &gyro);
-        let lever = cross(p, &com, &force);
-        let moment = add(p, &about_com, &lever);
+        let (force, moment) = inertial_load(p, &arm.joints[j], &w, &dw, &a);
         loads.push((force, moment, r));
     }
     // Inwards: what each joint transmits, read on its axis.
