@@ -11,6 +11,8 @@
 //! recursive Newton-Euler, [`mass_matrix`] from the links' Jacobians, [`kinetic_energy`],
 //! [`forward_dynamics`]), are in base coordinates too; they agree with Pinocchio's `rnea` and
 //! `crba` to 2e-15 on the PUMA 560 and a seven-joint arm (`tests/spatial_dynamics_reference.rs`).
+//! [`regressor`] is the inverse dynamics' linear map from each link's ten
+//! [`standard_parameters`] (Pinocchio's order).
 
 use nalgebra::{Isometry3, Point3, SMatrix, SVector, Vector3};
 
@@ -18,11 +20,13 @@ use crate::spatial::SpatialModel;
 use crate::Joint;
 
 mod dynamics;
+mod regressor;
 
 pub use dynamics::{
     bias_forces, coriolis, forward_dynamics, friction, inverse_dynamics, kinetic_energy,
     mass_matrix,
 };
+pub use regressor::{regressor, standard_parameters};
 
 /// Each link's frame in the base frame, base first.
 #[must_use]

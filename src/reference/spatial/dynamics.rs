@@ -27,23 +27,23 @@ use crate::spatial::SpatialModel;
 use crate::Joint;
 
 /// Each link's motion in base coordinates, from the outward recursion.
-struct Motion {
+pub(super) struct Motion {
     /// Angular velocity and acceleration.
-    w: Vector3<f64>,
-    dw: Vector3<f64>,
+    pub(super) w: Vector3<f64>,
+    pub(super) dw: Vector3<f64>,
     /// The acceleration of the link frame's origin.
-    a: Vector3<f64>,
+    pub(super) a: Vector3<f64>,
 }
 
-/// The joint forces of the rigid bodies alone, `M_rigid qdd + c + g` with gravity `gravity`:
-/// no armature, no friction.
-fn rnea<const N: usize>(
+/// Each link's motion at `(q, qd, qdd)` with the base accelerating by `-gravity`, by the
+/// outward recursion in base coordinates.
+pub(super) fn motions<const N: usize>(
     model: &SpatialModel<N>,
     q: &SVector<f64, N>,
     qd: &SVector<f64, N>,
     qdd: &SVector<f64, N>,
     gravity: &Vector3<f64>,
-) -> SVector<f64, N> {
+) -> [Motion; N] {
     let poses = link_poses(model, q);
     let axes = joint_axes(model, q);
     let mut before = Motion {
@@ -52,7 +52,7 @@ fn rnea<const N: usize>(
         a: -gravity,
     };
     let mut origin_before = Vector3::zeros();
-    let motions: [Motion; N] = core::array::from_fn(|i| {
+    core::array::from_fn(|i| {
         let (o, z) = axes[i];
         let p = poses[i].translation.vector;
         let r = p - origin_before;
@@ -80,7 +80,21 @@ fn rnea<const N: usize>(
         before = Motion { w, dw, a };
         origin_before = p;
         Motion { w, dw, a }
-    });
+    })
+}
+
+/// The joint forces of the rigid bodies alone, `M_rigid qdd + c + g` with gravity `gravity`:
+/// no armature, no friction.
+fn rnea<const N: usize>(
+    model: &SpatialModel<N>,
+    q: &SVector<f64, N>,
+    qd: &SVector<f64, N>,
+    qdd: &SVector<f64, N>,
+    gravity: &Vector3<f64>,
+) -> SVector<f64, N> {
+    let poses = link_poses(model, q);
+    let axes = joint_axes(model, q);
+    let motions = motions(model, q, qd, qdd, gravity);
     let mut tau = SVector::zeros();
     // Force on link i from link i - 1 and the moment about p_i, summed from the tip.
     let mut force = Vector3::zeros();
