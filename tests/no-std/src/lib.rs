@@ -84,3 +84,20 @@ pub fn spatial(arm: &Ur5, q: &SVector<f64, 6>) -> Result<(usize, SMatrix<f32, 6,
     let _ = arm.gravity(q);
     Ok((solutions.len(), arm.jacobian(&q.map(|x| x as f32))))
 }
+
+/// The spatial arm's dynamics in `no_std`: the torques for a motion and the accelerations they
+/// give back (the UR5's wrist is massless here, so its forward dynamics is the `Err` of a
+/// singular mass matrix; the inverse dynamics and the derivatives are finite).
+///
+/// # Errors
+/// As `Dynamics::try_inverse_dynamics`.
+pub fn spatial_dynamics(
+    arm: &Ur5,
+    q: &SVector<f64, 6>,
+    qd: &SVector<f64, 6>,
+) -> Result<(SVector<f64, 6>, SMatrix<f64, 6, 6>), ArmError> {
+    let tau = arm.try_inverse_dynamics(q, qd, &SVector::zeros())?;
+    let _ = arm.try_forward_dynamics(q, qd, &tau);
+    let (dq, _) = arm.inverse_dynamics_derivatives(q, qd, &SVector::zeros());
+    Ok((tau, dq))
+}
