@@ -780,10 +780,29 @@ fn every_method_takes_other_scalars() {
         WideF64x4::from(core::array::from_fn::<f64, 4, _>(|k| states[k][i]))
     });
     let jb = arm.jacobian(&batch);
+    let zero = SVector::<WideF64x4, 6>::from_element(WideF64x4::from([0.0; 4]));
+    let mb = arm.mass_matrix(&batch);
+    let tb = arm.inverse_dynamics(&batch, &batch, &zero);
     for (k, state) in states.iter().enumerate() {
         let jk = jb.map(|x| x.extract(k));
         assert!((jk - arm.jacobian(state)).amax() < 1e-12, "lane {k}");
+        let mk = mb.map(|x| x.extract(k));
+        assert!((mk - arm.mass_matrix(state)).amax() < 1e-12, "lane {k}: M");
+        let tk = tb.map(|x| x.extract(k));
+        let want = arm.inverse_dynamics(state, state, &SVector::zeros());
+        assert!(
+            (tk - want).amax() < 1e-12 * (1.0 + want.amax()),
+            "lane {k}: tau"
+        );
     }
+    // And in f32: the torques to single precision.
+    let t32 = arm.inverse_dynamics(
+        &q.map(|x| x as f32),
+        &q.map(|x| x as f32),
+        &SVector::zeros(),
+    );
+    let t64 = arm.inverse_dynamics(&q, &q, &SVector::zeros());
+    assert!((t32.map(f64::from) - t64).amax() < 1e-4 * (1.0 + t64.amax()));
 }
 
 /// Every closed-form solution reproduces its target, the configuration the target came from is
