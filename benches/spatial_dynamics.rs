@@ -1,18 +1,22 @@
 //! Spatial dynamics against Pinocchio (`bench/pinocchio/run.sh`, `ARMS=spatial-dynamics`): the
-//! generated `inverse_dynamics`, `mass_matrix`, `bias`, `mass_matrix_and_bias` and
-//! `forward_dynamics` of the PUMA 560, the UR5 and the Franka Panda with their published mass
-//! properties.
+//! generated `inverse_dynamics`, `mass_matrix`, `bias`, `mass_matrix_and_bias`,
+//! `forward_dynamics`, `inverse_dynamics_derivatives` and `forward_dynamics_derivatives` of the
+//! PUMA 560, the UR5 and the Franka Panda with their published mass properties.
 //!
 //! Not run in CI. Two modes, both for `run.sh`:
 //!
 //! - `-- --values` prints, at the first four of the Pinocchio benchmark's states,
 //!   `inverse_dynamics(q, qd, qdd)` (`rnea`), `mass_matrix(q)` by columns (`crba`),
 //!   `bias(q, qd)` (`nle`), `mass_matrix_and_bias` (`crba+nle`: M by columns, then h) and
-//!   `forward_dynamics(q, qd, tau)` with `qdd` as `tau` (`aba`), for `run.sh` to compare with
-//!   Pinocchio's. Before printing, every method is checked against `reference::spatial` at
-//!   the 64 states (1e-10 relative), so that the arms are what the crate's reference makes
-//!   of the same numbers.
-//! - `-- --peer CALLS` times the four methods exactly as `peers.cpp` times Pinocchio: 64
+//!   `forward_dynamics(q, qd, tau)` with `qdd` as `tau` (`aba`),
+//!   `inverse_dynamics_derivatives(q, qd, qdd)` (`rnea_derivatives`: dtau/dq then dtau/dqd,
+//!   by columns) and `forward_dynamics_derivatives(q, qd, tau)` with `qdd` as `tau`
+//!   (`aba_derivatives`: dqdd/dq, dqdd/dqd, then M^-1, by columns), for `run.sh` to compare
+//!   with Pinocchio's. Before printing, the first five methods are checked against
+//!   `reference::spatial` at the 64 states (1e-10 relative), so that the arms are what the
+//!   crate's reference makes of the same numbers; the derivatives are checked only against
+//!   Pinocchio's `computeRNEADerivatives` and `computeABADerivatives`.
+//! - `-- --peer CALLS` times the six methods (not `bias`) exactly as `peers.cpp` times Pinocchio: 64
 //!   states cycled, `CALLS` calls per round, 21 rounds after one warm-up, the medians per call
 //!   by the wall clock and by the thread's CPU time, in its output format.
 //!
@@ -279,6 +283,17 @@ fn values<A: SpatialArm<N> + Default, const N: usize>(name: &str) {
             "# value, {name}, aba, {k}, {}",
             list(arm.forward_dynamics(q, qd, qdd).as_slice())
         );
+        let (dq, dqd) = arm.inverse_dynamics_derivatives(q, qd, qdd);
+        let both: Vec<f64> = dq.iter().chain(dqd.iter()).copied().collect();
+        println!("# value, {name}, rnea_derivatives, {k}, {}", list(&both));
+        let (dq, dqd, minv) = arm.forward_dynamics_derivatives(q, qd, qdd);
+        let all: Vec<f64> = dq
+            .iter()
+            .chain(dqd.iter())
+            .chain(minv.iter())
+            .copied()
+            .collect();
+        println!("# value, {name}, aba_derivatives, {k}, {}", list(&all));
     }
 }
 
@@ -323,7 +338,7 @@ fn time_op<const N: usize>(
     checksum
 }
 
-/// The four methods, one call each per `f(k)`: inputs and whole outputs through `black_box`,
+/// The six methods, one call each per `f(k)`: inputs and whole outputs through `black_box`,
 /// one entry of the output returned for the checksum (as `peers.cpp` sums one).
 fn peer<A: SpatialArm<N> + Default, const N: usize>(name: &str, calls: usize) -> f64 {
     let arm = A::default();
@@ -350,6 +365,16 @@ fn peer<A: SpatialArm<N> + Default, const N: usize>(name: &str, calls: usize) ->
         let (q, qd, _) = inputs(k);
         let (m, h) = black_box(arm.mass_matrix_and_bias(q, qd));
         m[(0, N - 1)] + h[0]
+    });
+    checksum += time_op::<N>(name, "inverse_dynamics_derivatives", calls, |k| {
+        let (q, qd, qdd) = inputs(k);
+        let (dq, dqd) = black_box(arm.inverse_dynamics_derivatives(q, qd, qdd));
+        dq[(0, N - 1)] + dqd[(0, 0)]
+    });
+    checksum += time_op::<N>(name, "forward_dynamics_derivatives", calls, |k| {
+        let (q, qd, tau) = inputs(k);
+        let (dq, dqd, minv) = black_box(arm.forward_dynamics_derivatives(q, qd, tau));
+        dq[(N - 1, 0)] + dqd[(0, 0)] + minv[(0, N - 1)]
     });
     checksum
 }

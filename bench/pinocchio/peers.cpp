@@ -26,8 +26,9 @@
 // first four states printed first as `# value` lines, as for `prismatic`) or
 // `spatial-dynamics` (the PUMA 560, UR5 and Franka Panda of benches/spatial_dynamics.rs with
 // their mass properties: rnea, crba, aba and crba + nonLinearEffects, crba and aba in both
-// conventions, and crba + nonLinearEffects + Pinocchio's Cholesky solve for the accelerations;
-// their results at the first four states printed first).
+// conventions, crba + nonLinearEffects + Pinocchio's Cholesky solve for the accelerations,
+// computeRNEADerivatives and computeABADerivatives; their results at the first four states
+// printed first).
 
 #include <algorithm>
 #include <chrono>
@@ -779,9 +780,11 @@ static double crba_nle_cholesky(
 // crba then nonLinearEffects (M by columns, then nle) and aba (a as tau), crba and aba in both
 // conventions (`_world` for Convention::WORLD), and the accelerations by crba,
 // nonLinearEffects and the Cholesky solve (`crba+nle+cholesky`), for run.sh to compare with the
-// generated code's (`cargo bench --bench spatial_dynamics -- --values`); then the timing of
-// rnea, crba, aba and crba + nonLinearEffects, crba and aba in both conventions, and of
-// crba + nonLinearEffects + the Cholesky solve.
+// generated code's (`cargo bench --bench spatial_dynamics -- --values`), with
+// computeRNEADerivatives (dtau_dq, dtau_dv) and computeABADerivatives (ddq_dq, ddq_dv, Minv
+// symmetrised), all by columns; then the timing of rnea, crba, aba and
+// crba + nonLinearEffects, crba and aba in both conventions, of crba + nonLinearEffects + the
+// Cholesky solve, and of computeRNEADerivatives and computeABADerivatives.
 static void spatial_dynamics_main(long calls)
 {
   std::printf("# checks (%s)\n", VARIANT);
@@ -820,6 +823,18 @@ static void spatial_dynamics_main(long calls)
           Eigen::VectorXd x(n);
           crba_nle_cholesky(m, d, s.q[k], s.v[k], s.a[k], x);
           print("crba+nle+cholesky", k, x);
+          // The derivatives: dtau_dq then dtau_dv (by columns); ddq_dq, ddq_dv then Minv
+          // (by columns, Minv symmetrised from the upper triangle Pinocchio fills).
+          pin::computeRNEADerivatives(m, d, s.q[k], s.v[k], s.a[k]);
+          Eigen::VectorXd rd(2 * n * n);
+          rd << flat(d.dtau_dq), flat(d.dtau_dv);
+          print("rnea_derivatives", k, rd);
+          pin::computeABADerivatives(m, d, s.q[k], s.v[k], s.a[k]);
+          Eigen::MatrixXd minv = d.Minv;
+          minv.triangularView<Eigen::StrictlyLower>() = minv.transpose();
+          Eigen::VectorXd ad(3 * n * n);
+          ad << flat(d.ddq_dq), flat(d.ddq_dv), flat(minv);
+          print("aba_derivatives", k, ad);
           if (k == 0)
             std::printf(
               "# %s (N=%d): |M a + nle - rnea| = %.3g\n", arm.name, n,
@@ -870,6 +885,18 @@ static void spatial_dynamics_main(long calls)
     report("crba+nle+cholesky",
            time_op([&](int k) { return crba_nle_cholesky(model, data, s.q[k], s.v[k], s.a[k], x); },
                    calls));
+    report("rnea_derivatives", time_op(
+                                 [&](int k) {
+                                   pin::computeRNEADerivatives(model, data, s.q[k], s.v[k], s.a[k]);
+                                   return data.dtau_dq(0, n - 1) + data.dtau_dv(0, 0);
+                                 },
+                                 calls));
+    report("aba_derivatives", time_op(
+                                [&](int k) {
+                                  pin::computeABADerivatives(model, data, s.q[k], s.v[k], s.a[k]);
+                                  return data.ddq_dq(n - 1, 0) + data.ddq_dv(0, 0) + data.Minv(0, n - 1);
+                                },
+                                calls));
   }
   std::printf("# checksum %.17g\n", checksum);
 }

@@ -31,9 +31,11 @@
 #               inverse_dynamics, mass_matrix, forward_dynamics and mass_matrix_and_bias against
 #               rnea, crba, aba and crba + nonLinearEffects, crba and aba in both conventions,
 #               forward_dynamics also against crba + nonLinearEffects + cholesky::decompose +
-#               cholesky::solve; checked first with `cargo bench --bench spatial_dynamics --
-#               --values` (every one of those results against the generated code's), then timed
-#               in turns as "spatial")
+#               cholesky::solve; inverse_dynamics_derivatives and
+#               forward_dynamics_derivatives against computeRNEADerivatives and
+#               computeABADerivatives (Minv symmetrised); checked first with
+#               `cargo bench --bench spatial_dynamics -- --values` (every one of those results
+#               against the generated code's), then timed in turns as "spatial")
 #   REPS        ARMS=spatial and spatial-dynamics: how many times the programs take turns
 #               (default 5)
 #
@@ -129,7 +131,9 @@ fi
 # arms: Pinocchio's tool pose (oMf) and frame Jacobian against tip_pose and jacobian. The
 # spatial dynamics: rnea, crba, nonLinearEffects, crba + nonLinearEffects and aba (crba and aba
 # in both conventions, `_world` compared with the same generated result) against the generated
-# inverse_dynamics, mass_matrix, bias, mass_matrix_and_bias and forward_dynamics.
+# inverse_dynamics, mass_matrix, bias, mass_matrix_and_bias and forward_dynamics, and
+# computeRNEADerivatives and computeABADerivatives against inverse_dynamics_derivatives and
+# forward_dynamics_derivatives.
 if [ "$ARMS" != random ]; then
   (cd "$HERE/../.." && cargo bench -q --bench "$BENCH" -- --values) >"$WORK/values_rust.txt"
   grep -v '^# value' "$WORK/values_rust.txt" || true
@@ -238,6 +242,8 @@ pairs = [
     ("forward_dynamics", "crba+nle+cholesky"),
     ("mass_matrix_and_bias", "crba+nle"),
     ("mass_matrix_and_bias", "crba_world+nle"),
+    ("inverse_dynamics_derivatives", "rnea_derivatives"),
+    ("forward_dynamics_derivatives", "aba_derivatives"),
 ]
 arms = list(dict.fromkeys(arm for arm, _ in rust[0]))
 for idx, what in ((1, "thread CPU time"), (2, "wall clock")):
