@@ -87,12 +87,12 @@ def crate(root, n, params, lengths=False, repo=REPO, derivatives=False, prismati
     return name, path
 
 
-def spatial_crate(root, n, params, repo=REPO):
+def spatial_crate(root, n, params, repo=REPO, derivatives=False):
     """A crate deriving an `n`-joint spatial arm: the PUMA 560 at six joints, Franka's Panda
     (modified DH) at seven, otherwise a chain of alternating twists; with `params` its masses
     and centres of mass are run-time parameters. It calls the kinematics, the closed-form IK,
     and the inverse and forward dynamics, mass matrix and bias, so that those are compiled."""
-    name = f"spatial{n}{'p' if params else ''}"
+    name = f"spatial{n}{'p' if params else ''}{'d' if derivatives else ''}"
     path = os.path.join(root, name)
     os.makedirs(os.path.join(path, "src"), exist_ok=True)
     with open(os.path.join(path, "Cargo.toml"), "w") as f:
@@ -145,7 +145,13 @@ def spatial_crate(root, n, params, repo=REPO):
             "    let h = arm.bias(&q, &q);\n"
             '    println!("{} {} {} {ik}", pose.translation.vector.norm(), j.norm(), g.norm());\n'
             '    println!("{} {} {} {}", tau.norm(), qdd.norm(), m.norm(), h.norm());\n'
-            "}\n"
+            + (
+                "    let (dq, dqd) = arm.inverse_dynamics_derivatives(&q, &q, &q);\n"
+                '    println!("{} {}", dq.norm(), dqd.norm());\n'
+                if derivatives
+                else ""
+            )
+            + "}\n"
         )
     return name, path
 
@@ -190,7 +196,7 @@ def main():
             kinds = [False] if args.literal_only or n > 14 else [False, True]
             for params in kinds:
                 if args.spatial:
-                    name, path = spatial_crate(root, n, params, args.repo)
+                    name, path = spatial_crate(root, n, params, args.repo, args.derivatives)
                 else:
                     name, path = crate(
                         root, n, params, args.lengths and params, args.repo, args.derivatives,

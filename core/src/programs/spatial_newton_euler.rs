@@ -271,10 +271,18 @@ pub(crate) fn newton_euler(
     torques
 }
 
+/// The largest spatial derivative program emitted as code. Above planar arms' limit
+/// (`derivative::MAX_OPS`, 4000) because the alternative costs more here: a seven-joint arm's
+/// inverse dynamics in run-time jets took 5.4 us (45 times the inverse dynamics, slower than
+/// Pinocchio's `computeRNEADerivatives`), and the Panda's program with full inertia tensors
+/// is 8,303 operations, which a user crate calling it compiles in about 0.3 s more
+/// (docs/performance.md).
+const MAX_DERIVATIVE_OPS: usize = 10_000;
+
 /// `(dtau/dq, dtau/dqd)` of [`inverse_dynamics`], row-major each: the unrolled recursion
 /// differentiated at compile time along every angle and rate (`derivative`); `None` past
-/// [`MAX_OPS`](crate::programs::derivative::MAX_OPS) operations, where the trait's default
-/// (the generated inverse dynamics in run-time jets) costs a user's build less.
+/// [`MAX_DERIVATIVE_OPS`] operations, where the trait's default (the generated inverse
+/// dynamics in run-time jets) costs a user's build less.
 pub(crate) fn inverse_dynamics_derivatives(arm: &SpatialArmSpec) -> Option<Method> {
     let n = arm.joints.len();
     if n > crate::programs::derivative::MAX_LINKS {
@@ -297,5 +305,5 @@ pub(crate) fn inverse_dynamics_derivatives(arm: &SpatialArmSpec) -> Option<Metho
         "the unrolled recursive Newton-Euler algorithm differentiated at compile time, operation by operation",
     );
     let ops = method.op_count();
-    (ops.mul + ops.add <= crate::programs::derivative::MAX_OPS).then_some(method)
+    (ops.mul + ops.add <= MAX_DERIVATIVE_OPS).then_some(method)
 }
