@@ -103,43 +103,9 @@ const STATES: usize = 64;
 // ---------------------------------------------------------------------------------------------
 // Clocks and timing
 
-/// This thread's CPU time in ns (`CLOCK_THREAD_CPUTIME_ID`, as `peers.cpp`).
-#[cfg(target_os = "linux")]
-fn thread_cpu_ns() -> f64 {
-    use std::os::raw::{c_int, c_long};
-    #[repr(C)]
-    struct Timespec {
-        tv_sec: c_long,
-        tv_nsec: c_long,
-    }
-    extern "C" {
-        fn clock_gettime(clock: c_int, ts: *mut Timespec) -> c_int;
-    }
-    const CLOCK_THREAD_CPUTIME_ID: c_int = 3;
-    let mut ts = Timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: `ts` is a valid `struct timespec` (two `long`s on Linux) for the call to fill.
-    let rc = unsafe { clock_gettime(CLOCK_THREAD_CPUTIME_ID, &mut ts) };
-    assert_eq!(rc, 0, "clock_gettime(CLOCK_THREAD_CPUTIME_ID)");
-    #[allow(clippy::cast_precision_loss, clippy::unnecessary_cast)]
-    let ns = ts.tv_sec as f64 * 1e9 + ts.tv_nsec as f64;
-    ns
-}
-
-/// Elsewhere the wall clock stands in.
-#[cfg(not(target_os = "linux"))]
-fn thread_cpu_ns() -> f64 {
-    use std::sync::OnceLock;
-    static START: OnceLock<Instant> = OnceLock::new();
-    START.get_or_init(Instant::now).elapsed().as_secs_f64() * 1e9
-}
-
-fn median(mut x: Vec<f64>) -> f64 {
-    x.sort_by(f64::total_cmp);
-    x[x.len() / 2]
-}
+#[path = "support/cpu_clock.rs"]
+mod cpu_clock;
+use cpu_clock::{median, thread_cpu_ns};
 
 /// `calls` calls of `f(k)`, `k` cycling through the states; this thread's CPU time per call.
 fn round(f: &mut impl FnMut(usize), calls: usize) -> f64 {

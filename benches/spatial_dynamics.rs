@@ -36,28 +36,11 @@ use planar_arm::prelude::*;
 use planar_arm::reference::spatial as reference;
 use planar_arm::spatial::SpatialArm;
 
-/// PUMA 560, standard Denavit-Hartenberg parameters and mass properties (Corke's model),
-/// exactly as in `examples/puma.rs`.
-#[derive(SpatialArm, Default)]
-#[arm(gravity = (0, 0, -9.81))]
-struct Puma560 {
-    #[arm(dh(a = 0, alpha = pi/2, d = 0), inertia(yy = 0.35))]
-    waist: Revolute,
-    #[arm(dh(a = 0.4318, alpha = 0, d = 0), mass = 17.4, com = (-0.3638, 0.006, 0.2275),
-          inertia(xx = 0.13, yy = 0.524, zz = 0.539))]
-    shoulder: Revolute,
-    #[arm(dh(a = 0.0203, alpha = -pi/2, d = 0.15005), mass = 4.8, com = (-0.0203, -0.0141, 0.07),
-          inertia(xx = 0.066, yy = 0.086, zz = 0.0125))]
-    elbow: Revolute,
-    #[arm(dh(a = 0, alpha = pi/2, d = 0.4318), mass = 0.82, com = (0, 0.019, 0),
-          inertia(xx = 1.8e-3, yy = 1.3e-3, zz = 1.8e-3))]
-    wrist1: Revolute,
-    #[arm(dh(a = 0, alpha = -pi/2, d = 0), mass = 0.34, inertia(xx = 0.3e-3, yy = 0.4e-3, zz = 0.3e-3))]
-    wrist2: Revolute,
-    #[arm(dh(a = 0, alpha = 0, d = 0), mass = 0.09, com = (0, 0, 0.032),
-          inertia(xx = 0.15e-3, yy = 0.15e-3, zz = 0.04e-3))]
-    wrist3: Revolute,
-}
+/// PUMA 560, Corke's standard DH parameters and mass properties, as `examples/puma.rs` has
+/// them.
+#[path = "../examples/support/puma_arm.rs"]
+mod puma_arm;
+use puma_arm::Puma560;
 
 /// The UR5 of example-robot-data's `ur_description/urdf/ur5_robot.urdf` (ROS-Industrial's
 /// `ur_description`): URDF joints, each link's mass, centre of mass and inertia tensor as
@@ -131,43 +114,9 @@ struct Panda {
 /// How many states each timing cycles through, as `peers.cpp`.
 const STATES: usize = 64;
 
-/// This thread's CPU time in ns (`CLOCK_THREAD_CPUTIME_ID`, as `peers.cpp`).
-#[cfg(target_os = "linux")]
-fn thread_cpu_ns() -> f64 {
-    use std::os::raw::{c_int, c_long};
-    #[repr(C)]
-    struct Timespec {
-        tv_sec: c_long,
-        tv_nsec: c_long,
-    }
-    extern "C" {
-        fn clock_gettime(clock: c_int, ts: *mut Timespec) -> c_int;
-    }
-    const CLOCK_THREAD_CPUTIME_ID: c_int = 3;
-    let mut ts = Timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: `ts` is a valid `struct timespec` (two `long`s on Linux) for the call to fill.
-    let rc = unsafe { clock_gettime(CLOCK_THREAD_CPUTIME_ID, &mut ts) };
-    assert_eq!(rc, 0, "clock_gettime(CLOCK_THREAD_CPUTIME_ID)");
-    #[allow(clippy::cast_precision_loss, clippy::unnecessary_cast)]
-    let ns = ts.tv_sec as f64 * 1e9 + ts.tv_nsec as f64;
-    ns
-}
-
-/// Elsewhere the wall clock stands in.
-#[cfg(not(target_os = "linux"))]
-fn thread_cpu_ns() -> f64 {
-    use std::sync::OnceLock;
-    static START: OnceLock<Instant> = OnceLock::new();
-    START.get_or_init(Instant::now).elapsed().as_secs_f64() * 1e9
-}
-
-fn median(mut x: Vec<f64>) -> f64 {
-    x.sort_by(f64::total_cmp);
-    x[x.len() / 2]
-}
+#[path = "support/cpu_clock.rs"]
+mod cpu_clock;
+use cpu_clock::{median, thread_cpu_ns};
 
 /// A deterministic pseudo-random vector in `[-range, range)` (the xorshift of
 /// `benches/dynamics.rs` and `bench/pinocchio/peers.cpp`).
