@@ -162,14 +162,7 @@ pub fn coriolis<const N: usize>(
 pub fn friction<const N: usize>(model: &SpatialModel<N>, qd: &SVector<f64, N>) -> SVector<f64, N> {
     SVector::from_fn(|i, _| {
         let j = &model.joints[i];
-        let sign = if qd[i] > 0.0 {
-            1.0
-        } else if qd[i] < 0.0 {
-            -1.0
-        } else {
-            qd[i] * 0.0
-        };
-        j.damping * qd[i] + j.frictionloss * sign
+        j.damping * qd[i] + j.frictionloss * crate::reference::sign(qd[i])
     })
 }
 
