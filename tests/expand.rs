@@ -112,6 +112,7 @@ fn expand_puma() -> String {
         ],
         tool_xyz: core::array::from_fn(|_| Poly::default()),
         tool_rpy: core::array::from_fn(|_| FixedAngle::zero()),
+        payload: None,
     };
     let header = Header {
         impl_generics: quote!(),

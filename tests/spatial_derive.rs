@@ -235,6 +235,7 @@ fn model<const N: usize>(joints: [SpatialJoint; N], links: [SpatialLink; N]) -> 
         links,
         gravity: Vector3::new(0.0, 0.0, -9.81),
         tool: Isometry3::identity(),
+        payload: None,
     }
 }
 

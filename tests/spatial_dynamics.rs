@@ -201,3 +201,88 @@ fn controllers_track_and_hold_a_spatial_arm() {
         last.q
     );
 }
+
+/// An arm holding a payload at a turned, offset tool frame, its mass read at run time.
+#[derive(SpatialArm)]
+#[arm(tool(xyz = (0, 0, 0.1), rpy = (0, 0, pi/2)), payload = self.load,
+      payload_com = (0.05, 0, 0), payload_inertia(xx = 0.01, yy = 0.02, zz = 0.03, xy = 0.004))]
+struct Carrying {
+    #[arm(dh(a = 0.4, alpha = pi/2), mass = 3, com = (-0.2, 0, 0), inertia(xx = 0.01, yy = 0.05, zz = 0.05))]
+    shoulder: Revolute,
+    #[arm(dh(a = 0.3), armature = 0.05)]
+    elbow: Revolute,
+    load: f64,
+}
+
+/// The same payload written by hand as the massless forearm's body: a quarter turn about z
+/// takes the tool's (0.05, 0, 0) to (0, 0.05, 0) and swaps xx and yy, and turns xy to -xy.
+#[derive(SpatialArm, Default)]
+#[arm(tool(xyz = (0, 0, 0.1), rpy = (0, 0, pi/2)))]
+struct CarryingByHand {
+    #[arm(dh(a = 0.4, alpha = pi/2), mass = 3, com = (-0.2, 0, 0), inertia(xx = 0.01, yy = 0.05, zz = 0.05))]
+    shoulder: Revolute,
+    #[arm(dh(a = 0.3), armature = 0.05, mass = 2, com = (0, 0.05, 0.1),
+          inertia(xx = 0.02, yy = 0.01, zz = 0.03, xy = -0.004))]
+    elbow: Revolute,
+}
+
+#[test]
+fn a_payload_is_the_last_link_carrying_it() {
+    let arm = Carrying {
+        shoulder: Revolute,
+        elbow: Revolute,
+        load: 2.0,
+    };
+    let hand = CarryingByHand::default();
+    let model = arm.model();
+    let mut worst: f64 = 0.0;
+    let mut gap = |a: f64, b: f64| worst = worst.max((a - b).abs());
+    for k in 0..20 {
+        let t = f64::from(k);
+        let q = SVector::<f64, 2>::new((0.7 * t).sin() * 2.0, (1.3 * t).cos() * 2.5);
+        let qd = SVector::<f64, 2>::new((0.4 * t).cos() * 3.0, (2.1 * t).sin() * 1.5);
+        let qdd = SVector::<f64, 2>::new(t * 0.3 - 2.0, 1.0 - 0.2 * t);
+        let pairs = [
+            (
+                arm.mass_matrix(&q).as_slice().to_vec(),
+                hand.mass_matrix(&q).as_slice().to_vec(),
+            ),
+            (
+                arm.coriolis(&q, &qd).as_slice().to_vec(),
+                hand.coriolis(&q, &qd).as_slice().to_vec(),
+            ),
+            (
+                arm.gravity(&q).as_slice().to_vec(),
+                hand.gravity(&q).as_slice().to_vec(),
+            ),
+            (
+                arm.inverse_dynamics(&q, &qd, &qdd).as_slice().to_vec(),
+                hand.inverse_dynamics(&q, &qd, &qdd).as_slice().to_vec(),
+            ),
+            (
+                arm.mass_matrix_and_bias(&q, &qd).1.as_slice().to_vec(),
+                reference::bias_forces(&model, &q, &qd).as_slice().to_vec(),
+            ),
+            (
+                arm.inverse_dynamics(&q, &qd, &qdd).as_slice().to_vec(),
+                reference::inverse_dynamics(&model, &q, &qd, &qdd)
+                    .as_slice()
+                    .to_vec(),
+            ),
+        ];
+        for (a, b) in pairs {
+            for (x, y) in a.iter().zip(&b) {
+                gap(*x, *y);
+            }
+        }
+        gap(arm.kinetic_energy(&q, &qd), hand.kinetic_energy(&q, &qd));
+        gap(arm.potential_energy(&q), hand.potential_energy(&q));
+    }
+    assert!(worst < 1e-12, "worst gap {worst:e}");
+    // A payload of no mass keeps its tensor: the elbow then turns the armature and the
+    // payload's zz about a parallel axis, and holds no weight.
+    let empty = Carrying { load: 0.0, ..arm };
+    let q = SVector::<f64, 2>::new(0.3, -1.2);
+    assert!(empty.gravity(&q)[1].abs() < 1e-15);
+    assert!((empty.mass_matrix(&q)[(1, 1)] - (0.05 + 0.03)).abs() < 1e-15);
+}

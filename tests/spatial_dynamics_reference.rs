@@ -80,6 +80,7 @@ fn random_arm<const N: usize>(rng: &mut Rng, convention: usize) -> SpatialModel<
             Translation3::from(rng.vector::<3>(0.2)),
             UnitQuaternion::identity(),
         ),
+        payload: None,
     }
 }
 
@@ -248,7 +249,28 @@ fn pendulum_and_slide_by_hand() {
         }],
         gravity: Vector3::new(0.0, -g0, 0.0),
         tool: Isometry3::identity(),
+        payload: None,
     };
+    // The same pendulum as a massless link holding its bob as a payload, at a tool frame out
+    // along the link and turned about the joint's axis (the payload's zz stays zz).
+    let carried = SpatialModel::<1> {
+        links: [SpatialLink::MASSLESS],
+        tool: Isometry3::new(Vector3::new(l, 0.0, 0.0), Vector3::new(0.0, 0.0, 0.7)),
+        payload: Some(SpatialLink {
+            mass: m,
+            com: Vector3::zeros(),
+            inertia: Matrix3::from_diagonal(&Vector3::new(0.01, 0.03, izz)),
+        }),
+        ..pendulum
+    };
+    for (q, qd, qdd) in [(0.3, 2.0, -1.0), (-2.0, -0.5, 4.0), (1.2, 0.0, 0.0)] {
+        let want = (izz + m * l * l) * qdd + m * g0 * l * f64::cos(q);
+        let (q, qd, qdd) = (SVector::from([q]), SVector::from([qd]), SVector::from([qdd]));
+        let tau = reference::inverse_dynamics(&carried, &q, &qd, &qdd)[0];
+        assert!((tau - want).abs() < 1e-13, "{tau} {want}");
+        let t = reference::kinetic_energy(&carried, &q, &qd);
+        assert!((t - 0.5 * (izz + m * l * l) * qd[0] * qd[0]).abs() < 1e-14);
+    }
     for (q, qd, qdd) in [(0.3, 2.0, -1.0), (-2.0, -0.5, 4.0), (1.2, 0.0, 0.0)] {
         let tau = reference::inverse_dynamics(
             &pendulum,
@@ -277,6 +299,7 @@ fn pendulum_and_slide_by_hand() {
         }],
         gravity: Vector3::new(0.0, 0.0, -g0),
         tool: Isometry3::identity(),
+        payload: None,
     };
     let tau = reference::inverse_dynamics(
         &slide,
@@ -340,6 +363,7 @@ fn pinocchio_agrees() {
             links,
             gravity,
             tool: Isometry3::identity(),
+            payload: None,
         };
         let (mut tau_gap, mut m_gap, mut states) = (0.0_f64, 0.0_f64, 0);
         for state in lines[1 + 2 * N..].chunks(5) {

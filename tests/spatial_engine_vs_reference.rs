@@ -17,8 +17,8 @@ use planar_arm::symbolic::methods::Method;
 use planar_arm::symbolic::ring::{ratio, to_f64, Rational};
 use planar_arm::symbolic::slp::Input;
 use planar_arm::symbolic::spatial::{
-    unit_axis, FixedAngle, SpatialArmSpec, SpatialDerived, SpatialForm, SpatialGeometry,
-    SpatialJointSpec,
+    unit_axis, FixedAngle, SpatialArmSpec, SpatialBody, SpatialDerived, SpatialForm,
+    SpatialGeometry, SpatialJointSpec,
 };
 use planar_arm::symbolic::{JointKind, Param, Poly};
 use planar_arm::Joint;
@@ -116,6 +116,8 @@ struct ArmDraw {
     q: Vec<f64>,
     /// Seven joint rates, then seven accelerations.
     rates: Vec<f64>,
+    /// A payload at the tool: its mass, centre and tensor as a joint's are drawn.
+    payload: Option<JointDraw>,
 }
 
 fn arm() -> impl Strategy<Value = ArmDraw> {
@@ -127,9 +129,10 @@ fn arm() -> impl Strategy<Value = ArmDraw> {
         -8i64..=8,
         proptest::collection::vec(-3.2f64..3.2, 7),
         proptest::collection::vec(-4.0f64..4.0, 14),
+        proptest::option::weighted(0.5, joint()),
     )
         .prop_map(
-            |(convention, joints, gravity, tool, reach, q, rates)| ArmDraw {
+            |(convention, joints, gravity, tool, reach, q, rates, payload)| ArmDraw {
                 convention,
                 joints,
                 gravity,
@@ -137,6 +140,7 @@ fn arm() -> impl Strategy<Value = ArmDraw> {
                 reach,
                 q,
                 rates,
+                payload,
             },
         )
 }
@@ -204,6 +208,11 @@ fn spec(d: &ArmDraw) -> SpatialArmSpec {
         gravity: d.gravity.map(|k| Poly::constant(ratio(k, 1))),
         tool_xyz: d.tool.0.map(|k| Poly::constant(eighths(k))),
         tool_rpy: d.tool.1.clone().map(|a| a.exact()),
+        payload: d.payload.as_ref().map(|p| SpatialBody {
+            mass: Poly::constant(ratio(p.mass, 4)),
+            com: p.com.map(|k| Poly::constant(ratio(k, 10))),
+            inertia: p.inertia.map(|k| Poly::constant(ratio(k, 100))),
+        }),
     }
 }
 
@@ -249,17 +258,7 @@ fn model<const N: usize>(d: &ArmDraw) -> SpatialModel<N> {
             ..SpatialJoint::new(geometry, kind)
         }
     });
-    let links = core::array::from_fn(|i| {
-        let j = &d.joints[i];
-        SpatialLink {
-            mass: j.mass as f64 / 4.0,
-            com: Vector3::from(j.com.map(|k| k as f64 / 10.0)),
-            inertia: {
-                let [xx, yy, zz, xy, xz, yz] = j.inertia.map(|k| k as f64 / 100.0);
-                Matrix3::new(xx, xy, xz, xy, yy, yz, xz, yz, zz)
-            },
-        }
-    });
+    let links = core::array::from_fn(|i| link(&d.joints[i]));
     let [r, p, y] = [
         d.tool.1[0].value(),
         d.tool.1[1].value(),
@@ -273,6 +272,19 @@ fn model<const N: usize>(d: &ArmDraw) -> SpatialModel<N> {
             Translation3::from(Vector3::from(d.tool.0.map(|k| k as f64 / 8.0))),
             UnitQuaternion::from_euler_angles(r, p, y),
         ),
+        payload: d.payload.as_ref().map(link),
+    }
+}
+
+/// A drawn body's mass properties.
+fn link(j: &JointDraw) -> SpatialLink {
+    SpatialLink {
+        mass: j.mass as f64 / 4.0,
+        com: Vector3::from(j.com.map(|k| k as f64 / 10.0)),
+        inertia: {
+            let [xx, yy, zz, xy, xz, yz] = j.inertia.map(|k| k as f64 / 100.0);
+            Matrix3::new(xx, xy, xz, xy, yy, yz, xz, yz, zz)
+        },
     }
 }
 

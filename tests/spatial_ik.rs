@@ -37,6 +37,7 @@ fn model(joints: [SpatialJoint; 6]) -> SpatialModel<6> {
         links: [SpatialLink::MASSLESS; 6],
         gravity: Vector3::new(0.0, 0.0, -9.81),
         tool: Isometry3::identity(),
+        payload: None,
     }
 }
 

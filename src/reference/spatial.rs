@@ -14,9 +14,9 @@
 //! [`regressor`] is the inverse dynamics' linear map from each link's ten
 //! [`standard_parameters`] (Pinocchio's order).
 
-use nalgebra::{Isometry3, Point3, SMatrix, SVector, Vector3};
+use nalgebra::{Isometry3, Matrix3, Point3, SMatrix, SVector, Vector3};
 
-use crate::spatial::SpatialModel;
+use crate::spatial::{SpatialLink, SpatialModel};
 use crate::Joint;
 
 mod dynamics;
@@ -92,18 +92,51 @@ pub fn jacobian<const N: usize>(
     })
 }
 
-/// Each link's centre of mass in the base frame.
+/// The links' mass properties with the payload, if any, merged into the last link: one rigid
+/// body of the summed mass, at the mass-weighted centre, with both tensors turned into the
+/// link's axes and moved there by the parallel-axis theorem. The functions of this module use
+/// these.
+#[must_use]
+pub fn rigid_links<const N: usize>(model: &SpatialModel<N>) -> [SpatialLink; N] {
+    let mut links = model.links;
+    let (Some(payload), Some(last)) = (model.payload, links.last_mut()) else {
+        return links;
+    };
+    let r = model.tool.rotation.to_rotation_matrix().into_inner();
+    let parts = [
+        (last.mass, last.com, last.inertia),
+        (
+            payload.mass,
+            model
+                .tool
+                .transform_point(&Point3::from(payload.com))
+                .coords,
+            r * payload.inertia * r.transpose(),
+        ),
+    ];
+    let mass = parts[0].0 + parts[1].0;
+    let com = if mass > 0.0 {
+        (parts[0].1 * parts[0].0 + parts[1].1 * parts[1].0) / mass
+    } else {
+        Vector3::zeros()
+    };
+    let inertia = parts.iter().fold(Matrix3::zeros(), |acc, (m, c, i)| {
+        let d = c - com;
+        acc + i + (Matrix3::identity() * d.norm_squared() - d * d.transpose()) * *m
+    });
+    *last = SpatialLink { mass, com, inertia };
+    links
+}
+
+/// Each link's centre of mass in the base frame (the last link's with the payload).
 #[must_use]
 pub fn centres_of_mass<const N: usize>(
     model: &SpatialModel<N>,
     q: &SVector<f64, N>,
 ) -> [Vector3<f64>; N] {
     let poses = link_poses(model, q);
-    core::array::from_fn(|i| {
-        poses[i]
-            .transform_point(&Point3::from(model.links[i].com))
-            .coords
-    })
+    let links = rigid_links(model);
+    core::array::from_fn(|i| poses[i].transform_point(&Point3::from(links[i].com)).coords)
 }
 
 /// The potential energy `-sum m_i g . c_i`, J.
@@ -111,7 +144,7 @@ pub fn centres_of_mass<const N: usize>(
 pub fn potential_energy<const N: usize>(model: &SpatialModel<N>, q: &SVector<f64, N>) -> f64 {
     centres_of_mass(model, q)
         .iter()
-        .zip(&model.links)
+        .zip(&rigid_links(model))
         .map(|(c, l)| -l.mass * model.gravity.dot(c))
         .sum()
 }
@@ -122,6 +155,7 @@ pub fn potential_energy<const N: usize>(model: &SpatialModel<N>, q: &SVector<f64
 pub fn gravity<const N: usize>(model: &SpatialModel<N>, q: &SVector<f64, N>) -> SVector<f64, N> {
     let axes = joint_axes(model, q);
     let centres = centres_of_mass(model, q);
+    let links = rigid_links(model);
     SVector::from_fn(|i, _| {
         let (o, z) = axes[i];
         (i..N)
@@ -130,7 +164,7 @@ pub fn gravity<const N: usize>(model: &SpatialModel<N>, q: &SVector<f64, N>) -> 
                     Joint::Revolute => z.cross(&(centres[j] - o)),
                     Joint::Prismatic => z,
                 };
-                -model.links[j].mass * model.gravity.dot(&dc)
+                -links[j].mass * model.gravity.dot(&dc)
             })
             .sum()
     })

@@ -60,6 +60,32 @@ pub struct SpatialLink {
 }
 
 impl SpatialLink {
+    /// Mass not negative, every value finite, the tensor symmetric with no negative moment on
+    /// the diagonal; `what` names the mass, the values, the symmetry and the moments in errors.
+    fn check(&self, link: Option<usize>, what: [&'static str; 4]) -> Result<(), ArmError> {
+        let fail = |what, value| Err(ArmError::OutOfRange { what, link, value });
+        if !self.mass.is_finite() || self.mass < 0.0 {
+            return fail(what[0], self.mass);
+        }
+        if let Some(bad) = self
+            .com
+            .iter()
+            .chain(self.inertia.iter())
+            .find(|v| !v.is_finite())
+        {
+            return fail(what[1], *bad);
+        }
+        let t = &self.inertia;
+        let asymmetry = (t - t.transpose()).amax();
+        if asymmetry > 1e-12 * t.amax() {
+            return fail(what[2], asymmetry);
+        }
+        if let Some(bad) = (0..3).map(|k| t[(k, k)]).find(|d| *d < 0.0) {
+            return fail(what[3], bad);
+        }
+        Ok(())
+    }
+
     /// No mass.
     pub const MASSLESS: Self = Self {
         mass: 0.0,
@@ -83,6 +109,9 @@ pub struct SpatialModel<const N: usize> {
     pub gravity: Vector3<f64>,
     /// The tool frame in the last link's frame.
     pub tool: Isometry3<f64>,
+    /// A payload held rigidly at the tool: its mass, its centre of mass in the tool frame and
+    /// its inertia about that centre in the tool's axes.
+    pub payload: Option<SpatialLink>,
 }
 
 impl<const N: usize> SpatialModel<N> {
@@ -113,7 +142,6 @@ impl<const N: usize> SpatialModel<N> {
                 return fail("geometry", Some(i), *bad);
             }
             for (what, value) in [
-                ("mass", l.mass),
                 ("armature", j.armature),
                 ("damping", j.damping),
                 ("frictionloss", j.frictionloss),
@@ -122,27 +150,26 @@ impl<const N: usize> SpatialModel<N> {
                     return fail(what, Some(i), value);
                 }
             }
-            if let Some(bad) = l
-                .com
-                .iter()
-                .chain(l.inertia.iter())
-                .find(|v| !v.is_finite())
-            {
-                return fail("com or inertia", Some(i), *bad);
-            }
-            let t = &l.inertia;
-            let asymmetry = (t - t.transpose()).amax();
-            if asymmetry > 1e-12 * t.amax() {
-                return fail("inertia symmetry", Some(i), asymmetry);
-            }
-            if let Some(bad) = (0..3).map(|k| t[(k, k)]).find(|d| *d < 0.0) {
-                return fail("inertia", Some(i), bad);
-            }
+            l.check(
+                Some(i),
+                ["mass", "com or inertia", "inertia symmetry", "inertia"],
+            )?;
             if let Some((lower, upper)) = j.range {
                 if !lower.is_finite() || !upper.is_finite() || lower >= upper {
                     return fail("range", Some(i), lower);
                 }
             }
+        }
+        if let Some(payload) = &self.payload {
+            payload.check(
+                None,
+                [
+                    "payload mass",
+                    "payload com or inertia",
+                    "payload inertia symmetry",
+                    "payload inertia",
+                ],
+            )?;
         }
         if let Some(bad) = self.gravity.iter().find(|v| !v.is_finite()) {
             return fail("gravity", None, *bad);

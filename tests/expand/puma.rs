@@ -3284,6 +3284,7 @@ Cost: 57 multiplications, 44 additions, 0 divisions, 5 sin_cos pairs.*/
                 ),
                 ::planar_arm::nalgebra::UnitQuaternion::from_euler_angles(0.0, 0.0, 0.0),
             ),
+            payload: ::core::option::Option::None,
         }
     }
     ///Every solution in closed form (a spherical wrist, axes 2 and 3 parallel: decided at compile time from the exact geometry); see `planar_arm::spatial::SpatialIk`.

@@ -12,7 +12,7 @@ use crate::emit::{coefficient_tokens, f64_tokens, formula_doc, local, EmitError}
 use crate::expr::Expr;
 use crate::mechanics::spatial::frames::EXPANSION_BUDGET;
 use crate::mechanics::spatial::{
-    decouple, Decoupling, FixedAngle, SpatialArmSpec, SpatialGeometry,
+    decouple, Decoupling, FixedAngle, SpatialArmSpec, SpatialBody, SpatialGeometry,
 };
 use crate::mechanics::JointKind;
 use crate::methods::spatial::SpatialDerived;
@@ -410,20 +410,15 @@ fn model(arm: &SpatialArmSpec) -> Result<TokenStream, EmitError> {
             damping: #damping,
             frictionloss: #frictionloss,
         }));
-        let mass = coefficient_tokens(&j.mass)?;
-        let com = triple(&j.com)?;
-        let i = j
-            .inertia
-            .iter()
-            .map(coefficient_tokens)
-            .collect::<Result<Vec<_>, _>>()?;
-        let (xx, yy, zz, xy, xz, yz) = (&i[0], &i[1], &i[2], &i[3], &i[4], &i[5]);
-        links.push(quote!(::planar_arm::spatial::SpatialLink {
-            mass: #mass,
-            com: #com,
-            inertia: ::planar_arm::nalgebra::Matrix3::new(#xx, #xy, #xz, #xy, #yy, #yz, #xz, #yz, #zz),
-        }));
+        links.push(link_tokens(&SpatialBody::of_link(j))?);
     }
+    let payload = match &arm.payload {
+        Some(body) => {
+            let link = link_tokens(body)?;
+            quote!(::core::option::Option::Some(#link))
+        }
+        None => quote!(::core::option::Option::None),
+    };
     let gravity = triple(&arm.gravity)?;
     let tool_xyz = triple(&arm.tool_xyz)?;
     let [r, p, y] = [
@@ -442,9 +437,27 @@ fn model(arm: &SpatialArmSpec) -> Result<TokenStream, EmitError> {
                     ::planar_arm::nalgebra::Translation3::from(#tool_xyz),
                     ::planar_arm::nalgebra::UnitQuaternion::from_euler_angles(#r, #p, #y),
                 ),
+                payload: #payload,
             }
         }
     })
+}
+
+/// A body as a `SpatialLink`.
+fn link_tokens(body: &SpatialBody) -> Result<TokenStream, EmitError> {
+    let mass = coefficient_tokens(&body.mass)?;
+    let com = triple(&body.com)?;
+    let i = body
+        .inertia
+        .iter()
+        .map(coefficient_tokens)
+        .collect::<Result<Vec<_>, _>>()?;
+    let (xx, yy, zz, xy, xz, yz) = (&i[0], &i[1], &i[2], &i[3], &i[4], &i[5]);
+    Ok(quote!(::planar_arm::spatial::SpatialLink {
+        mass: #mass,
+        com: #com,
+        inertia: ::planar_arm::nalgebra::Matrix3::new(#xx, #xy, #xz, #xy, #yy, #yz, #xz, #yz, #zz),
+    }))
 }
 
 /// `fn inverse_kinematics`: the closed form the geometry allows, decided here for arms whose

@@ -8,4 +8,6 @@ pub mod spec;
 
 pub use decoupling::{decouple, DecoupledGeometry, Decoupling};
 pub use frames::{Frame, SpatialKinematics};
-pub use spec::{unit_axis, FixedAngle, SpatialArmSpec, SpatialGeometry, SpatialJointSpec};
+pub use spec::{
+    unit_axis, FixedAngle, SpatialArmSpec, SpatialBody, SpatialGeometry, SpatialJointSpec,
+};

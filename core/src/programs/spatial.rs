@@ -7,7 +7,7 @@
 use crate::algebra::expr::Expr;
 use crate::algebra::poly::Poly;
 use crate::mechanics::planar::JointKind;
-use crate::mechanics::spatial::frames::{joint_parts, motion, tool_frame, Frame};
+use crate::mechanics::spatial::frames::{joint_parts, link_bodies, motion, tool_frame, Frame};
 use crate::mechanics::spatial::spec::SpatialArmSpec;
 use crate::programs::method::Method;
 use crate::slp::{Id, Program};
@@ -201,14 +201,16 @@ fn gravity_program(arm: &SpatialArmSpec, mut p: Program, torques: bool) -> Metho
     let mut out = vec![(String::new(), zero); n];
     for i in (0..n).rev() {
         let joint = &arm.joints[i];
-        let m = p.poly(&joint.mass);
-        let com: [Id; 3] = core::array::from_fn(|k| p.poly(&joint.com[k]));
-        let centre = c.links[i].apply(&mut p, &com);
-        mass = p.add(mass, m);
-        moment = core::array::from_fn(|k| {
-            let x = p.mul(m, centre[k]);
-            p.add(moment[k], x)
-        });
+        for body in link_bodies(arm, i) {
+            let m = p.poly(&body.mass);
+            let com: [Id; 3] = core::array::from_fn(|k| p.poly(&body.com[k]));
+            let centre = c.links[i].apply(&mut p, &com);
+            mass = p.add(mass, m);
+            moment = core::array::from_fn(|k| {
+                let x = p.mul(m, centre[k]);
+                p.add(moment[k], x)
+            });
+        }
         let (o, z) = c.axes[i];
         let value = match joint.kind {
             JointKind::Revolute => {

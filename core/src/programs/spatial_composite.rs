@@ -19,7 +19,8 @@
 
 use crate::algebra::ring::int;
 use crate::mechanics::planar::JointKind;
-use crate::mechanics::spatial::spec::SpatialArmSpec;
+use crate::mechanics::spatial::frames::link_bodies;
+use crate::mechanics::spatial::spec::{SpatialArmSpec, SpatialBody};
 use crate::programs::method::{two, Method};
 use crate::programs::spatial::{cross, dot};
 use crate::programs::spatial_newton_euler::{add, scale, Joint, V3};
@@ -66,9 +67,29 @@ fn shifted(p: &mut Program, m: Id, o: &V3, k: &V3, a: usize, b: usize) -> Id {
     e
 }
 
-/// Link `i`'s own body about its frame's origin.
+/// The bodies link `i` carries (its own, and the payload on the last), about its frame's
+/// origin.
 fn own(p: &mut Program, arm: &SpatialArmSpec, i: usize) -> Body {
-    let spec = &arm.joints[i];
+    let bodies: Vec<Body> = link_bodies(arm, i)
+        .iter()
+        .map(|body| about_origin(p, body))
+        .collect();
+    bodies
+        .into_iter()
+        .reduce(|a, b| sum_bodies(p, &a, &b))
+        .unwrap_or_else(|| unreachable!("a link carries its own body"))
+}
+
+fn sum_bodies(p: &mut Program, a: &Body, b: &Body) -> Body {
+    Body {
+        m: p.add(a.m, b.m),
+        h: add(p, &a.h, &b.h),
+        j: core::array::from_fn(|r| core::array::from_fn(|c| p.add(a.j[r][c], b.j[r][c]))),
+    }
+}
+
+/// One body about its frame's origin.
+fn about_origin(p: &mut Program, spec: &SpatialBody) -> Body {
     let m = p.poly(&spec.mass);
     let c: V3 = core::array::from_fn(|k| p.poly(&spec.com[k]));
     let h = scale(p, &c, m);

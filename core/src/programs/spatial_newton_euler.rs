@@ -24,7 +24,7 @@
 
 use crate::algebra::ring::int;
 use crate::mechanics::planar::JointKind;
-use crate::mechanics::spatial::frames::{joint_parts, motion};
+use crate::mechanics::spatial::frames::{joint_parts, link_bodies, motion};
 use crate::mechanics::spatial::spec::SpatialArmSpec;
 use crate::programs::method::Method;
 use crate::programs::spatial::{cross, dot, Nodes};
@@ -149,7 +149,7 @@ pub(crate) fn friction_method(arm: &SpatialArmSpec) -> Method {
 /// included), all in the link's axes: `m a_c` and `I dw + w x I w + c x m a_c`.
 fn inertial_load(
     p: &mut Program,
-    spec: &crate::mechanics::spatial::spec::SpatialJointSpec,
+    spec: &crate::mechanics::spatial::spec::SpatialBody,
     w: &V3,
     dw: &V3,
     a: &V3,
@@ -232,7 +232,15 @@ pub(crate) fn newton_euler(
         let carried_o = carried(p, &w, &dw, &r);
         let sum = add(p, &a_axis, &carried_o);
         a = add(p, &sum, &slide_terms);
-        let (force, moment) = inertial_load(p, &arm.joints[j], &w, &dw, &a);
+        let mut load: Option<(V3, V3)> = None;
+        for body in link_bodies(arm, j) {
+            let (f, m) = inertial_load(p, &body, &w, &dw, &a);
+            load = Some(match load {
+                None => (f, m),
+                Some((f0, m0)) => (add(p, &f0, &f), add(p, &m0, &m)),
+            });
+        }
+        let (force, moment) = load.unwrap_or_else(|| unreachable!("a link carries its own body"));
         loads.push((force, moment, r));
     }
     // Inwards: what each joint transmits, read on its axis.

@@ -1,7 +1,8 @@
 //! The `#[arm(...)]` attribute of `#[derive(SpatialArm)]`: its keys and their parsing.
 //!
 //! On the struct: `gravity = (gx, gy, gz)`, `tool(xyz = (x, y, z), rpy = (r, p, y))`,
-//! `crate = "..."`. On each joint field: one of `dh(a, alpha, d, theta)`,
+//! `crate = "..."`, a payload held by the tool (`payload = m`, `payload_com = (x, y, z)`,
+//! `payload_inertia(xx, ..)` in the tool frame). On each joint field: one of `dh(a, alpha, d, theta)`,
 //! `mdh(a, alpha, d, theta)` or `origin(xyz = (..), rpy = (..))` with `axis = (x, y, z)`; the
 //! link's `mass`, `com = (x, y, z)` and `inertia(xx, yy, zz, xy, xz, yz)`; the joint's `range`,
 //! `armature`, `damping`, `frictionloss`. Lengths and mass properties are exact numbers or
@@ -92,6 +93,12 @@ pub struct SpatialAttrs {
     pub tool_xyz: Option<Triple>,
     pub tool_rpy: Option<Angles>,
     pub krate: Option<syn::Path>,
+    /// The payload at the tool frame: mass, centre, tensor (xx, yy, zz, xy, xz, yz).
+    pub payload: Option<Scalar>,
+    pub payload_com: Option<Triple>,
+    pub payload_inertia: [Option<Scalar>; 6],
+    /// Where `payload_com` or `payload_inertia` was written, for an error without `payload`.
+    pub payload_extras: Vec<TokenStream>,
 }
 
 /// Where a list appears.
@@ -114,9 +121,14 @@ const FIELD_KEYS: &[&str] = &[
     "damping",
     "frictionloss",
 ];
-const STRUCT_KEYS: &[&str] = &["gravity", "tool", "crate"];
-/// A planar arm's keys, which a spatial arm writes otherwise.
-const PLANAR_KEYS: &[&str] = &["length", "payload", "payload_com", "payload_inertia"];
+const STRUCT_KEYS: &[&str] = &[
+    "gravity",
+    "tool",
+    "crate",
+    "payload",
+    "payload_com",
+    "payload_inertia",
+];
 pub const INERTIA_KEYS: [&str; 6] = ["xx", "yy", "zz", "xy", "xz", "yz"];
 
 /// Parses every `#[arm(...)]` of `attrs`.
@@ -169,12 +181,6 @@ fn entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut SpatialA
              `dh(a = .., alpha = .., d = .., theta = ..)`, `mdh(...)`, or `origin(xyz = .., rpy = ..)` \
              with `axis`"
                 .to_string()
-        } else if PLANAR_KEYS.contains(&key.as_str()) {
-            // #[arm(payload = 2)]
-            format!(
-                "`{key}` is a key of #[derive(PlanarArm)]; #[derive(SpatialArm)] has no payload \
-                 keys: include a payload in the last link's `mass`, `com` and `inertia(...)`"
-            )
         } else if let Some(best) = nearest(&key, own) {
             format!("unknown key `{key}`; did you mean `{best}`?")
         } else {
@@ -185,7 +191,7 @@ fn entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut SpatialA
         return;
     }
     let is_geometry = matches!(key.as_str(), "dh" | "mdh" | "origin");
-    let is_list = is_geometry || key == "inertia" || key == "tool";
+    let is_list = is_geometry || key == "inertia" || key == "payload_inertia" || key == "tool";
     let message = if let Some(g) = out.geometry.as_ref().filter(|_| is_geometry) {
         // #[arm(dh(..), mdh(..))]
         Some(format!(
@@ -195,12 +201,23 @@ fn entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut SpatialA
     } else if out.seen.contains(&key) {
         // #[arm(mass = 1, mass = 2)]
         Some(format!("duplicate key `{key}`; give it once"))
-    } else if key == "inertia" && !meta.input.peek(syn::token::Paren) {
+    } else if (key == "inertia" || key == "payload_inertia") && !meta.input.peek(syn::token::Paren)
+    {
         // #[arm(inertia = 0.1)], as a planar link's
         Some(format!(
-            "a spatial link's inertia is a tensor, not one number: write `{}` (kg m², about the \
-             centre of mass in the link's axes; omitted entries are 0)",
-            form("inertia")
+            "{} inertia is a tensor, not one number: write `{}` (kg m², about the centre of \
+             mass in the {} axes; omitted entries are 0)",
+            if key == "inertia" {
+                "a spatial link's"
+            } else {
+                "a payload's"
+            },
+            form(&key),
+            if key == "inertia" {
+                "link's"
+            } else {
+                "tool frame's"
+            }
         ))
     } else if is_list != meta.input.peek(syn::token::Paren)
         || !is_list && !meta.input.peek(syn::Token![=])
@@ -219,7 +236,7 @@ fn entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut SpatialA
     }
     let result = match key.as_str() {
         "dh" | "mdh" | "origin" => geometry(cx, meta, &key, out),
-        "inertia" => inertia(cx, meta, out),
+        "inertia" | "payload_inertia" => inertia(cx, meta, &key, out),
         "tool" => tool(cx, meta, out),
         "crate" => krate(meta, out),
         _ => keyed_value(cx, meta, &key, out),
@@ -236,8 +253,10 @@ fn form(key: &str) -> String {
     match key {
         "dh" | "mdh" => format!("{key}(a = .., alpha = .., d = .., theta = ..)"),
         "origin" | "tool" => format!("{key}(xyz = (x, y, z), rpy = (roll, pitch, yaw))"),
-        "inertia" => "inertia(xx = .., yy = .., zz = .., xy = .., xz = .., yz = ..)".to_string(),
-        "axis" | "com" => format!("{key} = (x, y, z)"),
+        "inertia" | "payload_inertia" => {
+            format!("{key}(xx = .., yy = .., zz = .., xy = .., xz = .., yz = ..)")
+        }
+        "axis" | "com" | "payload_com" => format!("{key} = (x, y, z)"),
         "gravity" => "gravity = (0, 0, -9.81)".to_string(),
         "range" => "range = (lower, upper)".to_string(),
         "crate" => "crate = \"path\"".to_string(),
@@ -441,11 +460,21 @@ fn geometry(
     Ok(())
 }
 
-/// `inertia(xx = .., yy = .., zz = .., xy = .., xz = .., yz = ..)`.
-fn inertia(cx: &Ctxt, meta: &ParseNestedMeta<'_>, out: &mut SpatialAttrs) -> syn::Result<()> {
+/// `inertia(xx = .., yy = .., zz = .., xy = .., xz = .., yz = ..)`, or `payload_inertia(..)`.
+fn inertia(
+    cx: &Ctxt,
+    meta: &ParseNestedMeta<'_>,
+    key: &str,
+    out: &mut SpatialAttrs,
+) -> syn::Result<()> {
     let params = &mut out.params;
-    let slots = &mut out.inertia;
-    nested(meta, "inertia", |m| {
+    let (slots, axes) = if key == "inertia" {
+        (&mut out.inertia, "the link's axes")
+    } else {
+        out.payload_extras.push(meta.path.to_token_stream());
+        (&mut out.payload_inertia, "the tool frame's axes")
+    };
+    nested(meta, key, |m| {
         let sub = path_text(&m.path);
         let result = match INERTIA_KEYS.iter().position(|k| *k == sub) {
             Some(i) if slots[i].is_some() => Err(duplicate(&m.path, &sub)),
@@ -457,7 +486,7 @@ fn inertia(cx: &Ctxt, meta: &ParseNestedMeta<'_>, out: &mut SpatialAttrs) -> syn
                     &m.path,
                     format!(
                         "unknown inertia entry `{sub}`{hint}; the entries are xx, yy, zz, xy, xz, yz \
-                         (kg m², about the centre of mass in the link's axes)"
+                         (kg m², about the centre of mass in {axes})"
                     ),
                 ))
             }
@@ -523,7 +552,8 @@ fn krate(meta: &ParseNestedMeta<'_>, out: &mut SpatialAttrs) -> syn::Result<()> 
     Ok(())
 }
 
-/// `axis`, `mass`, `com`, `range`, `armature`, `damping`, `frictionloss`, `gravity`.
+/// `axis`, `mass`, `com`, `range`, `armature`, `damping`, `frictionloss`, `gravity`,
+/// `payload`, `payload_com`.
 fn keyed_value(
     cx: &Ctxt,
     meta: &ParseNestedMeta<'_>,
@@ -550,6 +580,12 @@ fn keyed_value(
             }
         }
         "mass" => out.mass = Some(scalar(meta, params)?),
+        "payload" => out.payload = Some(scalar(meta, params)?),
+        "payload_com" => {
+            let t = triple(meta, params, "payload_com")?;
+            out.payload_extras.push(t.tokens.clone());
+            out.payload_com = Some(t);
+        }
         "com" => out.com = Some(triple(meta, params, "com")?),
         "gravity" => out.gravity = Some(triple(meta, params, "gravity")?),
         "armature" => out.armature = Some(scalar(meta, params)?),

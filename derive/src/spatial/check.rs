@@ -3,7 +3,7 @@
 
 use num_traits::{Signed, Zero};
 use planar_arm_core::mechanics::spatial::{
-    unit_axis, FixedAngle, SpatialArmSpec, SpatialGeometry, SpatialJointSpec,
+    unit_axis, FixedAngle, SpatialArmSpec, SpatialBody, SpatialGeometry, SpatialJointSpec,
 };
 use planar_arm_core::ring::{ratio, to_f64, Rational};
 use planar_arm_core::Poly;
@@ -85,12 +85,47 @@ pub fn check(cx: &Ctxt, arm: &SpatialArm<'_>) -> Option<SpatialArmSpec> {
             })
         },
     );
-    (ok && joints.len() == arm.joints.len()).then_some(SpatialArmSpec {
+    let payload = check_payload(cx, a);
+    ok &= payload.is_ok();
+    (ok && joints.len() == arm.joints.len()).then(|| SpatialArmSpec {
         joints,
         gravity,
         tool_xyz,
         tool_rpy,
+        payload: payload.ok().flatten(),
     })
+}
+
+/// The payload at the tool frame, if the struct gives one; `Err` after recording errors.
+fn check_payload(cx: &Ctxt, a: &super::attr::SpatialAttrs) -> Result<Option<SpatialBody>, ()> {
+    if a.payload.is_none() {
+        for tokens in &a.payload_extras {
+            // #[arm(payload_com = (0, 0, 0.1))] alone
+            cx.error_spanned_by(
+                tokens,
+                "a payload's centre of mass or inertia needs its mass: add `payload = <kg>` \
+                 (the payload is held at the tool frame)",
+            );
+        }
+        return if a.payload_extras.is_empty() {
+            Ok(None)
+        } else {
+            Err(())
+        };
+    }
+    let mut ok = not_negative(cx, &a.payload, "a payload's mass cannot be negative");
+    ok &= check_inertia(cx, "the payload's", &a.payload_inertia);
+    if !ok {
+        return Err(());
+    }
+    Ok(Some(SpatialBody {
+        mass: or_zero(&a.payload),
+        com: a.payload_com.as_ref().map_or_else(
+            || [Poly::default(), Poly::default(), Poly::default()],
+            |c| c.value.clone(),
+        ),
+        inertia: core::array::from_fn(|i| or_zero(&a.payload_inertia[i])),
+    }))
 }
 
 fn check_joint(
@@ -224,7 +259,7 @@ fn check_joint(
         &a.frictionloss,
         &format!("joint `{name}`: frictionloss cannot be negative (it would feed energy in)"),
     );
-    ok &= check_inertia(cx, &name, a);
+    ok &= check_inertia(cx, &format!("joint `{name}`:"), &a.inertia);
     let range = a.range.as_ref().and_then(|r| {
         let (lo, hi) = &r.value;
         if to_f64(lo) >= to_f64(hi) {
@@ -257,17 +292,14 @@ fn check_joint(
 /// Literal inertia tensors must have no negative moment on the diagonal. The triangle
 /// inequality is not required: published models break it (Corke's PUMA 560 gives the waist only
 /// `Iyy`), and kinematics and gravity do not depend on the tensor.
-fn check_inertia(cx: &Ctxt, name: &str, a: &super::attr::SpatialAttrs) -> bool {
+fn check_inertia(cx: &Ctxt, whose: &str, inertia: &[Option<Scalar>; 6]) -> bool {
     let mut ok = true;
-    for (i, v) in a.inertia.iter().enumerate().take(3) {
+    for (i, v) in inertia.iter().enumerate().take(3) {
         if let Some(v) = v {
             if v.value.as_rational().is_some_and(|r| r.is_negative()) {
                 cx.error_spanned_by(
                     &v.tokens,
-                    format!(
-                        "joint `{name}`: inertia `{}` cannot be negative",
-                        INERTIA_KEYS[i]
-                    ),
+                    format!("{whose} inertia `{}` cannot be negative", INERTIA_KEYS[i]),
                 );
                 ok = false;
             }

@@ -95,13 +95,14 @@ fn rnea<const N: usize>(
     let poses = link_poses(model, q);
     let axes = joint_axes(model, q);
     let motions = motions(model, q, qd, qdd, gravity);
+    let links = super::rigid_links(model);
     let mut tau = SVector::zeros();
     // Force on link i from link i - 1 and the moment about p_i, summed from the tip.
     let mut force = Vector3::zeros();
     let mut moment = Vector3::zeros();
     let mut origin_after = Vector3::zeros();
     for i in (0..N).rev() {
-        let link = &model.links[i];
+        let link = &links[i];
         let m = &motions[i];
         let p = poses[i].translation.vector;
         let rotation = poses[i].rotation.to_rotation_matrix().into_inner();
@@ -177,7 +178,7 @@ pub fn mass_matrix<const N: usize>(
     let poses = link_poses(model, q);
     let axes = joint_axes(model, q);
     let mut m = SMatrix::<f64, N, N>::zeros();
-    for (j, link) in model.links.iter().enumerate() {
+    for (j, link) in super::rigid_links(model).iter().enumerate() {
         let centre = poses[j].transform_point(&Point3::from(link.com)).coords;
         let rotation = poses[j].rotation.to_rotation_matrix().into_inner();
         let inertia: Matrix3<f64> = rotation * link.inertia * rotation.transpose();
@@ -213,6 +214,7 @@ pub fn kinetic_energy<const N: usize>(
 ) -> f64 {
     let poses = link_poses(model, q);
     let axes = joint_axes(model, q);
+    let links = super::rigid_links(model);
     let (mut w, mut v, mut origin) = (Vector3::zeros(), Vector3::zeros(), Vector3::zeros());
     let mut energy = 0.0;
     for i in 0..N {
@@ -228,7 +230,7 @@ pub fn kinetic_energy<const N: usize>(
             Joint::Prismatic => v += z * qd[i],
         }
         origin = p;
-        let link = &model.links[i];
+        let link = &links[i];
         let rotation = poses[i].rotation.to_rotation_matrix().into_inner();
         let inertia: Matrix3<f64> = rotation * link.inertia * rotation.transpose();
         let v_com = v + w.cross(&(rotation * link.com));

@@ -24,8 +24,9 @@ use crate::Joint;
 /// about the centre of mass), in Pinocchio's order.
 #[must_use]
 pub fn standard_parameters<const N: usize>(model: &SpatialModel<N>) -> [SVector<f64, 10>; N] {
+    let links = super::rigid_links(model);
     core::array::from_fn(|i| {
-        let link = &model.links[i];
+        let link = &links[i];
         let (m, c) = (link.mass, link.com);
         let j = link.inertia + (Matrix3::identity() * c.norm_squared() - c * c.transpose()) * m;
         SVector::from([

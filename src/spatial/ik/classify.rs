@@ -61,6 +61,7 @@ impl SpatialIk {
     ///     links: [SpatialLink::MASSLESS; 6],
     ///     gravity: Vector3::new(0.0, 0.0, -9.81),
     ///     tool: Isometry3::identity(),
+    ///     payload: None,
     /// };
     /// assert_eq!(SpatialIk::of_model(&puma).map(|ik| ik.class), Some(IkClass::SphericalWrist));
     /// ```

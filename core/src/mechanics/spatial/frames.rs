@@ -3,7 +3,7 @@
 //! multiplied out base to tip; the centres of mass, the potential energy and its gradient, the
 //! gravity torques.
 
-use super::spec::{FixedAngle, SpatialArmSpec, SpatialGeometry, SpatialJointSpec};
+use super::spec::{FixedAngle, SpatialArmSpec, SpatialBody, SpatialGeometry, SpatialJointSpec};
 use crate::algebra::expr::{Expr, Var};
 use crate::algebra::poly::Poly;
 use crate::algebra::ring::int;
@@ -240,6 +240,56 @@ pub fn tool_frame(arm: &SpatialArmSpec) -> Frame {
     shift(&arm.tool_xyz[0], &arm.tool_xyz[1], &arm.tool_xyz[2]).mul(&rpy(&arm.tool_rpy))
 }
 
+/// The bodies link `i` carries, in its frame: its own, and on the last link the payload moved
+/// from the tool frame (centre `R c + p`, tensor `R I R^T`, exact).
+#[must_use]
+pub fn link_bodies(arm: &SpatialArmSpec, i: usize) -> Vec<SpatialBody> {
+    let mut bodies = vec![SpatialBody::of_link(&arm.joints[i])];
+    if let Some(payload) = arm.payload.as_ref().filter(|_| i + 1 == arm.joints.len()) {
+        bodies.push(payload_in_last_link(arm, payload));
+    }
+    bodies
+}
+
+fn payload_in_last_link(arm: &SpatialArmSpec, payload: &SpatialBody) -> SpatialBody {
+    let tool = tool_frame(arm);
+    let value = |e: &E| e.constant_term().cloned().unwrap_or_default();
+    let r: [[Poly; 3]; 3] =
+        core::array::from_fn(|a| core::array::from_fn(|b| value(&tool.r[a][b])));
+    let com = core::array::from_fn(|a| {
+        (0..3).fold(value(&tool.p[a]), |acc, b| {
+            acc + r[a][b].clone() * payload.com[b].clone()
+        })
+    });
+    let [xx, yy, zz, xy, xz, yz] = payload.inertia.clone();
+    let tensor = [
+        [xx, xy.clone(), xz.clone()],
+        [xy, yy, yz.clone()],
+        [xz, yz, zz],
+    ];
+    let turned = |a: usize, b: usize| -> Poly {
+        let mut sum = Poly::default();
+        for k in 0..3 {
+            for l in 0..3 {
+                sum = sum + r[a][k].clone() * tensor[k][l].clone() * r[b][l].clone();
+            }
+        }
+        sum
+    };
+    SpatialBody {
+        mass: payload.mass.clone(),
+        com,
+        inertia: [
+            turned(0, 0),
+            turned(1, 1),
+            turned(2, 2),
+            turned(0, 1),
+            turned(0, 2),
+            turned(1, 2),
+        ],
+    }
+}
+
 /// The exact kinematics of an arm.
 #[derive(Clone, Debug)]
 pub struct SpatialKinematics {
@@ -307,15 +357,19 @@ impl SpatialKinematics {
                 at_axis
             };
             frame = moved.mul_within(&post, budget)?;
-            let com: [E; 3] = core::array::from_fn(|i| constant(&joint.com[i]));
-            let c = frame.apply(&com);
-            for (g, ci) in arm.gravity.iter().zip(&c) {
-                potential.sub_assign(&ci.scale_by(&(joint.mass.clone() * g.clone())));
+            let mut centre = None;
+            for body in link_bodies(arm, j) {
+                let com: [E; 3] = core::array::from_fn(|i| constant(&body.com[i]));
+                let c = frame.apply(&com);
+                for (g, ci) in arm.gravity.iter().zip(&c) {
+                    potential.sub_assign(&ci.scale_by(&(body.mass.clone() * g.clone())));
+                }
+                centre.get_or_insert(c);
             }
             if size(&potential) > budget {
                 return None;
             }
-            centres.push(c);
+            centres.push(centre.unwrap_or_default());
             links.push(frame.clone());
         }
         let tool = frame.mul_within(&tool_frame(arm), budget)?;

@@ -189,6 +189,30 @@ pub struct SpatialJointSpec {
     pub frictionloss: Poly,
 }
 
+/// A rigid body's mass properties in some frame: mass, centre of mass, and the inertia tensor
+/// about the centre of mass in that frame's axes (xx, yy, zz, xy, xz, yz).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SpatialBody {
+    /// Mass.
+    pub mass: Poly,
+    /// Centre of mass.
+    pub com: [Poly; 3],
+    /// Inertia about the centre of mass: xx, yy, zz, xy, xz, yz.
+    pub inertia: [Poly; 6],
+}
+
+impl SpatialBody {
+    /// The body of joint `spec`'s link, in the link's frame.
+    #[must_use]
+    pub fn of_link(spec: &SpatialJointSpec) -> Self {
+        Self {
+            mass: spec.mass.clone(),
+            com: spec.com.clone(),
+            inertia: spec.inertia.clone(),
+        }
+    }
+}
+
 /// A spatial arm: joints base first, gravity, the tool frame in the last link's frame.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct SpatialArmSpec {
@@ -200,6 +224,8 @@ pub struct SpatialArmSpec {
     pub tool_xyz: [Poly; 3],
     /// The tool's roll, pitch, yaw there.
     pub tool_rpy: [FixedAngle; 3],
+    /// A payload held rigidly by the tool, in the tool frame.
+    pub payload: Option<SpatialBody>,
 }
 
 /// The unit vector along `v` (not zero): exact when `|v|^2` is the square of a rational, else
