@@ -30,7 +30,7 @@ use random_arms::{Random1, Random2, Random3, Random4, Random6, Random8};
 
 fn row<A, const N: usize, const P: usize, const B: usize>()
 where
-    A: Identification<N, P, B> + Default,
+    A: Identification<N, P, B> + PlanarArm<N> + Default,
 {
     let arm = A::default();
     let model = arm.model();

@@ -25,6 +25,8 @@
 //! cargo run --release --example identify [-- --out DIR | -- --docs]
 //! ```
 
+#[path = "support/excite.rs"]
+mod excite;
 #[path = "support/num.rs"]
 mod num;
 #[path = "support/out.rs"]
@@ -37,12 +39,12 @@ mod plot;
 mod simulated;
 
 use std::error::Error;
-use std::f64::consts::TAU;
 
-use planar_arm::nalgebra::{DMatrix, DVector, SVector};
+use planar_arm::nalgebra::SVector;
 use planar_arm::prelude::*;
 use planar_arm::reference;
 
+use excite::{least_squares, print_estimate, rms, stack, Bounds, Rng, BASE_HZ};
 use num::fixed;
 use out::Out;
 
@@ -111,100 +113,17 @@ const SAMPLES: u32 = 3000;
 const FRESH: u32 = 1000;
 /// Standard deviation of the torque measurement noise, N m (motor-current noise).
 const SIGMA: f64 = 0.1;
-/// Fundamental frequency of the excitation, Hz: a 10 s period.
-const BASE_HZ: f64 = 0.1;
-const HARMONICS: usize = 5;
 
-/// Deterministic splitmix64 numbers, uniform and (Box-Muller) Gaussian.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^= z >> 31;
-        #[allow(clippy::cast_precision_loss)]
-        let u = (z >> 11) as f64 / (1u64 << 53) as f64;
-        u
-    }
-
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
-
-    fn gaussian(&mut self) -> f64 {
-        // 1 - u lies in (0, 1], so the logarithm is finite.
-        let (u, v) = (1.0 - self.next(), self.next());
-        (-2.0 * u.ln()).sqrt() * (TAU * v).cos()
-    }
-
-    fn noise(&mut self, sigma: f64) -> V3 {
-        V3::from_fn(|_, _| sigma * self.gaussian())
-    }
-}
-
-/// Swevers' periodic excitation: per joint
-/// `q(t) = q0 + sum_l a_l / (w l) sin(w l t) - b_l / (w l) cos(w l t)`, `w = 2 pi 0.1 Hz`.
-struct Excitation {
-    q0: [f64; 3],
-    a: [[f64; HARMONICS]; 3],
-    b: [[f64; HARMONICS]; 3],
-}
+type Excitation = excite::Excitation<3>;
+type Estimate = excite::Estimate<B>;
 
 /// Bounds of the motion about the centre, rad, rad/s, rad/s^2: the arm sweeps most of its
 /// range while the motors stay within their speed and torque.
-const Q_SWING: f64 = 1.5;
-const QD_MAX: f64 = 3.0;
-const QDD_MAX: f64 = 10.0;
-
-impl Excitation {
-    fn random(rng: &mut Rng, q0: [f64; 3]) -> Self {
-        let mut coefficients =
-            || std::array::from_fn(|_| std::array::from_fn(|_| rng.uniform(-1.0, 1.0)));
-        let mut e = Self {
-            q0,
-            a: coefficients(),
-            b: coefficients(),
-        };
-        // Scale each joint's series so that its largest swing, speed or acceleration over a
-        // period meets its bound.
-        let mut peak = V3::zeros();
-        for k in 0..1000 {
-            let (q, qd, qdd) = e.state(f64::from(k) / (1000.0 * BASE_HZ));
-            let ratio = ((q - V3::from(q0)).abs() / Q_SWING)
-                .sup(&(qd.abs() / QD_MAX))
-                .sup(&(qdd.abs() / QDD_MAX));
-            peak = peak.sup(&ratio);
-        }
-        for ((a, b), p) in e.a.iter_mut().zip(&mut e.b).zip(peak.iter()) {
-            for (a, b) in a.iter_mut().zip(b.iter_mut()) {
-                *a /= p;
-                *b /= p;
-            }
-        }
-        e
-    }
-
-    /// `q, qd, qdd` at time `t`, analytic.
-    fn state(&self, t: f64) -> (V3, V3, V3) {
-        let omega = TAU * BASE_HZ;
-        let (mut q, mut qd, mut qdd) = (V3::from(self.q0), V3::zeros(), V3::zeros());
-        for j in 0..3 {
-            // The l-th harmonic's frequency, omega l.
-            let mut wl = 0.0;
-            for (&a, &b) in self.a[j].iter().zip(&self.b[j]) {
-                wl += omega;
-                let (s, c) = (wl * t).sin_cos();
-                q[j] += (a * s - b * c) / wl;
-                qd[j] += a * c + b * s;
-                qdd[j] += wl * (b * c - a * s);
-            }
-        }
-        (q, qd, qdd)
-    }
-}
+const BOUNDS: Bounds<3> = Bounds {
+    swing: [1.5; 3],
+    speed: [3.0; 3],
+    acceleration: [10.0; 3],
+};
 
 /// One run: sample times, states and measured (noisy) torques.
 struct Run {
@@ -220,7 +139,9 @@ fn measure(robot: &Arm, e: &Excitation, samples: u32, rng: &mut Rng) -> Run {
     let states: Vec<_> = t.iter().map(|&t| e.state(t)).collect();
     let measured = states
         .iter()
-        .map(|(q, qd, qdd)| reference::inverse_dynamics(&model, q, qd, qdd) + rng.noise(SIGMA))
+        .map(|(q, qd, qdd)| {
+            reference::inverse_dynamics(&model, q, qd, qdd) + rng.noise(&V3::repeat(SIGMA))
+        })
         .collect();
     Run {
         t,
@@ -229,127 +150,9 @@ fn measure(robot: &Arm, e: &Excitation, samples: u32, rng: &mut Rng) -> Run {
     }
 }
 
-/// The base regressor stacked over the states, 3 rows per sample.
-fn stack(model: &Arm, states: &[(V3, V3, V3)]) -> DMatrix<f64> {
-    let mut w = DMatrix::zeros(3 * states.len(), B);
-    for (k, (q, qd, qdd)) in states.iter().enumerate() {
-        w.fixed_view_mut::<3, B>(3 * k, 0)
-            .copy_from(&model.base_regressor(q, qd, qdd));
-    }
-    w
-}
-
-/// Divides each column by its norm: the condition number then no longer depends on units.
-fn scale_columns(w: &DMatrix<f64>) -> DMatrix<f64> {
-    let mut s = w.clone();
-    for mut c in s.column_iter_mut() {
-        let n = c.norm();
-        c /= n;
-    }
-    s
-}
-
-fn condition(w: &DMatrix<f64>) -> f64 {
-    let s = w.singular_values();
-    s.max() / s.min()
-}
-
-/// A least-squares estimate with its covariance.
-struct Estimate {
-    theta: SVector<f64, B>,
-    std: SVector<f64, B>,
-    sigma: f64,
-    condition: f64,
-    scaled_condition: f64,
-}
-
-/// Least squares `W theta = tau` by SVD; the noise level is estimated from the residual, as on
-/// a real robot, and the covariance is `sigma^2 (W^T W)^-1 = sigma^2 V S^-2 V^T`.
+/// Least squares on the base regressor stacked over the run (see `excite::least_squares`).
 fn identify(model: &Arm, run: &Run) -> Result<Estimate, Box<dyn Error>> {
-    let w = stack(model, &run.states);
-    let tau = DVector::from_iterator(
-        w.nrows(),
-        run.measured.iter().flat_map(|t| t.iter().copied()),
-    );
-    let scaled_condition = condition(&scale_columns(&w));
-    let svd = w.clone().svd(true, true);
-    let condition = svd.singular_values.max() / svd.singular_values.min();
-    let theta = svd.solve(&tau, 0.0)?;
-    let residual = &tau - &w * &theta;
-    let theta = SVector::from_column_slice(theta.as_slice());
-    #[allow(clippy::cast_precision_loss)]
-    let dof = (w.nrows() - B) as f64;
-    let sigma = (residual.norm_squared() / dof).sqrt();
-    let v_t = svd.v_t.as_ref().ok_or("no V")?;
-    let std = SVector::from_fn(|i, _| {
-        let var: f64 = (0..B)
-            .map(|k| (v_t[(k, i)] / svd.singular_values[k]).powi(2))
-            .sum();
-        sigma * var.sqrt()
-    });
-    Ok(Estimate {
-        theta,
-        std,
-        sigma,
-        condition,
-        scaled_condition,
-    })
-}
-
-/// The excitation among `candidates` random ones whose column-scaled regressor (sampled
-/// coarsely over one period) is best conditioned; returns it and the best and worst numbers.
-fn best_excitation(model: &Arm, rng: &mut Rng, candidates: u32) -> (Excitation, f64, f64) {
-    let mut best: Option<(Excitation, f64)> = None;
-    let mut worst = 0.0_f64;
-    for _ in 0..candidates {
-        let e = Excitation::random(rng, [0.0, 0.4, -0.3]);
-        let states: Vec<_> = (0..200)
-            .map(|k| e.state(f64::from(k) / (200.0 * BASE_HZ)))
-            .collect();
-        let c = condition(&scale_columns(&stack(model, &states)));
-        worst = worst.max(c);
-        if best.as_ref().is_none_or(|(_, b)| c < *b) {
-            best = Some((e, c));
-        }
-    }
-    let (e, c) = best.expect("at least one candidate");
-    (e, c, worst)
-}
-
-fn rms(values: impl Iterator<Item = f64>) -> f64 {
-    let (mut sum, mut n) = (0.0, 0.0);
-    for v in values {
-        sum += v * v;
-        n += 1.0;
-    }
-    (sum / n).sqrt()
-}
-
-/// Prints the table of base parameters and returns the largest error in standard deviations.
-fn print_estimate(truth: &SVector<f64, B>, est: &Estimate) -> f64 {
-    let names = Arm::base_parameter_names();
-    let width = names.iter().map(|n| n.len()).max().unwrap_or(0);
-    println!(
-        "{:width$}  {:>10} {:>10} {:>10} {:>9} {:>7}",
-        "base parameter", "true", "identified", "error", "std dev", "err/std"
-    );
-    let mut worst = 0.0_f64;
-    for i in 0..B {
-        let err = est.theta[i] - truth[i];
-        let z = err / est.std[i];
-        worst = worst.max(z.abs());
-        println!(
-            "{:width$}  {:>10} {:>10} {:>10} {:>9} {:>7}",
-            names[i],
-            fixed(truth[i], 5),
-            fixed(est.theta[i], 5),
-            fixed(err, 5),
-            fixed(est.std[i], 5),
-            fixed(z, 2)
-        );
-    }
-    println!("largest error: {worst:.2} standard deviations");
-    worst
+    least_squares(&stack(model, &run.states), &run.measured, &V3::repeat(1.0))
 }
 
 /// Steps 1 and 2: the excitation, its measurements and the identified base parameters.
@@ -359,7 +162,7 @@ fn identify_empty(
     rng: &mut Rng,
 ) -> Result<(Excitation, Estimate), Box<dyn Error>> {
     println!("== 1. excitation ==");
-    let (excitation, cond, worst) = best_excitation(model, rng, 20);
+    let (excitation, cond, worst) = Excitation::best(model, rng, 20, [0.0, 0.4, -0.3], &BOUNDS);
     println!(
         "best of 20 random Fourier coefficient sets: column-scaled condition number {cond:.2} (worst {worst:.2})"
     );
@@ -399,7 +202,7 @@ fn identify_empty(
         "noise estimated from the residual: {:.4} N m (true {SIGMA}); std dev = sqrt of the diagonal of sigma^2 (W^T W)^-1\n",
         est.sigma
     );
-    let worst_z = print_estimate(&robot.base_parameters(), &est);
+    let worst_z = print_estimate(Arm::base_parameter_names(), &robot.base_parameters(), &est);
     assert!(
         worst_z < 5.0,
         "an identified parameter is off by {worst_z:.1} standard deviations"
@@ -410,7 +213,7 @@ fn identify_empty(
 /// Step 3: the identified model's torques on a fresh trajectory against fresh measurements.
 fn validate(model: &Arm, robot: &Arm, est: &Estimate, rng: &mut Rng) -> (Run, Vec<V3>, [f64; 3]) {
     println!("\n== 3. validation on a fresh trajectory ==");
-    let fresh = Excitation::random(rng, [0.6, -0.5, 0.8]);
+    let fresh = Excitation::random(rng, [0.6, -0.5, 0.8], &BOUNDS);
     let check = measure(robot, &fresh, FRESH, rng);
     let predicted: Vec<V3> = check
         .states

@@ -2,7 +2,7 @@
 
 use nalgebra::{SMatrix, SVector};
 
-use crate::PlanarArm;
+use crate::Dynamics;
 
 /// Identification of an arm's inertial and friction parameters from measured torques.
 ///
@@ -24,6 +24,21 @@ use crate::PlanarArm;
 /// the derive (docs/performance.md). `P` is the number of standard parameters, `B` of base
 /// parameters. docs/identification.md lists the parameters, compares the groupings with
 /// Gautier and Khalil's rules and gives operation counts.
+///
+/// **Spatial arms** (`#[derive(SpatialArm)]`) have ten standard parameters per link, in
+/// Pinocchio's order `m, mx, my, mz, xx, xy, yy, xz, yz, zz` (`m c` in the link's frame and
+/// the inertia about the link frame's origin in its axes: what Pinocchio's
+/// `computeJointTorqueRegressor` multiplies), then per joint `ia`, `fv`, `fc` where the arm
+/// has them, then the payload's ten in the tool frame (`mp`, ..., `zzp`). Their regressor is
+/// too large to multiply out, so the derive evaluates it exactly at rational points of the
+/// joints' circles (`cos q = (1 - t^2) / (1 + t^2)`, `sin q = 2 t / (1 + t^2)`), where its
+/// columns satisfy exactly the relations they satisfy everywhere, and eliminates on those
+/// exact rows, adding points until the result no longer changes. That needs exact geometry:
+/// rational lengths, axes and gravity, and angles whose cosine and sine are both rational
+/// (multiples of `pi/2`), as industrial arms have (the PUMA 560: 77 standard parameters with
+/// friction and a payload, 41 base, equal to the numeric rank of the regressor stacked over
+/// 40 random states; `tests/spatial_identification.rs`). Mass properties may be run-time
+/// parameters. Arms with run-time lengths or other angles get no `Identification`.
 ///
 /// ```
 /// use planar_arm::prelude::*;
@@ -49,7 +64,7 @@ use crate::PlanarArm;
 /// assert!((arm.regressor(&q, &qd, &qdd) * arm.standard_parameters() - tau).norm() < 1e-12);
 /// assert!((arm.base_regressor(&q, &qd, &qdd) * arm.base_parameters() - tau).norm() < 1e-12);
 /// ```
-pub trait Identification<const N: usize, const P: usize, const B: usize>: PlanarArm<N> {
+pub trait Identification<const N: usize, const P: usize, const B: usize>: Dynamics<N> {
     /// The standard parameters' names, in column order (`zz1`, `mx1`, `my1`, ..., `m1`, ...,
     /// `ia1`, `fv1`, `fc1`).
     const PARAMETERS: [&'static str; P];

@@ -128,7 +128,7 @@ struct Stretch {
 
 fn check<A, const N: usize, const P: usize, const B: usize>(arm: &A, rng: &mut Rng)
 where
-    A: Identification<N, P, B>,
+    A: Identification<N, P, B> + PlanarArm<N>,
 {
     let (theta, base) = (arm.standard_parameters(), arm.base_parameters());
     for _ in 0..50 {
@@ -426,7 +426,7 @@ fn identify<A, const N: usize, const P: usize, const B: usize>(
     rng: &mut Rng,
 ) -> (DVector<f64>, DVector<f64>, f64)
 where
-    A: Identification<N, P, B>,
+    A: Identification<N, P, B> + PlanarArm<N>,
 {
     let mut w = DMatrix::<f64>::zeros(states * N, B);
     let mut t = DVector::<f64>::zeros(states * N);

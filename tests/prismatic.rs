@@ -388,7 +388,7 @@ fn derivatives_of_mixed_arms_match_central_differences_of_the_reference() {
 
 fn check_identification<A, const N: usize, const P: usize, const B: usize>(arm: &A, rng: &mut Rng)
 where
-    A: Identification<N, P, B>,
+    A: Identification<N, P, B> + PlanarArm<N>,
 {
     let (theta, base) = (arm.standard_parameters(), arm.base_parameters());
     for _ in 0..30 {

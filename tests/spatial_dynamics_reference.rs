@@ -265,7 +265,11 @@ fn pendulum_and_slide_by_hand() {
     };
     for (q, qd, qdd) in [(0.3, 2.0, -1.0), (-2.0, -0.5, 4.0), (1.2, 0.0, 0.0)] {
         let want = (izz + m * l * l) * qdd + m * g0 * l * f64::cos(q);
-        let (q, qd, qdd) = (SVector::from([q]), SVector::from([qd]), SVector::from([qdd]));
+        let (q, qd, qdd) = (
+            SVector::from([q]),
+            SVector::from([qd]),
+            SVector::from([qdd]),
+        );
         let tau = reference::inverse_dynamics(&carried, &q, &qd, &qdd)[0];
         assert!((tau - want).abs() < 1e-13, "{tau} {want}");
         let t = reference::kinetic_energy(&carried, &q, &qd);

@@ -14,5 +14,6 @@ mod header;
 pub mod identification;
 pub mod paths;
 pub(crate) mod spatial;
+mod spatial_identification;
 mod tokens;
 mod traits;

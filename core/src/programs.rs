@@ -12,4 +12,5 @@ pub mod slp;
 pub(crate) mod spatial;
 pub(crate) mod spatial_composite;
 pub(crate) mod spatial_newton_euler;
+pub mod spatial_regressor;
 pub(crate) mod unrolled;

@@ -39,7 +39,7 @@ fn from_states(states: &[planar_arm::sim::State<3>], difference: bool, rng: &mut
         } else {
             s.qdd
         };
-        ((s.q, s.qd, qdd), s.tau + rng.noise(SIGMA))
+        ((s.q, s.qd, qdd), s.tau + rng.noise(&V3::repeat(SIGMA)))
     });
     let (states, measured): (Vec<(V3, V3, V3)>, Vec<V3>) = rows.unzip();
     Run {

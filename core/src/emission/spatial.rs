@@ -232,6 +232,7 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
         ..
     } = header;
     let (dynamics, body) = super::traits::split_dynamics(body);
+    let identification = super::spatial_identification::spatial_identification(arm, header)?;
     Ok(quote! {
         #[automatically_derived]
         #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
@@ -243,6 +244,7 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
         impl #impl_generics ::planar_arm::spatial::SpatialArm<#nn> for #ty #where_clause {
             #(#body)*
         }
+        #identification
     })
 }
 

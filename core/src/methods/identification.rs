@@ -11,7 +11,9 @@ use crate::programs::unrolled::{newton_euler_unit, Unit};
 use crate::slp::{Emit, Id, Input, Program};
 use regressor::{base_parameters_from_energies, standard_values, BaseParameters, Kind, Standard};
 
+mod modular;
 pub mod regressor;
+pub mod spatial;
 
 fn to_poly<C: Emit>(c: &C) -> Poly {
     c.parts()

@@ -175,17 +175,26 @@ fn inertial_load(
     (force, add(p, &about_com, &lever))
 }
 
-/// [`inverse_dynamics`]'s torques as nodes of `p`.
-pub(crate) fn newton_euler(
+/// A link's motion in its own axes: angular velocity `w` and acceleration `dw`, the
+/// acceleration `a` of its frame's origin (less gravity's), and `r`, from the point `A_i` on
+/// its joint's axis to that origin.
+pub(crate) struct Motion {
+    pub(crate) w: V3,
+    pub(crate) dw: V3,
+    pub(crate) a: V3,
+    pub(crate) r: V3,
+}
+
+/// The outward pass: every link's [`Motion`] with the rates, accelerations and gravity that
+/// `terms` keeps.
+pub(crate) fn motions(
     p: &mut Program,
     arm: &SpatialArmSpec,
+    joints: &[Joint],
     terms: Terms,
-    with_joint_terms: bool,
-) -> Vec<Id> {
-    let n = arm.joints.len();
+) -> Vec<Motion> {
     let zero = p.constant(int(0));
     let rate = |p: &mut Program, on: bool, input: Input| if on { p.input(input) } else { zero };
-    let joints: Vec<Joint> = (0..n).map(|j| Joint::new(p, arm, j)).collect();
     let (mut w, mut dw) = ([zero; 3], [zero; 3]);
     let mut a: V3 = if terms.gravity {
         core::array::from_fn(|k| {
@@ -195,8 +204,7 @@ pub(crate) fn newton_euler(
     } else {
         [zero; 3]
     };
-    // Outwards: each link's motion, and its inertial force and moment about its origin.
-    let mut loads = Vec::with_capacity(n);
+    let mut out = Vec::with_capacity(joints.len());
     for (j, joint) in joints.iter().enumerate() {
         let qd = rate(p, terms.rates, Input::Qd(j));
         let qdd = rate(p, terms.accelerations, Input::Qdd(j));
@@ -232,25 +240,29 @@ pub(crate) fn newton_euler(
         let carried_o = carried(p, &w, &dw, &r);
         let sum = add(p, &a_axis, &carried_o);
         a = add(p, &sum, &slide_terms);
-        let mut load: Option<(V3, V3)> = None;
-        for body in link_bodies(arm, j) {
-            let (f, m) = inertial_load(p, &body, &w, &dw, &a);
-            load = Some(match load {
-                None => (f, m),
-                Some((f0, m0)) => (add(p, &f0, &f), add(p, &m0, &m)),
-            });
-        }
-        let (force, moment) = load.unwrap_or_else(|| unreachable!("a link carries its own body"));
-        loads.push((force, moment, r));
+        out.push(Motion { w, dw, a, r });
     }
-    // Inwards: what each joint transmits, read on its axis.
+    out
+}
+
+/// The inward pass: the joint forces that carry each link's `loads` (force, and moment about
+/// its frame's origin, in its axes) and everything beyond it, read on each joint's axis.
+/// Links `last + 1..` carry nothing: the pass starts at `last`.
+pub(crate) fn transmitted(
+    p: &mut Program,
+    joints: &[Joint],
+    motions: &[Motion],
+    loads: &[(V3, V3)],
+    last: usize,
+) -> Vec<Id> {
+    let zero = p.constant(int(0));
     let (mut f_out, mut n_out) = ([zero; 3], [zero; 3]);
-    let mut torques = vec![zero; n];
-    for j in (0..n).rev() {
-        let (force, moment, r) = &loads[j];
+    let mut torques = vec![zero; joints.len()];
+    for j in (0..=last).rev() {
+        let (force, moment) = &loads[j];
         let f = add(p, force, &f_out);
         let n_origin = add(p, moment, &n_out);
-        let shift = cross(p, r, &f);
+        let shift = cross(p, &motions[j].r, &f);
         let n_axis = add(p, &n_origin, &shift);
         let joint = &joints[j];
         torques[j] = match joint.kind {
@@ -264,6 +276,36 @@ pub(crate) fn newton_euler(
             n_out = add(p, &back, &lever);
         }
     }
+    torques
+}
+
+/// [`inverse_dynamics`]'s torques as nodes of `p`.
+pub(crate) fn newton_euler(
+    p: &mut Program,
+    arm: &SpatialArmSpec,
+    terms: Terms,
+    with_joint_terms: bool,
+) -> Vec<Id> {
+    let n = arm.joints.len();
+    let joints: Vec<Joint> = (0..n).map(|j| Joint::new(p, arm, j)).collect();
+    let motions = motions(p, arm, &joints, terms);
+    // Each link's inertial force and moment about its origin, its payload's added.
+    let loads: Vec<(V3, V3)> = motions
+        .iter()
+        .enumerate()
+        .map(|(j, m)| {
+            let mut load: Option<(V3, V3)> = None;
+            for body in link_bodies(arm, j) {
+                let (f, t) = inertial_load(p, &body, &m.w, &m.dw, &m.a);
+                load = Some(match load {
+                    None => (f, t),
+                    Some((f0, t0)) => (add(p, &f0, &f), add(p, &t0, &t)),
+                });
+            }
+            load.unwrap_or_else(|| unreachable!("a link carries its own body"))
+        })
+        .collect();
+    let mut torques = transmitted(p, &joints, &motions, &loads, n - 1);
     for (j, spec) in arm.joints.iter().enumerate() {
         if with_joint_terms && terms.accelerations {
             let armature = p.poly(&spec.armature);

@@ -276,9 +276,16 @@ impl<C: Emit> BaseParameters<C> {
     /// `zz1 + ia1 + 9/16 m2 + ...`, or with run-time lengths `zz1 + l1^2 m2`.
     #[must_use]
     pub fn formula(&self, b: usize, parameters: &[Standard]) -> String {
+        let names: Vec<&str> = parameters.iter().map(|s| s.name.as_str()).collect();
+        self.formula_named(b, &names)
+    }
+
+    /// [`formula`](Self::formula) with the standard parameters' names given.
+    #[must_use]
+    pub fn formula_named(&self, b: usize, names: &[&str]) -> String {
         let mut s = String::new();
         for (k, (p, c)) in self.grouping[b].iter().enumerate() {
-            let name = &parameters[*p].name;
+            let name = names[*p];
             let (negative, mag) = c.sign_split();
             let sign = match (k, negative) {
                 (0, true) => "-",
@@ -376,10 +383,12 @@ fn axpy<C: Coefficient>(v: &Indexed<C>, a: &C, w: &Indexed<C>) -> Indexed<C> {
 /// coefficient is a nonzero number, so that every multiplier stays a polynomial; `None` if a
 /// vector that does not vanish has no such entry (the groupings would be rational functions).
 /// Over the rationals that is the first entry, as it always was.
-fn eliminate<C: Emit>(vectors: Vec<(usize, Sparse<C>)>) -> Option<BaseParameters<C>> {
+fn eliminate<K: Ord + Clone, C: Emit>(
+    vectors: Vec<(usize, BTreeMap<K, C>)>,
+) -> Option<BaseParameters<C>> {
     // Keys as integers: the elimination compares them constantly, and the engine runs
     // unoptimised in a user's build.
-    let mut keys: BTreeMap<Key, u32> = BTreeMap::new();
+    let mut keys: BTreeMap<K, u32> = BTreeMap::new();
     for (_, v) in &vectors {
         for key in v.keys() {
             let next = u32::try_from(keys.len()).unwrap_or(u32::MAX);

@@ -2,6 +2,7 @@
 //! longest chain of dependent operations and its operation count.
 
 use super::program::{children, Id, Input, Node, Program};
+use crate::algebra::residue::Prime;
 
 /// The latency of a division in units of an addition's or multiplication's (about 13-15
 /// cycles against 4 on current x86-64 cores).
@@ -71,6 +72,40 @@ impl Program {
             v.push(x);
         }
         v
+    }
+
+    /// Interprets the program modulo the prime `p`: `input` gives each input's residue,
+    /// `trig` each joint's `(cos q_j, sin q_j)` (a point of the circle modulo `p`), and
+    /// `opaque` a fresh residue for each node that is not a polynomial of its operands
+    /// (`sign`, `max`): a column of `sign(qd_i)` is then a value of its own, independent of
+    /// the others as the function is. `None` where an input has no residue or the program
+    /// divides by zero.
+    #[must_use]
+    pub fn eval_mod(
+        &self,
+        p: Prime,
+        input: &dyn Fn(Input) -> Option<u64>,
+        trig: &dyn Fn(usize) -> (u64, u64),
+        opaque: &mut dyn FnMut() -> u64,
+    ) -> Option<Vec<u64>> {
+        let mut v: Vec<u64> = Vec::with_capacity(self.nodes().len());
+        for node in self.nodes() {
+            let at = |id: Id| v[id.0 as usize];
+            let x = match *node {
+                Node::Input(i) => input(i)?,
+                Node::Const(ref r) => p.of(r)?,
+                Node::Sin(j) => trig(j).1,
+                Node::Cos(j) => trig(j).0,
+                Node::Add(a, b) => p.add(at(a), at(b)),
+                Node::Sub(a, b) => p.sub(at(a), at(b)),
+                Node::Mul(a, b) => p.mul(at(a), at(b)),
+                Node::Div(a, b) => p.mul(at(a), p.inv(at(b))?),
+                Node::Neg(a) => p.neg(at(a)),
+                Node::Max(..) | Node::Sign(_) => opaque(),
+            };
+            v.push(x);
+        }
+        Some(v)
     }
 
     /// How many live nodes use each node, for the given outputs.

@@ -1,0 +1,284 @@
+//! The joint-force regressor of a spatial arm, unrolled: `tau = Y(q, qd, qdd) theta`, with
+//! `theta` the standard parameters ([`SpatialParameter`]).
+//!
+//! A body held about a frame's origin by its mass `m`, first moment `h = m c` and inertia `J`
+//! about the origin (all in the frame's axes) needs the force `m a + dw x h + w x (w x h)` and
+//! the moment about the origin `J dw + w x J w + h x a`, both linear in `(m, h, J)`. Column `k`
+//! of link `i` is therefore the joint forces that carry the body whose parameters are all zero
+//! but parameter `k`, one: the outward pass (shared by every column) and the inward pass from
+//! link `i`, whose zeros fold away. The payload's ten parameters, in the tool frame, are a
+//! constant linear map of the last link's: `h = m p + R h_t`, `J = R J_t R^T + m (|p|^2 E -
+//! p p^T) + 2 (p . R h_t) E - p (R h_t)^T - (R h_t) p^T`.
+
+use crate::algebra::poly::Poly;
+use crate::algebra::ring::int;
+use crate::mechanics::spatial::frames::tool_frame;
+use crate::mechanics::spatial::spec::{SpatialArmSpec, SpatialBody};
+use crate::programs::method::Method;
+use crate::programs::spatial::cross;
+use crate::programs::spatial_newton_euler::{
+    add, motions, scale, transmitted, Joint, Motion, DESCRIPTION, V3,
+};
+use crate::programs::unrolled::Terms;
+use crate::slp::{Id, Input, Program};
+
+/// A body's ten standard parameters in Pinocchio's order: mass, first moment, then the inertia
+/// about the frame's origin `xx, xy, yy, xz, yz, zz`.
+pub const BODY_ENTRIES: [&str; 10] = ["m", "mx", "my", "mz", "xx", "xy", "yy", "xz", "yz", "zz"];
+
+/// Whose a standard parameter is and which one.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Entry {
+    /// Entry `k` of [`BODY_ENTRIES`] of link `i`'s body (0-based).
+    Link(usize, usize),
+    /// Entry `k` of the payload's, in the tool frame.
+    Payload(usize),
+    /// Joint `j`'s armature.
+    Armature(usize),
+    /// Joint `j`'s viscous friction (`damping`).
+    Damping(usize),
+    /// Joint `j`'s Coulomb friction (`frictionloss`).
+    Frictionloss(usize),
+}
+
+/// A standard parameter of a spatial arm.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SpatialParameter {
+    /// `m1`, `mx1`, .., `zz1`, `ia1`, `fv1`, `fc1`, `mp`, .., `zzp`.
+    pub name: String,
+    /// Which it is.
+    pub entry: Entry,
+}
+
+/// The arm's standard parameters in the regressor's column order: each link's ten, then per
+/// joint its armature, damping and frictionloss where it has them, then the payload's ten.
+#[must_use]
+pub fn standard_parameters(arm: &SpatialArmSpec) -> Vec<SpatialParameter> {
+    let mut out = Vec::new();
+    let n = arm.joints.len();
+    for i in 0..n {
+        for (k, e) in BODY_ENTRIES.iter().enumerate() {
+            out.push(SpatialParameter {
+                name: format!("{e}{}", i + 1),
+                entry: Entry::Link(i, k),
+            });
+        }
+    }
+    for (j, spec) in arm.joints.iter().enumerate() {
+        let terms = [
+            (&spec.armature, "ia", Entry::Armature(j)),
+            (&spec.damping, "fv", Entry::Damping(j)),
+            (&spec.frictionloss, "fc", Entry::Frictionloss(j)),
+        ];
+        for (value, prefix, entry) in terms {
+            if !crate::ring::Coefficient::is_zero(value) {
+                out.push(SpatialParameter {
+                    name: format!("{prefix}{}", j + 1),
+                    entry,
+                });
+            }
+        }
+    }
+    if arm.payload.is_some() {
+        for (k, e) in BODY_ENTRIES.iter().enumerate() {
+            out.push(SpatialParameter {
+                name: format!("{e}p"),
+                entry: Entry::Payload(k),
+            });
+        }
+    }
+    out
+}
+
+/// A body's standard parameters `[m, m cx, m cy, m cz, Jxx, Jxy, Jyy, Jxz, Jyz, Jzz]`, `J` the
+/// inertia about the frame's origin: `I + m (|c|^2 E - c c^T)`.
+#[must_use]
+pub fn body_parameters(body: &SpatialBody) -> [Poly; 10] {
+    let m = &body.mass;
+    let c = &body.com;
+    let [xx, yy, zz, xy, xz, yz] = body.inertia.clone();
+    let tensor = [
+        [xx, xy.clone(), xz.clone()],
+        [xy, yy, yz.clone()],
+        [xz, yz, zz],
+    ];
+    let c2 = c
+        .iter()
+        .fold(Poly::default(), |acc, x| acc + x.clone() * x.clone());
+    let j = |a: usize, b: usize| {
+        let mut shift = Poly::default() - c[a].clone() * c[b].clone();
+        if a == b {
+            shift = shift + c2.clone();
+        }
+        tensor[a][b].clone() + m.clone() * shift
+    };
+    [
+        m.clone(),
+        m.clone() * c[0].clone(),
+        m.clone() * c[1].clone(),
+        m.clone() * c[2].clone(),
+        j(0, 0),
+        j(0, 1),
+        j(1, 1),
+        j(0, 2),
+        j(1, 2),
+        j(2, 2),
+    ]
+}
+
+/// The standard parameters' values, exact (polynomials in run-time parameters).
+#[must_use]
+pub fn standard_values(arm: &SpatialArmSpec, parameters: &[SpatialParameter]) -> Vec<Poly> {
+    let links: Vec<[Poly; 10]> = arm
+        .joints
+        .iter()
+        .map(|j| body_parameters(&SpatialBody::of_link(j)))
+        .collect();
+    let payload = arm.payload.as_ref().map(body_parameters);
+    parameters
+        .iter()
+        .map(|s| match s.entry {
+            Entry::Link(i, k) => links[i][k].clone(),
+            Entry::Payload(k) => payload
+                .as_ref()
+                .map_or_else(Poly::default, |p| p[k].clone()),
+            Entry::Armature(j) => arm.joints[j].armature.clone(),
+            Entry::Damping(j) => arm.joints[j].damping.clone(),
+            Entry::Frictionloss(j) => arm.joints[j].frictionloss.clone(),
+        })
+        .collect()
+}
+
+/// The unit body of entry `k`: `(m, h, J)`, one entry one and the rest zero.
+fn unit_body(k: usize) -> (Poly, [Poly; 3], [[Poly; 3]; 3]) {
+    let one = || Poly::constant(int(1));
+    let mut m = Poly::default();
+    let mut h: [Poly; 3] = Default::default();
+    let mut j: [[Poly; 3]; 3] = Default::default();
+    match k {
+        0 => m = one(),
+        1..=3 => h[k - 1] = one(),
+        _ => {
+            let (a, b) = [(0, 0), (0, 1), (1, 1), (0, 2), (1, 2), (2, 2)][k - 4];
+            j[a][b] = one();
+            j[b][a] = one();
+        }
+    }
+    (m, h, j)
+}
+
+/// The payload's unit body of entry `k` (tool frame) moved into the last link's frame.
+fn payload_unit(arm: &SpatialArmSpec, k: usize) -> (Poly, [Poly; 3], [[Poly; 3]; 3]) {
+    let tool = tool_frame(arm);
+    let value = |e: &crate::expr::Expr<Poly>| e.constant_term().cloned().unwrap_or_default();
+    let r: [[Poly; 3]; 3] =
+        core::array::from_fn(|a| core::array::from_fn(|b| value(&tool.r[a][b])));
+    let p: [Poly; 3] = core::array::from_fn(|a| value(&tool.p[a]));
+    let (m, h_t, j_t) = unit_body(k);
+    let rh: [Poly; 3] = core::array::from_fn(|a| {
+        (0..3).fold(Poly::default(), |acc, b| {
+            acc + r[a][b].clone() * h_t[b].clone()
+        })
+    });
+    let h = core::array::from_fn(|a| m.clone() * p[a].clone() + rh[a].clone());
+    let p2 = p
+        .iter()
+        .fold(Poly::default(), |acc, x| acc + x.clone() * x.clone());
+    let p_rh = (0..3).fold(Poly::default(), |acc, a| acc + p[a].clone() * rh[a].clone());
+    let j = core::array::from_fn(|a| {
+        core::array::from_fn(|b| {
+            let mut e = Poly::default();
+            for x in 0..3 {
+                for y in 0..3 {
+                    e = e + r[a][x].clone() * j_t[x][y].clone() * r[b][y].clone();
+                }
+            }
+            e = e
+                - m.clone() * p[a].clone() * p[b].clone()
+                - p[a].clone() * rh[b].clone()
+                - rh[a].clone() * p[b].clone();
+            if a == b {
+                e = e + m.clone() * p2.clone() + p_rh.clone() + p_rh.clone();
+            }
+            e
+        })
+    });
+    (m, h, j)
+}
+
+/// The force and the moment about the origin that a body `(m, h, J)` needs in `motion`.
+fn standard_load(
+    p: &mut Program,
+    motion: &Motion,
+    (m, h, j): &(Poly, [Poly; 3], [[Poly; 3]; 3]),
+) -> (V3, V3) {
+    let m = p.poly(m);
+    let h: V3 = core::array::from_fn(|k| p.poly(&h[k]));
+    let j: [V3; 3] = core::array::from_fn(|a| core::array::from_fn(|b| p.poly(&j[a][b])));
+    let times = |p: &mut Program, v: &V3| -> V3 {
+        core::array::from_fn(|a| {
+            let terms: Vec<Id> = (0..3).map(|b| p.mul(j[a][b], v[b])).collect();
+            crate::programs::spatial::sum(p, &terms)
+        })
+    };
+    let (w, dw, a) = (&motion.w, &motion.dw, &motion.a);
+    let ma = scale(p, a, m);
+    let dwh = cross(p, dw, &h);
+    let wh = cross(p, w, &h);
+    let wwh = cross(p, w, &wh);
+    let f = add(p, &ma, &dwh);
+    let force = add(p, &f, &wwh);
+    let jdw = times(p, dw);
+    let jw = times(p, w);
+    let gyro = cross(p, w, &jw);
+    let ha = cross(p, &h, a);
+    let t = add(p, &jdw, &gyro);
+    (force, add(p, &t, &ha))
+}
+
+/// The regressor's columns `columns` (indices into `parameters`), row-major outputs
+/// `y{row}_{column}` (1-based, columns counted within `columns`).
+#[must_use]
+pub fn regressor(
+    arm: &SpatialArmSpec,
+    parameters: &[SpatialParameter],
+    columns: &[usize],
+) -> Method {
+    let n = arm.joints.len();
+    let mut p = Program::new();
+    let joints: Vec<Joint> = (0..n).map(|j| Joint::new(&mut p, arm, j)).collect();
+    let motions = motions(&mut p, arm, &joints, Terms::ALL);
+    let zero = p.constant(int(0));
+    let nothing = ([zero; 3], [zero; 3]);
+    let carrying = |p: &mut Program, link: usize, body: &(Poly, [Poly; 3], [[Poly; 3]; 3])| {
+        let mut loads = vec![nothing; n];
+        loads[link] = standard_load(p, &motions[link], body);
+        transmitted(p, &joints, &motions, &loads, link)
+    };
+    let on_row =
+        |j: usize, x: Id| -> Vec<Id> { (0..n).map(|i| if i == j { x } else { zero }).collect() };
+    let mut cols: Vec<Vec<Id>> = Vec::with_capacity(columns.len());
+    for &c in columns {
+        let col = match parameters[c].entry {
+            Entry::Link(i, k) => carrying(&mut p, i, &unit_body(k)),
+            Entry::Payload(k) => carrying(&mut p, n - 1, &payload_unit(arm, k)),
+            Entry::Armature(j) => on_row(j, p.input(Input::Qdd(j))),
+            Entry::Damping(j) => on_row(j, p.input(Input::Qd(j))),
+            Entry::Frictionloss(j) => {
+                let qd = p.input(Input::Qd(j));
+                on_row(j, p.sign(qd))
+            }
+        };
+        cols.push(col);
+    }
+    let mut outputs = Vec::with_capacity(n * columns.len());
+    for i in 0..n {
+        for (c, col) in cols.iter().enumerate() {
+            outputs.push((format!("y{}_{}", i + 1, c + 1), col[i]));
+        }
+    }
+    Method::new(p, outputs).described(&format!(
+        "{DESCRIPTION}: once per standard parameter, that parameter one and the others zero (the \
+         forces are linear in them), the motion of the links shared"
+    ))
+}
