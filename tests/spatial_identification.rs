@@ -220,3 +220,205 @@ fn a_change_in_the_null_space_leaves_every_base_parameter_unchanged() {
         assert!((yb * &g - &full).amax() < 1e-11 * full.amax().max(1.0));
     }
 }
+
+mod random_arms {
+    //! The engine's identification on random arms of exact geometry (1 to 6 joints in each
+    //! convention, slides, twists and URDF rotations by multiples of pi/2, axes of rational
+    //! length, a payload at a turned tool frame, armature and friction on some joints): the
+    //! number of base parameters is the numeric rank of the regressor stacked over random
+    //! states, and `Y theta` and `Y_b theta_b` are the engine's inverse dynamics (which
+    //! `spatial_engine_vs_reference.rs` checks against the reference).
+
+    use planar_arm::nalgebra::DMatrix;
+    use planar_arm::symbolic::ring::{ratio, to_f64};
+    use planar_arm::symbolic::slp::Input;
+    use planar_arm::symbolic::spatial::{
+        identification, regressor, standard_values, unit_axis, FixedAngle, SpatialArmSpec,
+        SpatialBody, SpatialDerived, SpatialGeometry, SpatialJointSpec,
+    };
+    use planar_arm::symbolic::{JointKind, Poly};
+    use proptest::prelude::*;
+
+    #[derive(Clone, Debug)]
+    struct JointDraw {
+        prismatic: bool,
+        lengths: [i64; 3],
+        turns: [i64; 3],
+        axis: usize,
+        mass: [i64; 10],
+        terms: [bool; 3],
+    }
+
+    /// Axes whose length is rational.
+    const AXES: [[i64; 3]; 6] = [
+        [0, 0, 1],
+        [1, 0, 0],
+        [0, -1, 0],
+        [1, 2, 2],
+        [2, -3, 6],
+        [0, 3, 4],
+    ];
+
+    fn joint() -> impl Strategy<Value = JointDraw> {
+        (
+            proptest::bool::weighted(0.3),
+            [-8i64..=8, -8i64..=8, -8i64..=8],
+            [0i64..4, 0i64..4, 0i64..4],
+            0usize..6,
+            [
+                1i64..=9,
+                -5i64..=5,
+                -5i64..=5,
+                -5i64..=5,
+                1i64..=9,
+                1i64..=9,
+                1i64..=9,
+                -2i64..=2,
+                -2i64..=2,
+                -2i64..=2,
+            ],
+            [any::<bool>(), any::<bool>(), any::<bool>()],
+        )
+            .prop_map(|(prismatic, lengths, turns, axis, mass, terms)| JointDraw {
+                prismatic,
+                lengths,
+                turns,
+                axis,
+                mass,
+                terms,
+            })
+    }
+
+    fn turn(k: i64) -> FixedAngle {
+        FixedAngle::pi(ratio(k, 2))
+    }
+
+    fn body(m: &[i64; 10]) -> SpatialBody {
+        SpatialBody {
+            mass: Poly::constant(ratio(m[0], 4)),
+            com: [1, 2, 3].map(|k| Poly::constant(ratio(m[k], 10))),
+            inertia: [4, 5, 6, 7, 8, 9].map(|k| Poly::constant(ratio(m[k], 100))),
+        }
+    }
+
+    fn spec(
+        convention: u8,
+        joints: &[JointDraw],
+        payload: Option<&JointDraw>,
+        tool: ([i64; 3], [i64; 3]),
+        gravity: [i64; 3],
+    ) -> SpatialArmSpec {
+        let eighths = |k: i64| Poly::constant(ratio(k, 8));
+        let joints = joints
+            .iter()
+            .map(|j| {
+                let [l0, l1, l2] = j.lengths;
+                let [t0, t1, t2] = j.turns;
+                let geometry = match convention {
+                    0 => SpatialGeometry::Dh {
+                        a: eighths(l0),
+                        alpha: turn(t0),
+                        d: eighths(l1),
+                        theta: turn(t1),
+                    },
+                    1 => SpatialGeometry::Mdh {
+                        a: eighths(l0),
+                        alpha: turn(t0),
+                        d: eighths(l1),
+                        theta: turn(t1),
+                    },
+                    _ => SpatialGeometry::Urdf {
+                        xyz: [eighths(l0), eighths(l1), eighths(l2)],
+                        rpy: [turn(t0), turn(t1), turn(t2)],
+                        axis: unit_axis(&AXES[j.axis].map(|k| ratio(k, 1))),
+                    },
+                };
+                let b = body(&j.mass);
+                let term = |on: bool, k: i64| Poly::constant(ratio(if on { k } else { 0 }, 10));
+                SpatialJointSpec {
+                    geometry,
+                    kind: if j.prismatic {
+                        JointKind::Prismatic
+                    } else {
+                        JointKind::Revolute
+                    },
+                    mass: b.mass,
+                    com: b.com,
+                    inertia: b.inertia,
+                    range: None,
+                    armature: term(j.terms[0], 3),
+                    damping: term(j.terms[1], 5),
+                    frictionloss: term(j.terms[2], 7),
+                }
+            })
+            .collect();
+        SpatialArmSpec {
+            joints,
+            gravity: gravity.map(|k| Poly::constant(ratio(k, 1))),
+            tool_xyz: tool.0.map(eighths),
+            tool_rpy: tool.1.map(turn),
+            payload: payload.map(|p| body(&p.mass)),
+        }
+    }
+
+    fn value(p: &Poly) -> f64 {
+        to_f64(&p.as_rational().expect("a number")).expect("small")
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+        #[test]
+        fn base_parameters_match_the_numeric_rank_and_reproduce_the_torques(
+            convention in 0u8..3,
+            joints in proptest::collection::vec(joint(), 1..=6),
+            payload in proptest::option::weighted(0.5, joint()),
+            tool in ([-4i64..=4, -4i64..=4, -4i64..=4], [0i64..4, 0i64..4, 0i64..4]),
+            gravity in [-10i64..=10, -10i64..=10, -10i64..=10],
+            states in proptest::collection::vec(-3.0f64..3.0, 30 * 18),
+        ) {
+            let arm = spec(convention, &joints, payload.as_ref(), tool, gravity);
+            let n = arm.joints.len();
+            let id = identification(&arm).expect("exact geometry");
+            let p = id.parameters.len();
+            let all: Vec<usize> = (0..p).collect();
+            let y_method = regressor(&arm, &id.parameters, &all);
+            let yb_method = regressor(&arm, &id.parameters, &id.base.columns);
+            let tau_method = SpatialDerived::new(&arm).inverse_dynamics;
+            let theta: Vec<f64> = standard_values(&arm, &id.parameters).iter().map(value).collect();
+            let base: Vec<f64> = id
+                .base
+                .grouping
+                .iter()
+                .map(|g| g.iter().map(|(k, c)| theta[*k] * to_f64(c).unwrap()).sum())
+                .collect();
+            let b = base.len();
+            let mut stacked = DMatrix::<f64>::zeros(30 * n, p);
+            let mut worst: f64 = 0.0;
+            for (s, x) in states.chunks(18).enumerate() {
+                let input = |i: Input| match i {
+                    Input::Q(j) => x[j],
+                    Input::Qd(j) => x[6 + j],
+                    Input::Qdd(j) => x[12 + j],
+                    _ => f64::NAN,
+                };
+                let y = y_method.eval(&input);
+                let yb = yb_method.eval(&input);
+                let tau = tau_method.eval(&input);
+                let scale = tau.iter().fold(1.0_f64, |m, t| m.max(t.abs()));
+                for i in 0..n {
+                    let full: f64 = (0..p).map(|k| y[i * p + k] * theta[k]).sum();
+                    let reduced: f64 = (0..b).map(|k| yb[i * b + k] * base[k]).sum();
+                    worst = worst.max((full - tau[i]).abs() / scale).max((reduced - tau[i]).abs() / scale);
+                    for k in 0..p {
+                        stacked[(s * n + i, k)] = y[i * p + k];
+                    }
+                }
+            }
+            prop_assert!(worst < 1e-11, "Y theta or Y_b theta_b off by {worst:e}");
+            let sv = stacked.svd(false, false).singular_values;
+            let top = sv.max();
+            let rank = sv.iter().filter(|s| **s > 1e-9 * top).count();
+            prop_assert_eq!(b, rank);
+        }
+    }
+}

@@ -82,7 +82,13 @@ pub use programs::{christoffel, derivative, frozen, slp};
 pub mod spatial {
     pub use crate::emission::spatial::generate_spatial;
     pub use crate::mechanics::spatial::*;
+    pub use crate::methods::identification::spatial::{
+        exact_geometry, identification, SpatialIdentification,
+    };
     pub use crate::methods::spatial::{SpatialDerived, SpatialForm};
+    pub use crate::programs::spatial_regressor::{
+        regressor, standard_parameters, standard_values, Entry, SpatialParameter, BODY_ENTRIES,
+    };
 }
 
 // Re-exports, not copies, in the docs: each item's page stays in its module.
