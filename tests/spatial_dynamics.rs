@@ -286,3 +286,106 @@ fn a_payload_is_the_last_link_carrying_it() {
     assert!(empty.gravity(&q)[1].abs() < 1e-15);
     assert!((empty.mass_matrix(&q)[(1, 1)] - (0.05 + 0.03)).abs() < 1e-15);
 }
+
+/// `FreePuma` in modified Denavit-Hartenberg parameters: link i's frame sits on joint i's axis,
+/// `Tx(a_i) Rx(alpha_i)` before the standard one, so each centre of mass `c` becomes
+/// `Rx(alpha_i) c + (a_i, 0, 0)` and each tensor `Rx I Rx^T` (a quarter turn about x swaps
+/// the diagonal tensors' yy and zz).
+#[derive(SpatialArm, Default)]
+#[arm(gravity = (0, 0, -9.81))]
+struct FreePumaMdh {
+    #[arm(mdh(a = 0, alpha = 0, d = 0), inertia(zz = 0.35), armature = 0.2)]
+    waist: Revolute,
+    #[arm(mdh(a = 0, alpha = pi/2, d = 0), mass = 17.4, com = (0.068, 0.006, 0.2275),
+          inertia(xx = 0.13, yy = 0.524, zz = 0.539), armature = 0.2)]
+    shoulder: Revolute,
+    #[arm(mdh(a = 0.4318, alpha = 0, d = 0.15005), mass = 4.8, com = (0, 0.07, 0.0141),
+          inertia(xx = 0.066, yy = 0.0125, zz = 0.086), armature = 0.1)]
+    elbow: Revolute,
+    #[arm(mdh(a = 0.0203, alpha = -pi/2, d = 0.4318), mass = 0.82, com = (0, 0, 0.019),
+          inertia(xx = 1.8e-3, yy = 1.8e-3, zz = 1.3e-3))]
+    wrist1: Revolute,
+    #[arm(mdh(a = 0, alpha = pi/2, d = 0), mass = 0.34, inertia(xx = 0.3e-3, yy = 0.3e-3, zz = 0.4e-3))]
+    wrist2: Revolute,
+    #[arm(mdh(a = 0, alpha = -pi/2, d = 0), mass = 0.09, com = (0, 0, 0.032),
+          inertia(xx = 0.15e-3, yy = 0.15e-3, zz = 0.04e-3))]
+    wrist3: Revolute,
+}
+
+/// The same as URDF joints: `Rx(alpha) Tx(a) Tz(d) = T(a, -d sin alpha, d cos alpha) Rx(alpha)`,
+/// so each child frame is the modified parameters' link frame and keeps its mass properties.
+#[derive(SpatialArm, Default)]
+#[arm(gravity = (0, 0, -9.81))]
+struct FreePumaUrdf {
+    #[arm(origin(xyz = (0, 0, 0)), inertia(zz = 0.35), armature = 0.2)]
+    waist: Revolute,
+    #[arm(origin(rpy = (pi/2, 0, 0)), mass = 17.4, com = (0.068, 0.006, 0.2275),
+          inertia(xx = 0.13, yy = 0.524, zz = 0.539), armature = 0.2)]
+    shoulder: Revolute,
+    #[arm(origin(xyz = (0.4318, 0, 0.15005)), mass = 4.8, com = (0, 0.07, 0.0141),
+          inertia(xx = 0.066, yy = 0.0125, zz = 0.086), armature = 0.1)]
+    elbow: Revolute,
+    #[arm(origin(xyz = (0.0203, 0.4318, 0), rpy = (-pi/2, 0, 0)), mass = 0.82, com = (0, 0, 0.019),
+          inertia(xx = 1.8e-3, yy = 1.8e-3, zz = 1.3e-3))]
+    wrist1: Revolute,
+    #[arm(origin(rpy = (pi/2, 0, 0)), mass = 0.34, inertia(xx = 0.3e-3, yy = 0.3e-3, zz = 0.4e-3))]
+    wrist2: Revolute,
+    #[arm(origin(rpy = (-pi/2, 0, 0)), mass = 0.09, com = (0, 0, 0.032),
+          inertia(xx = 0.15e-3, yy = 0.15e-3, zz = 0.04e-3))]
+    wrist3: Revolute,
+}
+
+#[test]
+fn the_three_conventions_give_one_pumas_dynamics() {
+    let (dh, mdh, urdf) = (
+        FreePuma::default(),
+        FreePumaMdh::default(),
+        FreePumaUrdf::default(),
+    );
+    let mut worst: f64 = 0.0;
+    for k in 0..20 {
+        let t = f64::from(k);
+        let q = V6::from_fn(|i, _| (0.7 * t + i as f64).sin() * 2.5);
+        let qd = V6::from_fn(|i, _| (1.3 * t - i as f64).cos() * 2.0);
+        let qdd = V6::from_fn(|i, _| (0.4 * t * (i as f64 + 1.0)).sin() * 3.0);
+        let reference = [
+            dh.mass_matrix(&q).as_slice().to_vec(),
+            dh.coriolis(&q, &qd).as_slice().to_vec(),
+            dh.gravity(&q).as_slice().to_vec(),
+            dh.inverse_dynamics(&q, &qd, &qdd).as_slice().to_vec(),
+        ];
+        let others = [
+            [
+                mdh.mass_matrix(&q).as_slice().to_vec(),
+                mdh.coriolis(&q, &qd).as_slice().to_vec(),
+                mdh.gravity(&q).as_slice().to_vec(),
+                mdh.inverse_dynamics(&q, &qd, &qdd).as_slice().to_vec(),
+            ],
+            [
+                urdf.mass_matrix(&q).as_slice().to_vec(),
+                urdf.coriolis(&q, &qd).as_slice().to_vec(),
+                urdf.gravity(&q).as_slice().to_vec(),
+                urdf.inverse_dynamics(&q, &qd, &qdd).as_slice().to_vec(),
+            ],
+        ];
+        for other in &others {
+            for (a, b) in reference.iter().zip(other) {
+                let scale = a.iter().fold(1.0_f64, |m, x| m.max(x.abs()));
+                for (x, y) in a.iter().zip(b) {
+                    worst = worst.max((x - y).abs() / scale);
+                }
+            }
+        }
+    }
+    assert!(worst < 1e-12, "the conventions differ by {worst:e}");
+    // The same base parameters, found from each convention's own regressor: the groupings
+    // differ with the frames, the count does not.
+    assert_eq!(
+        FreePuma::base_parameter_names().len(),
+        FreePumaMdh::base_parameter_names().len()
+    );
+    assert_eq!(
+        FreePumaMdh::base_parameter_names(),
+        FreePumaUrdf::base_parameter_names()
+    );
+}
