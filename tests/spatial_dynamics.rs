@@ -389,3 +389,58 @@ fn the_three_conventions_give_one_pumas_dynamics() {
         FreePumaUrdf::base_parameter_names()
     );
 }
+
+/// A pan-tilt head: a turn about the vertical, a tilt about a horizontal axis, a point mass
+/// `m = 2` at `l = 1/2` along the tilted arm: `p = l (cos q1 cos q2, sin q1 cos q2, sin q2)`.
+#[derive(SpatialArm, Default)]
+#[arm(gravity = (0, 0, -9.81))]
+struct PanTilt {
+    #[arm(dh(a = 0, alpha = pi/2, d = 0))]
+    pan: Revolute,
+    #[arm(dh(a = 0.5, alpha = 0, d = 0), mass = 2)]
+    tilt: Revolute,
+}
+
+#[test]
+fn a_small_arms_mass_matrix_and_coriolis_forces_are_multiplied_out_exactly() {
+    use planar_arm::exact::eval;
+    let expansion = PanTilt::EXACT
+        .expansion
+        .expect("two right-angle joints multiply out");
+    let (m, c) = (
+        expansion.mass_matrix.expect("M is small"),
+        expansion.coriolis.expect("c is small"),
+    );
+    // By hand: T = m l^2 (cos^2 q2 qd1^2 + qd2^2) / 2, so M = diag(m l^2 cos^2 q2, m l^2),
+    // c1 = -2 m l^2 sin q2 cos q2 qd1 qd2, c2 = m l^2 sin q2 cos q2 qd1^2.
+    let ml2 = 2.0 * 0.25;
+    for k in 0..10 {
+        let t = f64::from(k);
+        let (q, qd) = (
+            [0.3 * t, (0.7 * t).sin() * 1.4],
+            [1.0 - 0.3 * t, (1.1 * t).cos()],
+        );
+        let (s2, c2) = q[1].sin_cos();
+        let want_m = [[ml2 * c2 * c2, 0.0], [0.0, ml2]];
+        let want_c = [
+            -2.0 * ml2 * s2 * c2 * qd[0] * qd[1],
+            ml2 * s2 * c2 * qd[0] * qd[0],
+        ];
+        for i in 0..2 {
+            for j in 0..2 {
+                assert!((eval(m[i][j], &q, &[]) - want_m[i][j]).abs() < 1e-15);
+            }
+            assert!((eval(c[i], &q, &qd) - want_c[i]).abs() < 1e-14);
+        }
+    }
+    // Exact rational coefficients: M11 = 1/4 + 1/4 cos(2 q2).
+    let text = PanTilt::EXACT.to_string();
+    for line in [
+        "M11 = 1/4 + 1/4 cos(2 q2)",
+        "M22 = 1/2",
+        "c1 = -1/2 sin(2 q2) qd1 qd2",
+        "c2 = 1/4 sin(2 q2) qd1^2",
+    ] {
+        assert!(text.lines().any(|l| l == line), "{line} not in\n{text}");
+    }
+}

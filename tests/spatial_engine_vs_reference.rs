@@ -15,7 +15,7 @@ use planar_arm::reference::spatial as reference;
 use planar_arm::spatial::{JointGeometry, SpatialJoint, SpatialLink, SpatialModel};
 use planar_arm::symbolic::methods::Method;
 use planar_arm::symbolic::ring::{ratio, to_f64, Rational};
-use planar_arm::symbolic::slp::Input;
+use planar_arm::symbolic::slp::{Input, Program};
 use planar_arm::symbolic::spatial::{
     unit_axis, FixedAngle, SpatialArmSpec, SpatialBody, SpatialDerived, SpatialForm,
     SpatialGeometry, SpatialJointSpec,
@@ -406,6 +406,43 @@ fn compare<const N: usize>(d: &ArmDraw, derived: &SpatialDerived) -> Result<(), 
             prop_assert!(
                 (got - expected[(i, j)]).abs() < 1e-12 * scale,
                 "M{i}{j}: {got} vs {expected}"
+            );
+        }
+    }
+    // M and c multiplied out from the Lagrangian, where the engine expands them.
+    if let Some(dynamics) = &derived.dynamics {
+        let mut p = Program::new();
+        let mut rows = Vec::new();
+        for i in 0..N {
+            for j in 0..N {
+                rows.push((
+                    format!("m{}{}", i + 1, j + 1),
+                    p.expr(&dynamics.mass_matrix[i][j]),
+                ));
+            }
+            rows.push((format!("c{}", i + 1), p.expr(&dynamics.coriolis[i])));
+        }
+        let method = Method {
+            program: p,
+            outputs: rows,
+            evaluation: String::new(),
+        };
+        let got = outputs_at(&method, qs, qd.as_slice(), &[], reach);
+        let m = reference::mass_matrix(&model, &q);
+        let c = reference::coriolis(&model, &q, &qd);
+        let (scale_m, scale_c) = (1.0 + m.amax(), 1.0 + c.amax());
+        for i in 0..N {
+            for j in 0..N {
+                let x = got[&format!("m{}{}", i + 1, j + 1)];
+                prop_assert!(
+                    (x - m[(i, j)]).abs() < 1e-12 * scale_m,
+                    "expanded M{i}{j}: {x} vs {m}"
+                );
+            }
+            let x = got[&format!("c{}", i + 1)];
+            prop_assert!(
+                (x - c[i]).abs() < 1e-12 * scale_c,
+                "expanded c{i}: {x} vs {c}"
             );
         }
     }

@@ -645,6 +645,12 @@ pub struct SpatialExpansion<const N: usize> {
     pub potential_energy: Terms,
     /// The gravity torques g(q) = dV/dq.
     pub gravity: [Terms; N],
+    /// The mass matrix M(q), row-major (both triangles), from the kinetic energy written in
+    /// each link's own axes; `None` where it would exceed the budget or an exact coefficient
+    /// would not fit the `i128` of this data.
+    pub mass_matrix: Option<[[Terms; N]; N]>,
+    /// The velocity-product forces c(q, qd), with `mass_matrix`.
+    pub coriolis: Option<[Terms; N]>,
 }
 
 /// The coefficient of the first term (no rates, no run-time parameter) whose atom is `1`

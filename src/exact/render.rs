@@ -252,7 +252,8 @@ fn derivation<const N: usize>(
 }
 
 /// The spatial derivation: the tool pose's rotation `R11 .. R33` and position `p1 .. p3`, V,
-/// then `g1 .. gN`.
+/// `g1 .. gN`, then where they were multiplied out `M11 .. MNN` (upper triangle) and
+/// `c1 .. cN`.
 fn spatial_derivation<const N: usize>(
     f: &mut Formatter<'_>,
     d: &SpatialDerivation<N>,
@@ -288,15 +289,31 @@ fn spatial_derivation<const N: usize>(
         line(f, &Named("p", sub(i, None)), &d.tip[i][3], false)?;
     }
     line(f, &"V", &d.potential_energy, N == 0)?;
+    let dynamics = d.mass_matrix.as_ref().zip(d.coriolis.as_ref());
     for i in 0..N {
-        line(f, &Named("g", sub(i, None)), &d.gravity[i], i + 1 == N)?;
+        line(
+            f,
+            &Named("g", sub(i, None)),
+            &d.gravity[i],
+            i + 1 == N && dynamics.is_none(),
+        )?;
+    }
+    if let Some((m, c)) = dynamics {
+        for i in 0..N {
+            for j in i..N {
+                line(f, &Named("M", sub(i, Some(j))), &m[i][j], false)?;
+            }
+        }
+        for i in 0..N {
+            line(f, &Named("c", sub(i, None)), &c[i], i + 1 == N)?;
+        }
     }
     f.write_str(close)
 }
 
 impl<const N: usize> Display for SpatialDerivation<N> {
-    /// `R11 = ...` to `R33`, `p1 = ...` to `p3` (the tool pose), `V = ...`, `g1 = ...`, a line
-    /// each.
+    /// `R11 = ...` to `R33`, `p1 = ...` to `p3` (the tool pose), `V = ...`, `g1 = ...`, then
+    /// `M11 = ...` (upper triangle) and `c1 = ...` where they were multiplied out, a line each.
     fn fmt(&self, f: &mut Formatter<'_>) -> fmt::Result {
         spatial_derivation(f, self, Style::Plain)
     }

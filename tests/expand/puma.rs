@@ -286,6 +286,8 @@ Cost: 212 multiplications, 172 additions, 0 divisions, 5 sin_cos pairs.*/
     }
     /**The mass matrix M(q), each joint's armature on its diagonal.
 
+Not multiplied out for this arm: a link's velocities would exceed 80 terms, and the products that M and c need would cost its build more than they are worth (`EXACT` has its tool pose, V and g where those fit; `planar_arm::symbolic::spatial::lagrangian::expand_dynamics`, feature `symbolic`, multiplies M and c out for any budget).
+
 the composite-rigid-body algorithm unrolled, each link in its own frame, the joints' constant transformations folded in
 
 Cost: 155 multiplications, 166 additions, 0 divisions, 5 sin_cos pairs.*/
@@ -456,6 +458,8 @@ Cost: 155 multiplications, 166 additions, 0 divisions, 5 sin_cos pairs.*/
         ])
     }
     /**The velocity-product (Coriolis and centrifugal) forces c(q, qd).
+
+Not multiplied out for this arm: a link's velocities would exceed 80 terms, and the products that M and c need would cost its build more than they are worth (`EXACT` has its tool pose, V and g where those fit; `planar_arm::symbolic::spatial::lagrangian::expand_dynamics`, feature `symbolic`, multiplies M and c out for any budget).
 
 the recursive Newton-Euler algorithm unrolled, each link in its own frame, the joints' constant transformations folded in
 
@@ -3093,6 +3097,8 @@ Cost: 57 multiplications, 44 additions, 0 divisions, 5 sin_cos pairs.*/
                     ),
                     ::planar_arm::__private::terms(b"", __NAMES),
                 ],
+                mass_matrix: ::core::option::Option::None,
+                coriolis: ::core::option::Option::None,
             }),
         }
     };

@@ -18,9 +18,8 @@ use crate::slp::Emit;
 pub fn long_formula_doc(title: &str, terms: usize) -> String {
     format!(
         "{title}\n\nThe exact formulas have {terms} terms, more than the {DOC_TERMS} shown \
-         in the documentation; `PlanarArm::EXACT` holds M, c, g, T and V exactly \
-         (each entry prints with `Display`), and `planar_arm::symbolic` (feature \
-         `symbolic`) derives them."
+         in the documentation; the arm's `EXACT` holds them exactly (each entry prints with \
+         `Display`), and `planar_arm::symbolic` (feature `symbolic`) derives them."
     )
 }
 

@@ -11,6 +11,7 @@ use crate::emission::header::Header;
 use crate::emit::{coefficient_tokens, f64_tokens, formula_doc, local, EmitError};
 use crate::expr::Expr;
 use crate::mechanics::spatial::frames::EXPANSION_BUDGET;
+use crate::mechanics::spatial::lagrangian::DYNAMICS_BUDGET;
 use crate::mechanics::spatial::{
     decouple, Decoupling, FixedAngle, SpatialArmSpec, SpatialBody, SpatialGeometry,
 };
@@ -148,7 +149,11 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
         "mass_matrix",
         vec![q],
         mm.clone(),
-        "The mass matrix M(q), each joint's armature on its diagonal.".to_string(),
+        dynamics_doc(
+            "The mass matrix M(q), each joint's armature on its diagonal.",
+            &d,
+            true,
+        ),
         d.mass_matrix.clone(),
         Box::new(move |ids| matrix(n, n, ids)),
     ));
@@ -156,7 +161,11 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
         "coriolis",
         vec![q, qd],
         v.clone(),
-        "The velocity-product (Coriolis and centrifugal) forces c(q, qd).".to_string(),
+        dynamics_doc(
+            "The velocity-product (Coriolis and centrifugal) forces c(q, qd).",
+            &d,
+            false,
+        ),
         d.coriolis.clone(),
         Box::new(vector),
     ));
@@ -289,6 +298,38 @@ fn isometry(ids: &[proc_macro2::Ident]) -> TokenStream {
 }
 
 /// A method's documentation when its formulas were not multiplied out.
+/// The docs of `mass_matrix` (`mass`) or `coriolis`: the formulas where they were multiplied
+/// out and fit ([`formula_doc`]), else where to find them.
+fn dynamics_doc(title: &str, d: &SpatialDerived, mass: bool) -> String {
+    let Some(dynamics) = &d.dynamics else {
+        return format!(
+            "{title}\n\nNot multiplied out for this arm: a link's velocities would exceed \
+             {DYNAMICS_BUDGET} terms, and the products that M and c need would cost its build \
+             more than they are worth (`EXACT` has its tool pose, V and g where those fit; \
+             `planar_arm::symbolic::spatial::lagrangian::expand_dynamics`, feature `symbolic`, \
+             multiplies M and c out for any budget)."
+        );
+    };
+    let rows: Vec<(String, &Expr<Poly>)> = if mass {
+        let n = dynamics.mass_matrix.len();
+        (0..n)
+            .flat_map(|i| (i..n).map(move |j| (i, j)))
+            .map(|(i, j)| (format!("M{}{}", i + 1, j + 1), &dynamics.mass_matrix[i][j]))
+            .collect()
+    } else {
+        dynamics
+            .coriolis
+            .iter()
+            .enumerate()
+            .map(|(i, e)| (format!("c{}", i + 1), e))
+            .collect()
+    };
+    formula_doc(
+        &format!("{title} Multiplied out from the kinetic energy (also in `EXACT`):"),
+        &rows,
+    )
+}
+
 fn unexpanded_doc(title: &str) -> String {
     format!(
         "{title}\n\nEvaluated as the product of the joints' transformations: multiplied out, \
@@ -326,6 +367,45 @@ fn exact(n: usize, d: &SpatialDerived) -> Result<TokenStream, EmitError> {
         .iter()
         .map(&mut terms)
         .collect::<Result<Vec<_>, _>>()?;
+    // M and c are long; a coefficient that does not fit the i128 of `EXACT` leaves them out
+    // rather than failing the derive.
+    let (mass_matrix, coriolis) = match &d.dynamics {
+        Some(dynamics) => {
+            let mut extra = names.clone();
+            let mut terms = |e: &Expr<Poly>| -> Result<TokenStream, EmitError> {
+                let code = Literal::byte_string(&crate::compact::encode(e, &mut extra)?);
+                let table = local("NAMES");
+                Ok(quote!(::planar_arm::__private::terms(#code, #table)))
+            };
+            let rows: Result<Vec<TokenStream>, EmitError> = dynamics
+                .mass_matrix
+                .iter()
+                .map(|row| {
+                    let row = row.iter().map(&mut terms).collect::<Result<Vec<_>, _>>()?;
+                    Ok(quote!([#(#row),*]))
+                })
+                .collect();
+            let c: Result<Vec<TokenStream>, EmitError> =
+                dynamics.coriolis.iter().map(&mut terms).collect();
+            match (rows, c) {
+                (Ok(rows), Ok(c)) => {
+                    names = extra;
+                    (
+                        quote!(::core::option::Option::Some([#(#rows),*])),
+                        quote!(::core::option::Option::Some([#(#c),*])),
+                    )
+                }
+                _ => (
+                    quote!(::core::option::Option::None),
+                    quote!(::core::option::Option::None),
+                ),
+            }
+        }
+        None => (
+            quote!(::core::option::Option::None),
+            quote!(::core::option::Option::None),
+        ),
+    };
     let table = local("NAMES");
     let names = names.iter().map(|n| n.trim_start_matches("r#"));
     Ok(quote! {
@@ -336,6 +416,8 @@ fn exact(n: usize, d: &SpatialDerived) -> Result<TokenStream, EmitError> {
                     tip: [#(#rows),*],
                     potential_energy: #v,
                     gravity: [#(#g),*],
+                    mass_matrix: #mass_matrix,
+                    coriolis: #coriolis,
                 }),
             }
         };

@@ -4,6 +4,7 @@
 
 mod decoupling;
 pub mod frames;
+pub mod lagrangian;
 pub mod spec;
 
 pub use decoupling::{decouple, DecoupledGeometry, Decoupling};

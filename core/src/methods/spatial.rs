@@ -6,6 +6,9 @@ use crate::algebra::expr::Expr;
 use crate::algebra::poly::Poly;
 use crate::mechanics::planar::JointKind;
 use crate::mechanics::spatial::frames::{SpatialKinematics, EXPANSION_BUDGET};
+use crate::mechanics::spatial::lagrangian::{
+    expand_dynamics, SpatialDynamicsExpansion, DYNAMICS_BUDGET,
+};
 use crate::mechanics::spatial::spec::SpatialArmSpec;
 use crate::programs::method::Method;
 use crate::programs::spatial as product;
@@ -46,6 +49,9 @@ pub struct SpatialDerived {
     pub coriolis_matrix: Method,
     /// `(dtau/dq, dtau/dqd)`, row-major each, where the program stays small.
     pub inverse_dynamics_derivatives: Option<Method>,
+    /// M and c multiplied out from the Lagrangian, for `EXACT` and the docs; `None` where the
+    /// kinematics is not expanded or they would exceed [`DYNAMICS_BUDGET`].
+    pub dynamics: Option<SpatialDynamicsExpansion>,
 }
 
 impl SpatialDerived {
@@ -55,8 +61,12 @@ impl SpatialDerived {
         kinematics: Option<SpatialKinematics>,
         [tip_pose, link_poses, jacobian, gravity, potential_energy]: [Method; 5],
     ) -> Self {
+        let dynamics = kinematics
+            .as_ref()
+            .and_then(|_| expand_dynamics(arm, DYNAMICS_BUDGET));
         Self {
             kinematics,
+            dynamics,
             tip_pose,
             link_poses,
             jacobian,

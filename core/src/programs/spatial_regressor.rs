@@ -90,51 +90,15 @@ pub fn standard_parameters(arm: &SpatialArmSpec) -> Vec<SpatialParameter> {
     out
 }
 
-/// A body's standard parameters `[m, m cx, m cy, m cz, Jxx, Jxy, Jyy, Jxz, Jyz, Jzz]`, `J` the
-/// inertia about the frame's origin: `I + m (|c|^2 E - c c^T)`.
-#[must_use]
-pub fn body_parameters(body: &SpatialBody) -> [Poly; 10] {
-    let m = &body.mass;
-    let c = &body.com;
-    let [xx, yy, zz, xy, xz, yz] = body.inertia.clone();
-    let tensor = [
-        [xx, xy.clone(), xz.clone()],
-        [xy, yy, yz.clone()],
-        [xz, yz, zz],
-    ];
-    let c2 = c
-        .iter()
-        .fold(Poly::default(), |acc, x| acc + x.clone() * x.clone());
-    let j = |a: usize, b: usize| {
-        let mut shift = Poly::default() - c[a].clone() * c[b].clone();
-        if a == b {
-            shift = shift + c2.clone();
-        }
-        tensor[a][b].clone() + m.clone() * shift
-    };
-    [
-        m.clone(),
-        m.clone() * c[0].clone(),
-        m.clone() * c[1].clone(),
-        m.clone() * c[2].clone(),
-        j(0, 0),
-        j(0, 1),
-        j(1, 1),
-        j(0, 2),
-        j(1, 2),
-        j(2, 2),
-    ]
-}
-
 /// The standard parameters' values, exact (polynomials in run-time parameters).
 #[must_use]
 pub fn standard_values(arm: &SpatialArmSpec, parameters: &[SpatialParameter]) -> Vec<Poly> {
     let links: Vec<[Poly; 10]> = arm
         .joints
         .iter()
-        .map(|j| body_parameters(&SpatialBody::of_link(j)))
+        .map(|j| SpatialBody::of_link(j).standard_parameters())
         .collect();
-    let payload = arm.payload.as_ref().map(body_parameters);
+    let payload = arm.payload.as_ref().map(SpatialBody::standard_parameters);
     parameters
         .iter()
         .map(|s| match s.entry {

@@ -211,6 +211,42 @@ impl SpatialBody {
             inertia: spec.inertia.clone(),
         }
     }
+
+    /// The ten standard parameters in Pinocchio's order `[m, m cx, m cy, m cz, Jxx, Jxy, Jyy,
+    /// Jxz, Jyz, Jzz]`, `J` the inertia about the frame's origin: `I + m (|c|^2 E - c c^T)`.
+    #[must_use]
+    pub fn standard_parameters(&self) -> [Poly; 10] {
+        let m = &self.mass;
+        let c = &self.com;
+        let [xx, yy, zz, xy, xz, yz] = self.inertia.clone();
+        let tensor = [
+            [xx, xy.clone(), xz.clone()],
+            [xy, yy, yz.clone()],
+            [xz, yz, zz],
+        ];
+        let c2 = c
+            .iter()
+            .fold(Poly::default(), |acc, x| acc + x.clone() * x.clone());
+        let j = |a: usize, b: usize| {
+            let mut shift = Poly::default() - c[a].clone() * c[b].clone();
+            if a == b {
+                shift = shift + c2.clone();
+            }
+            tensor[a][b].clone() + m.clone() * shift
+        };
+        [
+            m.clone(),
+            m.clone() * c[0].clone(),
+            m.clone() * c[1].clone(),
+            m.clone() * c[2].clone(),
+            j(0, 0),
+            j(0, 1),
+            j(1, 1),
+            j(0, 2),
+            j(1, 2),
+            j(2, 2),
+        ]
+    }
 }
 
 /// A spatial arm: joints base first, gravity, the tool frame in the last link's frame.
