@@ -299,13 +299,13 @@ fn spatial_derivation<const N: usize>(
         )?;
     }
     if let Some((m, c)) = dynamics {
-        for i in 0..N {
-            for j in i..N {
-                line(f, &Named("M", sub(i, Some(j))), &m[i][j], false)?;
+        for (i, row) in m.iter().enumerate() {
+            for (j, entry) in row.iter().enumerate().skip(i) {
+                line(f, &Named("M", sub(i, Some(j))), entry, false)?;
             }
         }
-        for i in 0..N {
-            line(f, &Named("c", sub(i, None)), &c[i], i + 1 == N)?;
+        for (i, entry) in c.iter().enumerate() {
+            line(f, &Named("c", sub(i, None)), entry, i + 1 == N)?;
         }
     }
     f.write_str(close)
