@@ -5,10 +5,10 @@ use nalgebra::{SMatrix, SVector};
 
 use crate::Real;
 
-use crate::PlanarArm;
+use crate::Dynamics;
 
 /// A view of an arm that evaluates the parameter-only part of its dynamics once, at
-/// [`PlanarArm::freeze`], and reuses it on every call.
+/// [`Dynamics::freeze`], and reuses it on every call.
 ///
 /// An arm with run-time parameters (`mass = self.m2`, ...) computes at every call the
 /// products and sums of parameters that do not depend on the state: `i3 + m3 c3^2`,
@@ -36,7 +36,7 @@ use crate::PlanarArm;
 /// ```
 ///
 /// For an all-literal arm there is nothing to compute beforehand and `Frozen` calls the arm's
-/// methods.
+/// methods. Planar and spatial arms alike have `freeze` (a method of [`Dynamics`]).
 ///
 /// # Example
 ///
@@ -65,20 +65,20 @@ use crate::PlanarArm;
 /// let heavier = arm.freeze().inverse_dynamics(&q, &qd, &qdd);
 /// assert!(heavier[0] > tau[0]);
 /// ```
-pub struct Frozen<'a, A: PlanarArm<N> + ?Sized, const N: usize> {
+pub struct Frozen<'a, A: Dynamics<N> + ?Sized, const N: usize> {
     arm: &'a A,
     block: A::__Frozen,
 }
 
-impl<A: PlanarArm<N> + ?Sized, const N: usize> Clone for Frozen<'_, A, N> {
+impl<A: Dynamics<N> + ?Sized, const N: usize> Clone for Frozen<'_, A, N> {
     fn clone(&self) -> Self {
         *self
     }
 }
 
-impl<A: PlanarArm<N> + ?Sized, const N: usize> Copy for Frozen<'_, A, N> {}
+impl<A: Dynamics<N> + ?Sized, const N: usize> Copy for Frozen<'_, A, N> {}
 
-impl<A: PlanarArm<N> + ?Sized, const N: usize> core::fmt::Debug for Frozen<'_, A, N> {
+impl<A: Dynamics<N> + ?Sized, const N: usize> core::fmt::Debug for Frozen<'_, A, N> {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.debug_struct("Frozen")
             .field("block", &self.block)
@@ -86,7 +86,7 @@ impl<A: PlanarArm<N> + ?Sized, const N: usize> core::fmt::Debug for Frozen<'_, A
     }
 }
 
-impl<'a, A: PlanarArm<N> + ?Sized, const N: usize> Frozen<'a, A, N> {
+impl<'a, A: Dynamics<N> + ?Sized, const N: usize> Frozen<'a, A, N> {
     /// Evaluates the parameter-only values of `arm` now.
     #[must_use]
     pub fn new(arm: &'a A) -> Self {

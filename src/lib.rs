@@ -111,7 +111,7 @@
 //!   loaded from a file. Values stay polynomial in the parameters (division by a parameter is a
 //!   compile error), so the derivation stays exact over polynomials in them; each method's
 //!   rustdoc shows its formulas with the parameters by name. Other fields are left alone.
-//!   Between parameter changes, [`PlanarArm::freeze`] evaluates the parameter-only values once
+//!   Between parameter changes, [`Dynamics::freeze`] evaluates the parameter-only values once
 //!   and gives a [`Frozen`] view with the hot dynamics methods at the literal arm's speed; it
 //!   borrows the arm, so a parameter cannot change under it.
 //!

@@ -149,6 +149,68 @@ pub trait Dynamics<const N: usize> {
     /// Potential energy, J, measured from y = 0 at the base.
     fn potential_energy<T: Real>(&self, q: &SVector<T, N>) -> T;
 
+    /// A view that evaluates the parameter-only part of the dynamics once and reuses it on every
+    /// call, for an arm with run-time parameters whose values hold still for many calls (a
+    /// control loop between payload changes). The arm stays borrowed while the view lives, so
+    /// its values cannot go stale. See [`Frozen`](crate::Frozen).
+    fn freeze(&self) -> crate::Frozen<'_, Self, N> {
+        crate::Frozen::new(self)
+    }
+
+    /// The parameter-only values [`Frozen`](crate::Frozen) holds (empty for all-literal arms).
+    #[doc(hidden)]
+    type __Frozen: Copy + Default + core::fmt::Debug;
+    #[doc(hidden)]
+    fn __freeze(&self) -> Self::__Frozen {
+        Self::__Frozen::default()
+    }
+    #[doc(hidden)]
+    fn __mass_matrix_frozen<T: Real>(
+        &self,
+        _: &Self::__Frozen,
+        q: &SVector<T, N>,
+    ) -> SMatrix<T, N, N> {
+        self.mass_matrix(q)
+    }
+    #[doc(hidden)]
+    fn __bias_frozen<T: Real>(
+        &self,
+        _: &Self::__Frozen,
+        q: &SVector<T, N>,
+        qd: &SVector<T, N>,
+    ) -> SVector<T, N> {
+        self.bias(q, qd)
+    }
+    #[doc(hidden)]
+    fn __mass_matrix_and_bias_frozen<T: Real>(
+        &self,
+        _: &Self::__Frozen,
+        q: &SVector<T, N>,
+        qd: &SVector<T, N>,
+    ) -> (SMatrix<T, N, N>, SVector<T, N>) {
+        self.mass_matrix_and_bias(q, qd)
+    }
+    #[doc(hidden)]
+    fn __inverse_dynamics_frozen<T: Real>(
+        &self,
+        _: &Self::__Frozen,
+        q: &SVector<T, N>,
+        qd: &SVector<T, N>,
+        qdd: &SVector<T, N>,
+    ) -> SVector<T, N> {
+        self.inverse_dynamics(q, qd, qdd)
+    }
+    #[doc(hidden)]
+    fn __forward_dynamics_frozen<T: Real>(
+        &self,
+        _: &Self::__Frozen,
+        q: &SVector<T, N>,
+        qd: &SVector<T, N>,
+        tau: &SVector<T, N>,
+    ) -> SVector<T, N> {
+        self.forward_dynamics(q, qd, tau)
+    }
+
     /// [`forward_dynamics`](Self::forward_dynamics) for input that may be bad: NaN or infinite
     /// states give an `Err` instead of NaN accelerations.
     ///

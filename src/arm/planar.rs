@@ -4,7 +4,7 @@
 use nalgebra::{Isometry2, Point2, SMatrix, SVector, Vector2};
 
 use crate::kinematics::{self, DlsOptions, IkTarget, Workspace};
-use crate::{exact, ArmError, Dynamics, Frozen, Link, Model, Real};
+use crate::{exact, ArmError, Dynamics, Link, Model, Real};
 
 /// A planar serial arm of `N` links, revolute or prismatic, whose dynamics, kinematics and
 /// statics were derived at compile time by `#[derive(PlanarArm)]`.
@@ -68,68 +68,6 @@ pub trait PlanarArm<const N: usize>: Dynamics<N> {
         force: &Vector2<f64>,
         torque: f64,
     ) -> SVector<f64, N>;
-
-    /// A view that evaluates the parameter-only part of the dynamics once and reuses it on every
-    /// call, for an arm with run-time parameters whose values hold still for many calls (a
-    /// control loop between payload changes). The arm stays borrowed while the view lives, so
-    /// its values cannot go stale. See [`Frozen`].
-    fn freeze(&self) -> Frozen<'_, Self, N> {
-        Frozen::new(self)
-    }
-
-    /// The parameter-only values [`Frozen`] holds (empty for all-literal arms).
-    #[doc(hidden)]
-    type __Frozen: Copy + Default + core::fmt::Debug;
-    #[doc(hidden)]
-    fn __freeze(&self) -> Self::__Frozen {
-        Self::__Frozen::default()
-    }
-    #[doc(hidden)]
-    fn __mass_matrix_frozen<T: Real>(
-        &self,
-        _: &Self::__Frozen,
-        q: &SVector<T, N>,
-    ) -> SMatrix<T, N, N> {
-        self.mass_matrix(q)
-    }
-    #[doc(hidden)]
-    fn __bias_frozen<T: Real>(
-        &self,
-        _: &Self::__Frozen,
-        q: &SVector<T, N>,
-        qd: &SVector<T, N>,
-    ) -> SVector<T, N> {
-        self.bias(q, qd)
-    }
-    #[doc(hidden)]
-    fn __mass_matrix_and_bias_frozen<T: Real>(
-        &self,
-        _: &Self::__Frozen,
-        q: &SVector<T, N>,
-        qd: &SVector<T, N>,
-    ) -> (SMatrix<T, N, N>, SVector<T, N>) {
-        self.mass_matrix_and_bias(q, qd)
-    }
-    #[doc(hidden)]
-    fn __inverse_dynamics_frozen<T: Real>(
-        &self,
-        _: &Self::__Frozen,
-        q: &SVector<T, N>,
-        qd: &SVector<T, N>,
-        qdd: &SVector<T, N>,
-    ) -> SVector<T, N> {
-        self.inverse_dynamics(q, qd, qdd)
-    }
-    #[doc(hidden)]
-    fn __forward_dynamics_frozen<T: Real>(
-        &self,
-        _: &Self::__Frozen,
-        q: &SVector<T, N>,
-        qd: &SVector<T, N>,
-        tau: &SVector<T, N>,
-    ) -> SVector<T, N> {
-        self.forward_dynamics(q, qd, tau)
-    }
 
     /// The reachable region of the tip ([`Workspace::of_links`]): for revolute links without
     /// ranges the annulus with inner radius `max(0, 2 max l - sum l)` and outer radius

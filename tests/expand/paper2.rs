@@ -410,6 +410,8 @@ Cost: 47 multiplications, 36 additions, 3 divisions, 2 sin_cos pairs.*/
             ]),
         )
     }
+    #[doc(hidden)]
+    type __Frozen = ::planar_arm::__private::Block<0>;
 }
 #[automatically_derived]
 #[allow(clippy::nursery)]
@@ -595,8 +597,6 @@ Cost: 8 multiplications, 10 additions, 0 divisions, 2 sin_cos pairs.*/
         let __tau2 = __torque + __u * (-__s12) + __v * __c12;
         ::planar_arm::__private::vector([__tau1, __tau2])
     }
-    #[doc(hidden)]
-    type __Frozen = ::planar_arm::__private::Block<0>;
 }
 #[automatically_derived]
 #[allow(clippy::nursery)]

@@ -687,6 +687,8 @@ Cost: 47 multiplications, 44 additions, 3 divisions, 3 sin_cos pairs.*/
             ],
         )
     }
+    #[doc(hidden)]
+    type __Frozen = ::planar_arm::__private::Block<0>;
 }
 #[automatically_derived]
 #[allow(clippy::nursery)]
@@ -948,8 +950,6 @@ Cost: 14 multiplications, 19 additions, 0 divisions, 3 sin_cos pairs.*/
         let __tau3 = __torque + __u * (-__s123) + __v * __c123;
         ::planar_arm::__private::vector([__tau1, __tau2, __tau3])
     }
-    #[doc(hidden)]
-    type __Frozen = ::planar_arm::__private::Block<0>;
 }
 #[automatically_derived]
 #[allow(clippy::nursery)]

@@ -376,6 +376,8 @@ Cost: 36 multiplications, 18 additions, 2 divisions, 1 sin_cos pairs.*/
             ]),
         )
     }
+    #[doc(hidden)]
+    type __Frozen = ::planar_arm::__private::Block<0>;
 }
 #[automatically_derived]
 #[allow(clippy::nursery)]
@@ -547,8 +549,6 @@ Cost: 8 multiplications, 7 additions, 0 divisions, 1 sin_cos pairs.*/
         let __tau2 = __torque + __u * __c1 + __v * __s1;
         ::planar_arm::__private::vector([__tau1, __tau2])
     }
-    #[doc(hidden)]
-    type __Frozen = ::planar_arm::__private::Block<0>;
 }
 #[automatically_derived]
 #[allow(clippy::nursery)]

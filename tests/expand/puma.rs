@@ -2695,6 +2695,8 @@ Cost: 1456 multiplications, 1164 additions, 0 divisions, 5 sin_cos pairs.*/
             ]),
         )
     }
+    #[doc(hidden)]
+    type __Frozen = ::planar_arm::__private::Block<0>;
     /// The accelerations qdd that solve M qdd = tau - c - g - f: M and h = c + g + f from
     /// `mass_matrix_and_bias` (one program), then an L D L^T factorisation of M (no
     /// square roots, no allocation), each pivot floored at 2^-52 M_ii. An arm with a
@@ -2708,6 +2710,24 @@ Cost: 1456 multiplications, 1164 additions, 0 divisions, 5 sin_cos pairs.*/
         __tau: &::planar_arm::nalgebra::SVector<__T, 6>,
     ) -> ::planar_arm::nalgebra::SVector<__T, 6> {
         let (__m, __h) = self.mass_matrix_and_bias(__q, __qd);
+        ::planar_arm::__private::forward_solve(
+            &__m,
+            __tau,
+            &__h,
+            [::planar_arm::__private::Floor::Relative; 6],
+        )
+    }
+    /// `forward_dynamics` from the frozen view's M and h.
+    #[doc(hidden)]
+    #[inline]
+    fn __forward_dynamics_frozen<__T: ::planar_arm::Real>(
+        &self,
+        __block: &Self::__Frozen,
+        __q: &::planar_arm::nalgebra::SVector<__T, 6>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 6>,
+        __tau: &::planar_arm::nalgebra::SVector<__T, 6>,
+    ) -> ::planar_arm::nalgebra::SVector<__T, 6> {
+        let (__m, __h) = self.__mass_matrix_and_bias_frozen(__block, __q, __qd);
         ::planar_arm::__private::forward_solve(
             &__m,
             __tau,

@@ -24,7 +24,7 @@ mod derivatives;
 mod dynamics;
 mod energies;
 mod exact;
-mod frozen;
+pub(crate) mod frozen;
 mod kinematics;
 
 /// What the signatures of every family's methods share.
@@ -209,6 +209,7 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
             fn forward_dynamics #g(&self, _: #vt, _: #vt, _: #vt) -> #svt #body
             fn kinetic_energy #g(&self, _: #vt, _: #vt) -> __T #body
             fn potential_energy #g(&self, _: #vt) -> __T #body
+            type __Frozen = ::planar_arm::__private::Block<0>;
         }
         #[automatically_derived]
         impl #impl_generics ::planar_arm::PlanarArm<#nn> for #ty #where_clause {
@@ -219,7 +220,6 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
                 coriolis: [::planar_arm::__private::terms(b"", &[]); #nn],
                 gravity: [::planar_arm::__private::terms(b"", &[]); #nn],
             };
-            type __Frozen = ::planar_arm::__private::Block<0>;
             fn model(&self) -> ::planar_arm::Model<#nn> #body
             fn tip_pose(&self, _: #v) -> ::planar_arm::nalgebra::Isometry2<#F64> #body
             fn jacobian #g(&self, _: #vt) -> ::planar_arm::nalgebra::SMatrix<__T, 3, #nn> #body

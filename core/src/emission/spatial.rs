@@ -6,7 +6,8 @@
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
-use crate::emission::function::{emit_fn, matrix, vector, Fn, Param};
+use crate::emission::function::{matrix, vector, Fn, Param};
+use crate::emission::generate::frozen;
 use crate::emission::header::Header;
 use crate::emit::{coefficient_tokens, f64_tokens, formula_doc, local, EmitError};
 use crate::expr::Expr;
@@ -226,10 +227,15 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
             .in_f64(),
         );
     }
-    let mut body = Vec::with_capacity(fns.len() + 5);
+    let mut body = Vec::with_capacity(fns.len() + 12);
+    // The hot methods of an arm with run-time parameters read a block of its parameter-only
+    // values that `freeze` computes once, as planar arms' do.
+    let hot = frozen::hot(&fns);
+    let split = frozen::split(&hot);
     for f in &fns {
-        body.push(emit_fn(n, f, None)?);
+        body.push(frozen::plain(n, f, &hot, split.as_ref())?);
     }
+    body.extend(frozen::variants(n, &hot, split.as_ref())?);
     body.extend(solved(n));
     body.push(exact(n, &d)?);
     body.push(model(arm)?);
@@ -260,7 +266,7 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
 /// `forward_dynamics` and `kinetic_energy`, written as calls of the generated
 /// `mass_matrix_and_bias` and `mass_matrix` and of the run-time crate: planar arms' `L D L^T`
 /// solve (each pivot floored at 2^-52 `M_ii`) and quadratic form.
-fn solved(n: usize) -> [TokenStream; 2] {
+fn solved(n: usize) -> [TokenStream; 3] {
     let nn = Literal::usize_unsuffixed(n);
     let v = quote!(::planar_arm::nalgebra::SVector<__T, #nn>);
     let (q, qd, tau) = (local("q"), local("qd"), local("tau"));
@@ -275,6 +281,23 @@ fn solved(n: usize) -> [TokenStream; 2] {
             #[inline]
             fn forward_dynamics<__T: ::planar_arm::Real>(&self, #q: &#v, #qd: &#v, #tau: &#v) -> #v {
                 let (#m, #h) = self.mass_matrix_and_bias(#q, #qd);
+                ::planar_arm::__private::forward_solve(
+                    &#m, #tau, &#h, [::planar_arm::__private::Floor::Relative; #nn],
+                )
+            }
+        },
+        quote! {
+            /// `forward_dynamics` from the frozen view's M and h.
+            #[doc(hidden)]
+            #[inline]
+            fn __forward_dynamics_frozen<__T: ::planar_arm::Real>(
+                &self,
+                __block: &Self::__Frozen,
+                #q: &#v,
+                #qd: &#v,
+                #tau: &#v,
+            ) -> #v {
+                let (#m, #h) = self.__mass_matrix_and_bias_frozen(__block, #q, #qd);
                 ::planar_arm::__private::forward_solve(
                     &#m, #tau, &#h, [::planar_arm::__private::Floor::Relative; #nn],
                 )
@@ -297,7 +320,6 @@ fn isometry(ids: &[proc_macro2::Ident]) -> TokenStream {
     quote!(::planar_arm::__private::isometry3([#(#r),*], [#(#p),*]))
 }
 
-/// A method's documentation when its formulas were not multiplied out.
 /// The docs of `mass_matrix` (`mass`) or `coriolis`: the formulas where they were multiplied
 /// out and fit ([`formula_doc`]), else where to find them.
 fn dynamics_doc(title: &str, d: &SpatialDerived, mass: bool) -> String {
@@ -330,6 +352,7 @@ fn dynamics_doc(title: &str, d: &SpatialDerived, mass: bool) -> String {
     )
 }
 
+/// A method's documentation when its formulas were not multiplied out.
 fn unexpanded_doc(title: &str) -> String {
     format!(
         "{title}\n\nEvaluated as the product of the joints' transformations: multiplied out, \

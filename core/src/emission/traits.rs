@@ -1,6 +1,6 @@
-//! Which trait each generated method belongs to: the equations of motion go in
-//! `impl ::planar_arm::Dynamics<N>`, which both derives emit, the rest in the geometry's own
-//! trait (`PlanarArm<N>`, `SpatialArm<N>`).
+//! Which trait each generated method belongs to: the equations of motion and their frozen
+//! variants go in `impl ::planar_arm::Dynamics<N>`, which both derives emit, the rest in the
+//! geometry's own trait (`PlanarArm<N>`, `SpatialArm<N>`).
 
 use proc_macro2::{TokenStream, TokenTree};
 
@@ -19,17 +19,25 @@ const DYNAMICS: &[&str] = &[
     "forward_dynamics_derivatives",
     "kinetic_energy",
     "potential_energy",
+    "__Frozen",
+    "__freeze",
+    "__mass_matrix_frozen",
+    "__bias_frozen",
+    "__mass_matrix_and_bias_frozen",
+    "__inverse_dynamics_frozen",
+    "__forward_dynamics_frozen",
 ];
 
-/// The name of the function an item declares: the identifier after `fn`, past its attributes.
+/// The name of the function or type an item declares: the identifier after `fn` or `type`,
+/// past its attributes.
 fn name(item: &TokenStream) -> Option<String> {
-    let mut after_fn = false;
+    let mut after_keyword = false;
     for token in item.clone() {
         if let TokenTree::Ident(ident) = token {
-            if after_fn {
+            if after_keyword {
                 return Some(ident.to_string());
             }
-            after_fn = ident == "fn";
+            after_keyword = ident == "fn" || ident == "type";
         }
     }
     None
@@ -64,13 +72,26 @@ mod tests {
             quote!(
                 fn forward_dynamics(&self) {}
             ),
+            quote!(
+                #[doc(hidden)]
+                type __Frozen = Block<3>;
+            ),
+            quote!(
+                const EXACT: u8 = 0;
+            ),
         ];
         let (dynamics, rest) = super::split_dynamics(items);
-        assert_eq!(dynamics.len(), 2);
-        assert_eq!(rest.len(), 2);
+        let names: Vec<_> = dynamics.iter().filter_map(super::name).collect();
         assert_eq!(
-            super::name(&rest[1]).as_deref(),
-            Some("__mass_matrix_frozen")
+            names,
+            [
+                "mass_matrix",
+                "__mass_matrix_frozen",
+                "forward_dynamics",
+                "__Frozen"
+            ]
         );
+        assert_eq!(rest.len(), 2);
+        assert_eq!(super::name(&rest[0]).as_deref(), Some("tip_pose"));
     }
 }

@@ -106,6 +106,7 @@ fn stub(input: &DeriveInput) -> TokenStream {
             fn bias<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt) -> ::planar_arm::nalgebra::SVector<__T, #nn> #body
             fn mass_matrix_and_bias<__T: ::planar_arm::Real>(&self, _: #vt, _: #vt)
                 -> (::planar_arm::nalgebra::SMatrix<__T, #nn, #nn>, ::planar_arm::nalgebra::SVector<__T, #nn>) #body
+            type __Frozen = ::planar_arm::__private::Block<0>;
         }
         #[automatically_derived]
         impl #impl_generics ::planar_arm::spatial::SpatialArm<#nn> for #ty #where_clause {

@@ -31,13 +31,13 @@ fn calls_frozen(n: usize, name: &str) -> bool {
 }
 
 /// The hot methods among `programs`, in order.
-pub(super) fn hot<'t, 'a>(programs: &'t [Fn<'a>]) -> Vec<&'t Fn<'a>> {
+pub(crate) fn hot<'t, 'a>(programs: &'t [Fn<'a>]) -> Vec<&'t Fn<'a>> {
     programs.iter().filter(|f| HOT.contains(&f.name)).collect()
 }
 
 /// The hot methods split at their parameter-only frontier, or `None` for an all-literal arm,
 /// whose constants are folded already.
-pub(super) fn split(hot: &[&Fn<'_>]) -> Option<Frozen> {
+pub(crate) fn split(hot: &[&Fn<'_>]) -> Option<Frozen> {
     if hot.iter().any(|f| !f.method.program.params().is_empty()) {
         let methods: Vec<Method> = hot.iter().map(|f| f.method.clone()).collect();
         freeze(&methods)
@@ -47,7 +47,7 @@ pub(super) fn split(hot: &[&Fn<'_>]) -> Option<Frozen> {
 }
 
 /// The plain method `f`: its program, or for a hot method that [`calls_frozen`], the call.
-pub(super) fn plain(
+pub(crate) fn plain(
     n: usize,
     f: &Fn<'_>,
     hot: &[&Fn<'_>],
@@ -141,7 +141,7 @@ fn frozen_wrapper(
 
 /// `type __Frozen`, the block's type (of no slots for an all-literal arm), and with a frozen
 /// split the hot methods' variants and `__freeze`, which computes the block.
-pub(super) fn variants(
+pub(crate) fn variants(
     n: usize,
     hot: &[&Fn<'_>],
     frozen: Option<&Frozen>,
