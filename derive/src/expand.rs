@@ -80,11 +80,53 @@ fn try_derive(input: &DeriveInput) -> Result<TokenStream, TokenStream> {
         return Err(syn::Error::new_spanned(&input.ident, "invalid arm").to_compile_error());
     };
     let header = header(input);
-    // An arm whose values are all literals is derived over the rationals: the same result as
-    // over polynomials, with less work.
-    match literal(&spec) {
-        Some(spec) => emit(&arm, &spec, &header),
-        None => emit(&arm, &spec, &header),
+    let first = derive_spec(&arm, &spec, &header);
+    if first.is_ok() {
+        return first;
+    }
+    // Exact coefficients too long for the `i128` of `EXACT`: the literals with the most digits
+    // enter as named constants instead (exact in that symbol, as a run-time parameter whose
+    // value is fixed; the generated code uses their `f64`), fewer digits each round.
+    for bits in NAMED_BITS {
+        let (named, count) = name_long_literals(&spec, bits);
+        if count > 0 {
+            if let Ok(tokens) = derive_spec(&arm, &named, &header) {
+                return Ok(tokens);
+            }
+        }
+    }
+    first
+}
+
+/// The sizes (bits of the larger of numerator and denominator) above which literals become
+/// named constants, tried in turn: URDF's and MuJoCo's 17-digit decimals are about 60 bits.
+const NAMED_BITS: [u64; 3] = [48, 32, 20];
+
+/// `spec` with every literal value of more than `bits` bits a named constant called by its
+/// shortest decimal (`0.000039175660390264734`), and how many there were.
+fn name_long_literals(spec: &ArmSpec<Poly>, bits: u64) -> (ArmSpec<Poly>, usize) {
+    let mut count = 0;
+    let named = spec.map(|p| match p.as_rational() {
+        Some(r) if r.numer().abs().bits().max(r.denom().bits()) > bits => {
+            let value = planar_arm_core::ring::to_f64(&r).unwrap_or(f64::NAN);
+            count += 1;
+            Poly::param(planar_arm_core::Param::constant(&format!("{value}"), value))
+        }
+        _ => p.clone(),
+    });
+    (named, count)
+}
+
+/// Derives and emits `spec`. An arm whose values are all literals is derived over the
+/// rationals: the same result as over polynomials, with less work.
+fn derive_spec(
+    arm: &Arm<'_>,
+    spec: &ArmSpec<Poly>,
+    header: &Header,
+) -> Result<TokenStream, TokenStream> {
+    match literal(spec) {
+        Some(spec) => emit(arm, &spec, header),
+        None => emit(arm, spec, header),
     }
 }
 

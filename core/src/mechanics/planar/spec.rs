@@ -117,7 +117,8 @@ impl<C> ArmSpec<C> {
     /// The same arm with every value mapped by `f`, in the order link by link (length, mass,
     /// inertia, com x, com y, armature, damping, frictionloss), then gravity, then the
     /// payload's (mass, inertia, com x, com y).
-    pub(crate) fn map<D>(&self, mut f: impl FnMut(&C) -> D) -> ArmSpec<D> {
+    #[must_use]
+    pub fn map<D>(&self, mut f: impl FnMut(&C) -> D) -> ArmSpec<D> {
         let links = self
             .links
             .iter()
