@@ -1,7 +1,8 @@
 //! Spatial dynamics against Pinocchio (`bench/pinocchio/run.sh`, `ARMS=spatial-dynamics`): the
 //! generated `inverse_dynamics`, `mass_matrix`, `bias`, `mass_matrix_and_bias`,
-//! `forward_dynamics`, `inverse_dynamics_derivatives` and `forward_dynamics_derivatives` of the
-//! PUMA 560, the UR5 and the Franka Panda with their published mass properties.
+//! `forward_dynamics`, `inverse_dynamics_derivatives` and `forward_dynamics_derivatives`, and
+//! `Identification`'s `regressor` and `base_regressor`, of the PUMA 560, the UR5 and the Franka
+//! Panda with their published mass properties.
 //!
 //! Not run in CI. Two modes, both for `run.sh`:
 //!
@@ -11,12 +12,16 @@
 //!   `forward_dynamics(q, qd, tau)` with `qdd` as `tau` (`aba`),
 //!   `inverse_dynamics_derivatives(q, qd, qdd)` (`rnea_derivatives`: dtau/dq then dtau/dqd,
 //!   by columns) and `forward_dynamics_derivatives(q, qd, tau)` with `qdd` as `tau`
-//!   (`aba_derivatives`: dqdd/dq, dqdd/dqd, then M^-1, by columns), for `run.sh` to compare
-//!   with Pinocchio's. Before printing, the first five methods are checked against
-//!   `reference::spatial` at the 64 states (1e-10 relative), so that the arms are what the
-//!   crate's reference makes of the same numbers; the derivatives are checked only against
-//!   Pinocchio's `computeRNEADerivatives` and `computeABADerivatives`.
-//! - `-- --peer CALLS` times the six methods (not `bias`) exactly as `peers.cpp` times Pinocchio: 64
+//!   (`aba_derivatives`: dqdd/dq, dqdd/dqd, then M^-1, by columns) and `regressor(q, qd, qdd)`'s
+//!   first 10 N columns, the ten rigid-body parameters of each link (`regressor`, by columns),
+//!   for `run.sh` to compare with Pinocchio's. Before printing, the first five methods are
+//!   checked against `reference::spatial` at the 64 states (1e-10 relative), so that the arms
+//!   are what the crate's reference makes of the same numbers, and `regressor` and
+//!   `base_regressor` times their parameters against `inverse_dynamics`; the derivatives are
+//!   checked only against Pinocchio's `computeRNEADerivatives` and `computeABADerivatives`, the
+//!   regressor only against `computeJointTorqueRegressor` (the PUMA's after a change of frames:
+//!   see `peers.cpp`).
+//! - `-- --peer CALLS` times the eight methods (not `bias`) exactly as `peers.cpp` times Pinocchio: 64
 //!   states cycled, `CALLS` calls per round, 21 rounds after one warm-up, the medians per call
 //!   by the wall clock and by the thread's CPU time, in its output format.
 //!
@@ -159,12 +164,16 @@ fn relative(a: &[f64], b: &[f64]) -> f64 {
         / scale
 }
 
-/// Every method against `reference::spatial` at the 64 states, panicking above 1e-10.
-fn check<A: SpatialArm<N> + Default, const N: usize>(name: &str) {
-    let arm = A::default();
+/// Every method against `reference::spatial` at the 64 states, and the regressors times
+/// their parameters against `inverse_dynamics`, panicking above 1e-10.
+fn check<A, const N: usize, const P: usize, const B: usize>(name: &str, arm: &A)
+where
+    A: SpatialArm<N> + Identification<N, P, B>,
+{
     let model = arm.model();
     let s = states::<N>();
-    let mut worst = [0.0_f64; 5];
+    let (theta, base) = (arm.standard_parameters(), arm.base_parameters());
+    let mut worst = [0.0_f64; 7];
     for k in 0..STATES {
         let (q, qd, qdd) = (&s.q[k], &s.qd[k], &s.qdd[k]);
         let m = reference::mass_matrix(&model, q);
@@ -182,6 +191,14 @@ fn check<A: SpatialArm<N> + Default, const N: usize>(name: &str) {
                 arm.forward_dynamics(q, qd, qdd).as_slice(),
                 reference::forward_dynamics(&model, q, qd, qdd).as_slice(),
             ),
+            relative(
+                (arm.regressor(q, qd, qdd) * theta).as_slice(),
+                arm.inverse_dynamics(q, qd, qdd).as_slice(),
+            ),
+            relative(
+                (arm.base_regressor(q, qd, qdd) * base).as_slice(),
+                arm.inverse_dynamics(q, qd, qdd).as_slice(),
+            ),
         ];
         for (w, e) in worst.iter_mut().zip(errs) {
             *w = w.max(e);
@@ -190,8 +207,9 @@ fn check<A: SpatialArm<N> + Default, const N: usize>(name: &str) {
     println!(
         "# {name}: generated vs reference::spatial over {STATES} states: inverse_dynamics \
          {:.1e}, mass_matrix {:.1e}, bias {:.1e}, mass_matrix_and_bias {:.1e}, \
-         forward_dynamics {:.1e}",
-        worst[0], worst[1], worst[2], worst[3], worst[4]
+         forward_dynamics {:.1e}; regressor * theta {:.1e}, base_regressor * theta_b {:.1e} \
+         vs inverse_dynamics ({P} standard, {B} base parameters)",
+        worst[0], worst[1], worst[2], worst[3], worst[4], worst[5], worst[6]
     );
     assert!(
         worst.iter().all(|&w| w < 1e-10),
@@ -201,9 +219,11 @@ fn check<A: SpatialArm<N> + Default, const N: usize>(name: &str) {
 
 /// The results at the first four states as `# value, ARM, OP, K, ...` lines (matrices by
 /// columns), each number in Rust's shortest form that reads back to the same `f64`.
-fn values<A: SpatialArm<N> + Default, const N: usize>(name: &str) {
-    check::<A, N>(name);
-    let arm = A::default();
+fn values<A, const N: usize, const P: usize, const B: usize>(name: &str, arm: &A)
+where
+    A: SpatialArm<N> + Identification<N, P, B>,
+{
+    check(name, arm);
     let s = states::<N>();
     let list = |v: &[f64]| {
         v.iter()
@@ -243,6 +263,13 @@ fn values<A: SpatialArm<N> + Default, const N: usize>(name: &str) {
             .copied()
             .collect();
         println!("# value, {name}, aba_derivatives, {k}, {}", list(&all));
+        // The rigid-body columns (10 per link), what computeJointTorqueRegressor gives; the
+        // arms here have no armature, friction or payload, so that is all of them.
+        let y = arm.regressor(q, qd, qdd);
+        println!(
+            "# value, {name}, regressor, {k}, {}",
+            list(&y.as_slice()[..N * 10 * N])
+        );
     }
 }
 
@@ -287,10 +314,12 @@ fn time_op<const N: usize>(
     checksum
 }
 
-/// The six methods, one call each per `f(k)`: inputs and whole outputs through `black_box`,
+/// The eight methods, one call each per `f(k)`: inputs and whole outputs through `black_box`,
 /// one entry of the output returned for the checksum (as `peers.cpp` sums one).
-fn peer<A: SpatialArm<N> + Default, const N: usize>(name: &str, calls: usize) -> f64 {
-    let arm = A::default();
+fn peer<A, const N: usize, const P: usize, const B: usize>(name: &str, arm: &A, calls: usize) -> f64
+where
+    A: SpatialArm<N> + Identification<N, P, B>,
+{
     let s = states::<N>();
     let inputs = |k: usize| {
         (
@@ -325,15 +354,23 @@ fn peer<A: SpatialArm<N> + Default, const N: usize>(name: &str, calls: usize) ->
         let (dq, dqd, minv) = black_box(arm.forward_dynamics_derivatives(q, qd, tau));
         dq[(N - 1, 0)] + dqd[(0, 0)] + minv[(0, N - 1)]
     });
+    checksum += time_op::<N>(name, "regressor", calls, |k| {
+        let (q, qd, qdd) = inputs(k);
+        black_box(arm.regressor(q, qd, qdd))[(N - 1, 10 * N - 1)]
+    });
+    checksum += time_op::<N>(name, "base_regressor", calls, |k| {
+        let (q, qd, qdd) = inputs(k);
+        black_box(arm.base_regressor(q, qd, qdd))[(N - 1, B - 1)]
+    });
     checksum
 }
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     if args.iter().any(|a| a == "--values") {
-        values::<Puma560, 6>("Puma560");
-        values::<Ur5, 6>("Ur5");
-        values::<Panda, 7>("Panda");
+        values("Puma560", &Puma560::default());
+        values("Ur5", &Ur5::default());
+        values("Panda", &Panda::default());
         return;
     }
     let calls = args
@@ -343,8 +380,8 @@ fn main() {
         .and_then(|c| c.parse().ok())
         .unwrap_or(200_000);
     println!("variant, N, op, wall ns/call, cpu ns/call");
-    let checksum = peer::<Puma560, 6>("Puma560", calls)
-        + peer::<Ur5, 6>("Ur5", calls)
-        + peer::<Panda, 7>("Panda", calls);
+    let checksum = peer("Puma560", &Puma560::default(), calls)
+        + peer("Ur5", &Ur5::default(), calls)
+        + peer("Panda", &Panda::default(), calls);
     println!("# checksum {checksum:.17e}");
 }

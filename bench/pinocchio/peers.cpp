@@ -27,8 +27,8 @@
 // `spatial-dynamics` (the PUMA 560, UR5 and Franka Panda of benches/spatial_dynamics.rs with
 // their mass properties: rnea, crba, aba and crba + nonLinearEffects, crba and aba in both
 // conventions, crba + nonLinearEffects + Pinocchio's Cholesky solve for the accelerations,
-// computeRNEADerivatives and computeABADerivatives; their results at the first four states
-// printed first).
+// computeRNEADerivatives, computeABADerivatives and computeJointTorqueRegressor; their results
+// at the first four states printed first).
 
 #include <algorithm>
 #include <chrono>
@@ -723,19 +723,63 @@ static pin::Model build_urdf(const std::vector<UrdfLink> & links)
   return model;
 }
 
+// Each arm with, where its links' frames (those of benches/spatial_dynamics.rs, in which the
+// derive's standard parameters are) are not Pinocchio's joint frames, each link's frame in its
+// joint's frame: the PUMA's DH frame i is B_i in joint i's frame. The URDF arms' link frames
+// are the joint frames (none listed).
 struct DynamicsArm
 {
   const char * name;
   pin::Model model;
+  std::vector<pin::SE3> link_frames;
 };
+
+static std::vector<pin::SE3> puma_link_frames()
+{
+  std::vector<pin::SE3> frames;
+  for (const DhLink & l : puma_links())
+    frames.push_back(pin::SE3(rot_x(l.row.alpha), Eigen::Vector3d(l.row.a, 0., l.row.d)));
+  return frames;
+}
 
 static std::vector<DynamicsArm> dynamics_arms()
 {
   return {
-    {"Puma560", build_puma_dynamics()},
-    {"Ur5", build_urdf(ur5_links())},
-    {"Panda", build_urdf(panda_links())},
+    {"Puma560", build_puma_dynamics(), puma_link_frames()},
+    {"Ur5", build_urdf(ur5_links()), {}},
+    {"Panda", build_urdf(panda_links()), {}},
   };
+}
+
+// The ten dynamic parameters [m, m c, Ixx, Ixy, Iyy, Ixz, Iyz, Izz] of a body given in frame B
+// as those of the same body in B's parent frame: linear, A theta_B. Its columns by differences
+// around a unit body (exact up to rounding, the map being linear), through Pinocchio's own
+// Inertia::FromDynamicParameters, SE3::act and toDynamicParameters.
+static Eigen::Matrix<double, 10, 10> parameters_in_parent(const pin::SE3 & B)
+{
+  Eigen::Matrix<double, 10, 1> unit;
+  unit << 1., 0., 0., 0., 1., 0., 1., 0., 0., 1.;
+  auto moved = [&](const Eigen::Matrix<double, 10, 1> & theta) -> Eigen::Matrix<double, 10, 1> {
+    return B.act(pin::Inertia::FromDynamicParameters(theta)).toDynamicParameters();
+  };
+  const Eigen::Matrix<double, 10, 1> at_unit = moved(unit);
+  Eigen::Matrix<double, 10, 10> A;
+  for (int j = 0; j < 10; ++j)
+    A.col(j) = moved(unit + Eigen::Matrix<double, 10, 1>::Unit(j)) - at_unit;
+  return A;
+}
+
+// computeJointTorqueRegressor's Y (parameters in the joint frames) for the parameters in the
+// arm's link frames: Y blockdiag(A_1, ..., A_N), Y itself for an arm whose link frames are its
+// joint frames.
+static Eigen::MatrixXd regressor_in_link_frames(const DynamicsArm & arm, const Eigen::MatrixXd & Y)
+{
+  if (arm.link_frames.empty())
+    return Y;
+  Eigen::MatrixXd out(Y.rows(), Y.cols());
+  for (int i = 0; i < int(arm.link_frames.size()); ++i)
+    out.middleCols<10>(10 * i) = Y.middleCols<10>(10 * i) * parameters_in_parent(arm.link_frames[i]);
+  return out;
 }
 
 // benches/spatial_dynamics.rs's states: q from seed 1000 + 3k in [-pi, pi), v from
@@ -782,9 +826,12 @@ static double crba_nle_cholesky(
 // nonLinearEffects and the Cholesky solve (`crba+nle+cholesky`), for run.sh to compare with the
 // generated code's (`cargo bench --bench spatial_dynamics -- --values`), with
 // computeRNEADerivatives (dtau_dq, dtau_dv) and computeABADerivatives (ddq_dq, ddq_dv, Minv
-// symmetrised), all by columns; then the timing of rnea, crba, aba and
+// symmetrised), all by columns, and computeJointTorqueRegressor by columns, in the arm's link
+// frames (`regressor`: for the PUMA Y blockdiag(A_i), see regressor_in_link_frames, and then
+// also Y itself as `regressor_joint_frames`); then the timing of rnea, crba, aba and
 // crba + nonLinearEffects, crba and aba in both conventions, of crba + nonLinearEffects + the
-// Cholesky solve, and of computeRNEADerivatives and computeABADerivatives.
+// Cholesky solve, of computeRNEADerivatives and computeABADerivatives, and of
+// computeJointTorqueRegressor (Y itself, no change of frames).
 static void spatial_dynamics_main(long calls)
 {
   std::printf("# checks (%s)\n", VARIANT);
@@ -835,10 +882,32 @@ static void spatial_dynamics_main(long calls)
           Eigen::VectorXd ad(3 * n * n);
           ad << flat(d.ddq_dq), flat(d.ddq_dv), flat(minv);
           print("aba_derivatives", k, ad);
+          // The regressor: Pinocchio's, then in the link frames.
+          const Eigen::MatrixXd Y = pin::computeJointTorqueRegressor(m, d, s.q[k], s.v[k], s.a[k]);
+          const Eigen::MatrixXd Yl = regressor_in_link_frames(arm, Y);
+          print("regressor", k, flat(Yl));
+          if (!arm.link_frames.empty())
+            print("regressor_joint_frames", k, flat(Y));
           if (k == 0)
+          {
             std::printf(
               "# %s (N=%d): |M a + nle - rnea| = %.3g\n", arm.name, n,
               (M * s.a[k] + nle - tau).cwiseAbs().maxCoeff());
+            // Y theta with theta in the joint frames (Pinocchio's inertias), and Y A theta_l
+            // with theta_l each link's inertia in its own frame: B_i^-1 acting on Pinocchio's.
+            Eigen::VectorXd theta(10 * n), theta_l(10 * n);
+            for (int i = 0; i < n; ++i)
+            {
+              const pin::Inertia & I = m.inertias[i + 1];
+              theta.segment<10>(10 * i) = I.toDynamicParameters();
+              theta_l.segment<10>(10 * i) =
+                (arm.link_frames.empty() ? I : arm.link_frames[i].actInv(I)).toDynamicParameters();
+            }
+            std::printf(
+              "# %s (N=%d): |Y theta - rnea| = %.3g, |Y_link theta_link - rnea| = %.3g\n",
+              arm.name, n, (Y * theta - tau).cwiseAbs().maxCoeff(),
+              (Yl * theta_l - tau).cwiseAbs().maxCoeff());
+          }
         }
       }
     }
@@ -897,6 +966,12 @@ static void spatial_dynamics_main(long calls)
                                   return data.ddq_dq(n - 1, 0) + data.ddq_dv(0, 0) + data.Minv(0, n - 1);
                                 },
                                 calls));
+    report("regressor", time_op(
+                          [&](int k) {
+                            return pin::computeJointTorqueRegressor(
+                              model, data, s.q[k], s.v[k], s.a[k])(n - 1, 10 * n - 1);
+                          },
+                          calls));
   }
   std::printf("# checksum %.17g\n", checksum);
 }
