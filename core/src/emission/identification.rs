@@ -35,22 +35,50 @@ pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenS
     let Some(id) = d.identification() else {
         return Ok(TokenStream::new());
     };
-    let n = d.arm.links.len();
-    let (pp, bb) = (id.parameters.len(), id.base.columns.len());
+    let all: Vec<usize> = (0..id.parameters.len()).collect();
+    let names: Vec<&str> = id.parameters.iter().map(|s| s.name.as_str()).collect();
+    let formulas: Vec<String> = (0..id.base.columns.len())
+        .map(|b| id.base.formula(b, &id.parameters))
+        .collect();
+    let (standard_doc, base_doc) = parameter_docs(&names, &formulas);
+    identification_impl(
+        d.arm.links.len(),
+        header,
+        &names,
+        &formulas,
+        [
+            d.regressor_method(&id.parameters, &all),
+            d.parameter_values_method(&id.parameters, None),
+            d.regressor_method(&id.parameters, &id.base.columns),
+            d.parameter_values_method(&id.parameters, Some(&id.base)),
+        ],
+        (&standard_doc, &base_doc),
+    )
+}
+
+/// `impl ::planar_arm::Identification<N, P, B>` from its four methods' programs (regressor,
+/// standard parameters' values, base regressor, base parameters' values), the parameters'
+/// names and groupings, and the docs' lists of them. Both derives emit it.
+///
+/// # Errors
+/// If a constant does not fit in `f64`.
+pub(crate) fn identification_impl(
+    n: usize,
+    header: &Header,
+    names: &[&str],
+    formulas: &[String],
+    [regressor, standard, base_regressor, base]: [crate::methods::Method; 4],
+    (standard_doc, base_doc): (&str, &str),
+) -> Result<TokenStream, EmitError> {
+    let (pp, bb) = (names.len(), formulas.len());
     let (nn, pl, bl) = (
         Literal::usize_unsuffixed(n),
         Literal::usize_unsuffixed(pp),
         Literal::usize_unsuffixed(bb),
     );
-    let all: Vec<usize> = (0..pp).collect();
     let q = Param::Joints("q", Input::Q);
     let qd = Param::Joints("qd", Input::Qd);
     let qdd = Param::Joints("qdd", Input::Qdd);
-    let names: Vec<&str> = id.parameters.iter().map(|s| s.name.as_str()).collect();
-    let formulas: Vec<String> = (0..bb)
-        .map(|b| id.base.formula(b, &id.parameters))
-        .collect();
-    let (standard_doc, base_doc) = parameter_docs(&names, &formulas);
     let specs = [
         Fn {
             name: "regressor",
@@ -58,7 +86,7 @@ pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenS
             params: vec![q, qd, qdd],
             ret: quote!(::planar_arm::nalgebra::SMatrix<#F64, #nn, #pl>),
             doc: format!("The regressor Y(q, qd, qdd): `Y * standard_parameters() == inverse_dynamics(q, qd, qdd)`. {standard_doc}"),
-            method: d.regressor_method(&id.parameters, &all),
+            method: regressor,
             touch: TokenStream::new(),
             finish: Box::new(move |ids| matrix(n, pp, ids)),
         },
@@ -68,7 +96,7 @@ pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenS
             params: vec![],
             ret: quote!(::planar_arm::nalgebra::SVector<#F64, #pl>),
             doc: format!("The arm's standard parameters now (run-time parameters read from their fields). {standard_doc}"),
-            method: d.parameter_values_method(&id.parameters, None),
+            method: standard,
             touch: TokenStream::new(),
             finish: Box::new(vector),
         },
@@ -78,7 +106,7 @@ pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenS
             params: vec![q, qd, qdd],
             ret: quote!(::planar_arm::nalgebra::SMatrix<#F64, #nn, #bl>),
             doc: format!("The base regressor: the regressor's columns of the base parameters, `Y_b * base_parameters() == inverse_dynamics(q, qd, qdd)`. {base_doc}"),
-            method: d.regressor_method(&id.parameters, &id.base.columns),
+            method: base_regressor,
             touch: TokenStream::new(),
             finish: Box::new(move |ids| matrix(n, bb, ids)),
         },
@@ -88,7 +116,7 @@ pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenS
             params: vec![],
             ret: quote!(::planar_arm::nalgebra::SVector<#F64, #bl>),
             doc: format!("The arm's base parameters now. {base_doc}"),
-            method: d.parameter_values_method(&id.parameters, Some(&id.base)),
+            method: base,
             touch: TokenStream::new(),
             finish: Box::new(vector),
         },

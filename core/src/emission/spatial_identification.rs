@@ -2,19 +2,17 @@
 //! parameters per body (`programs::spatial_regressor`), their values, and the base regressor
 //! and base parameters found exactly ([`identification`](crate::methods::identification::spatial)).
 
-use proc_macro2::{Literal, TokenStream};
-use quote::quote;
+use proc_macro2::TokenStream;
 
-use super::function::{emit_fn, matrix, vector, Fn, Param};
 use super::header::Header;
+use super::identification::identification_impl;
 use crate::emit::EmitError;
 use crate::mechanics::spatial::SpatialArmSpec;
 use crate::methods::identification::spatial::{identification, SpatialIdentification};
 use crate::methods::Method;
-use crate::paths::{F64, STR};
 use crate::poly::Poly;
 use crate::programs::spatial_regressor::{regressor, standard_values};
-use crate::slp::{Input, Program};
+use crate::slp::Program;
 
 /// `impl ::planar_arm::Identification<N, P, B>` for a spatial arm, or nothing when its geometry
 /// is not exact (see [`identification`]).
@@ -28,81 +26,25 @@ pub fn spatial_identification(
     let Some(id) = identification(arm) else {
         return Ok(TokenStream::new());
     };
-    let n = arm.joints.len();
-    let (pp, bb) = (id.parameters.len(), id.base.columns.len());
-    let (nn, pl, bl) = (
-        Literal::usize_unsuffixed(n),
-        Literal::usize_unsuffixed(pp),
-        Literal::usize_unsuffixed(bb),
-    );
     let names: Vec<&str> = id.parameters.iter().map(|s| s.name.as_str()).collect();
-    let formulas: Vec<String> = (0..bb).map(|b| id.base.formula_named(b, &names)).collect();
+    let formulas: Vec<String> = (0..id.base.columns.len())
+        .map(|b| id.base.formula_named(b, &names))
+        .collect();
     let (standard_doc, base_doc) = docs(&names, &formulas);
-    let all: Vec<usize> = (0..pp).collect();
-    let q = Param::Joints("q", Input::Q);
-    let qd = Param::Joints("qd", Input::Qd);
-    let qdd = Param::Joints("qdd", Input::Qdd);
-    let specs = [
-        Fn {
-            name: "regressor",
-            generic: false,
-            params: vec![q, qd, qdd],
-            ret: quote!(::planar_arm::nalgebra::SMatrix<#F64, #nn, #pl>),
-            doc: format!("The regressor Y(q, qd, qdd): `Y * standard_parameters() == inverse_dynamics(q, qd, qdd)`. {standard_doc}"),
-            method: regressor(arm, &id.parameters, &all),
-            touch: TokenStream::new(),
-            finish: Box::new(move |ids| matrix(n, pp, ids)),
-        },
-        Fn {
-            name: "standard_parameters",
-            generic: false,
-            params: vec![],
-            ret: quote!(::planar_arm::nalgebra::SVector<#F64, #pl>),
-            doc: format!("The arm's standard parameters now (run-time parameters read from their fields). {standard_doc}"),
-            method: values(arm, &id, false),
-            touch: TokenStream::new(),
-            finish: Box::new(vector),
-        },
-        Fn {
-            name: "base_regressor",
-            generic: false,
-            params: vec![q, qd, qdd],
-            ret: quote!(::planar_arm::nalgebra::SMatrix<#F64, #nn, #bl>),
-            doc: format!("The base regressor: the regressor's columns of the base parameters, `Y_b * base_parameters() == inverse_dynamics(q, qd, qdd)`. {base_doc}"),
-            method: regressor(arm, &id.parameters, &id.base.columns),
-            touch: TokenStream::new(),
-            finish: Box::new(move |ids| matrix(n, bb, ids)),
-        },
-        Fn {
-            name: "base_parameters",
-            generic: false,
-            params: vec![],
-            ret: quote!(::planar_arm::nalgebra::SVector<#F64, #bl>),
-            doc: format!("The arm's base parameters now. {base_doc}"),
-            method: values(arm, &id, true),
-            touch: TokenStream::new(),
-            finish: Box::new(vector),
-        },
-    ];
-    let mut fns = Vec::new();
-    for f in &specs {
-        fns.push(emit_fn(n, f, None)?);
-    }
-    let Header {
-        impl_generics,
-        ty,
-        where_clause,
-        ..
-    } = header;
-    Ok(quote! {
-        #[automatically_derived]
-        #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
-        impl #impl_generics ::planar_arm::Identification<#nn, #pl, #bl> for #ty #where_clause {
-            const PARAMETERS: [&'static #STR; #pl] = [#(#names),*];
-            const BASE_PARAMETERS: [&'static #STR; #bl] = [#(#formulas),*];
-            #(#fns)*
-        }
-    })
+    let all: Vec<usize> = (0..id.parameters.len()).collect();
+    identification_impl(
+        arm.joints.len(),
+        header,
+        &names,
+        &formulas,
+        [
+            regressor(arm, &id.parameters, &all),
+            values(arm, &id, false),
+            regressor(arm, &id.parameters, &id.base.columns),
+            values(arm, &id, true),
+        ],
+        (&standard_doc, &base_doc),
+    )
 }
 
 /// The standard parameters' values, or with `base` the base parameters': each grouping's
