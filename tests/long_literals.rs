@@ -73,3 +73,31 @@ fn extreme_magnitudes_derive_too() {
     let want = reference::mass_matrix(&tiny.model(), &q);
     assert!((m - want).amax() <= 1e-13 * want.amax(), "{m} {want}");
 }
+
+/// A spatial arm whose exact tool pose and potential energy would overflow `EXACT`.
+#[derive(SpatialArm, Default)]
+struct FarReach {
+    #[arm(dh(a = 1e30, alpha = pi/2), mass = 1.3999999999999999, com = (-0.19999999999999998, 0, 0))]
+    shoulder: Revolute,
+    #[arm(dh(a = 1e30), mass = 1)]
+    elbow: Revolute,
+}
+
+#[test]
+fn a_spatial_arm_with_extreme_values_derives() {
+    use planar_arm::reference::spatial as spatial_reference;
+    use planar_arm::spatial::SpatialArm;
+    let arm = FarReach::default();
+    let model = arm.model();
+    let q = SVector::<f64, 2>::new(0.3, -0.8);
+    let (qd, qdd) = (
+        SVector::<f64, 2>::new(0.2, 0.5),
+        SVector::<f64, 2>::new(-1.0, 0.4),
+    );
+    let tau = arm.inverse_dynamics(&q, &qd, &qdd);
+    let want = spatial_reference::inverse_dynamics(&model, &q, &qd, &qdd);
+    assert!((tau - want).amax() <= 1e-12 * want.amax(), "{tau} {want}");
+    let pose = arm.tip_pose(&q).translation.vector;
+    let want = spatial_reference::tip_pose(&model, &q).translation.vector;
+    assert!((pose - want).amax() <= 1e-12 * want.amax());
+}

@@ -100,21 +100,29 @@ fn try_derive(input: &DeriveInput) -> Result<TokenStream, TokenStream> {
 
 /// The sizes (bits of the larger of numerator and denominator) above which literals become
 /// named constants, tried in turn: URDF's and MuJoCo's 17-digit decimals are about 60 bits.
-const NAMED_BITS: [u64; 3] = [48, 32, 20];
+pub(crate) const NAMED_BITS: [u64; 3] = [48, 32, 20];
 
 /// `spec` with every literal value of more than `bits` bits a named constant called by its
 /// shortest decimal (`0.000039175660390264734`), and how many there were.
 fn name_long_literals(spec: &ArmSpec<Poly>, bits: u64) -> (ArmSpec<Poly>, usize) {
     let mut count = 0;
-    let named = spec.map(|p| match p.as_rational() {
+    let named = spec.map(|p| {
+        let q = named_if_long(p, bits);
+        count += usize::from(q != *p);
+        q
+    });
+    (named, count)
+}
+
+/// `p` as a named constant if it is a literal of more than `bits` bits.
+pub(crate) fn named_if_long(p: &Poly, bits: u64) -> Poly {
+    match p.as_rational() {
         Some(r) if r.numer().abs().bits().max(r.denom().bits()) > bits => {
             let value = planar_arm_core::ring::to_f64(&r).unwrap_or(f64::NAN);
-            count += 1;
             Poly::param(planar_arm_core::Param::constant(&format!("{value}"), value))
         }
         _ => p.clone(),
-    });
-    (named, count)
+    }
 }
 
 /// Derives and emits `spec`. An arm whose values are all literals is derived over the

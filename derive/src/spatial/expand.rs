@@ -35,7 +35,22 @@ fn try_derive(input: &DeriveInput) -> Result<TokenStream, TokenStream> {
         return Err(syn::Error::new_spanned(&input.ident, "invalid arm").to_compile_error());
     };
     let header = crate::expand::header(input);
-    let mut tokens = planar_arm_core::spatial::generate_spatial(&spec, &header)
+    let generate = |spec: &_| planar_arm_core::spatial::generate_spatial(spec, &header);
+    // As for planar arms: literals whose exact coefficients overflow `EXACT` enter as named
+    // constants, fewer digits each round.
+    let mut generated = generate(&spec);
+    for bits in crate::expand::NAMED_BITS {
+        if generated.is_ok() {
+            break;
+        }
+        let named = spec.map_values(|p| crate::expand::named_if_long(p, bits));
+        if named != spec {
+            if let Ok(tokens) = generate(&named) {
+                generated = Ok(tokens);
+            }
+        }
+    }
+    let mut tokens = generated
         .map_err(|e| syn::Error::new_spanned(&input.ident, e.to_string()).to_compile_error())?;
     tokens.extend(joint_types(&arm));
     tokens.extend(crate::expand::param_accessors_of(

@@ -264,6 +264,60 @@ pub struct SpatialArmSpec {
     pub payload: Option<SpatialBody>,
 }
 
+impl SpatialArmSpec {
+    /// The same arm with every length, mass property, joint parameter, gravity and tool offset
+    /// mapped by `f` (angles and axes are kept).
+    #[must_use]
+    pub fn map_values(&self, f: impl Fn(&Poly) -> Poly) -> Self {
+        let f3 = |v: &[Poly; 3]| -> [Poly; 3] { core::array::from_fn(|i| f(&v[i])) };
+        let f6 = |v: &[Poly; 6]| -> [Poly; 6] { core::array::from_fn(|i| f(&v[i])) };
+        let joints = self
+            .joints
+            .iter()
+            .map(|j| SpatialJointSpec {
+                geometry: match &j.geometry {
+                    SpatialGeometry::Dh { a, alpha, d, theta } => SpatialGeometry::Dh {
+                        a: f(a),
+                        alpha: alpha.clone(),
+                        d: f(d),
+                        theta: theta.clone(),
+                    },
+                    SpatialGeometry::Mdh { a, alpha, d, theta } => SpatialGeometry::Mdh {
+                        a: f(a),
+                        alpha: alpha.clone(),
+                        d: f(d),
+                        theta: theta.clone(),
+                    },
+                    SpatialGeometry::Urdf { xyz, rpy, axis } => SpatialGeometry::Urdf {
+                        xyz: f3(xyz),
+                        rpy: rpy.clone(),
+                        axis: axis.clone(),
+                    },
+                },
+                kind: j.kind,
+                mass: f(&j.mass),
+                com: f3(&j.com),
+                inertia: f6(&j.inertia),
+                range: j.range.clone(),
+                armature: f(&j.armature),
+                damping: f(&j.damping),
+                frictionloss: f(&j.frictionloss),
+            })
+            .collect();
+        Self {
+            joints,
+            gravity: f3(&self.gravity),
+            tool_xyz: f3(&self.tool_xyz),
+            tool_rpy: self.tool_rpy.clone(),
+            payload: self.payload.as_ref().map(|p| SpatialBody {
+                mass: f(&p.mass),
+                com: f3(&p.com),
+                inertia: f6(&p.inertia),
+            }),
+        }
+    }
+}
+
 /// The unit vector along `v` (not zero): exact when `|v|^2` is the square of a rational, else
 /// each component a named constant `x/sqrt(n)`.
 #[must_use]
