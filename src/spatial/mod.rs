@@ -7,8 +7,13 @@
 //! solution in closed form; and [`Dynamics`](crate::Dynamics), the equations of motion planar
 //! arms have, with the same names (the inverse dynamics by the recursive Newton-Euler
 //! algorithm and the mass matrix by the composite-rigid-body algorithm, each unrolled at
-//! compile time in the links' own frames). The crate page's "Three-dimensional arms" works
-//! through the PUMA 560; `examples/puma.rs` draws its solutions.
+//! compile time in the links' own frames), with a payload at the tool (`payload`,
+//! `payload_com`, `payload_inertia(..)` on the struct) and `freeze`; and, for arms of exact
+//! geometry, [`Identification`](crate::Identification): ten standard parameters per link in
+//! Pinocchio's order and the exact base parameters. The crate page's "Three-dimensional arms"
+//! works through the PUMA 560; `examples/puma.rs` draws its solutions,
+//! `examples/puma_dynamics.rs` tracks a tool path and `examples/puma_identify.rs` identifies
+//! its base parameters from noisy torques.
 //!
 //! How the derive builds the code: each joint is `pre * motion(q) * post`, constant parts
 //! around one rotation about (or slide along) the joint's axis. Multiplied out exactly, with
