@@ -94,7 +94,7 @@ fn reconstruct(x: &BigInt, m: &BigInt) -> Option<Rational> {
     (t1.abs() <= bound && !t1.is_zero() && r1.gcd(&t1).is_one()).then(|| Rational::new(r1, t1))
 }
 
-/// Exact dependencies among the columns of a matrix: `sample(p, seed)` returns its columns
+/// Exact dependencies among the columns of a matrix: `sample(p, residues)` returns its columns
 /// modulo `p` at fresh points (the same number of rows for every column, more rows than
 /// independent columns), in the order elimination should take them. The kept columns (the
 /// first independent ones, in that order), and for each kept column the other columns it
