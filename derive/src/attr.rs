@@ -353,7 +353,7 @@ fn parse_crate(cx: &Ctxt, meta: &ParseNestedMeta<'_>, out: &mut Attrs) {
 }
 
 /// The known key closest to `key` by edit distance, if it is close enough to be a typo.
-pub(crate) fn nearest(key: &str, known: &[&'static str]) -> Option<&'static str> {
+pub(crate) fn nearest<'a>(key: &str, known: &[&'a str]) -> Option<&'a str> {
     known
         .iter()
         .map(|k| (levenshtein(key, k), *k))

@@ -46,6 +46,9 @@ impl<'a> SpatialArm<'a> {
                 );
             }
         }
+        if attrs.model.is_some() {
+            return Self::from_file(cx, input, attrs);
+        }
         let fields = match &input.data {
             Data::Struct(s) => match &s.fields {
                 Fields::Named(named) if !named.named.is_empty() => named,
@@ -112,6 +115,37 @@ impl<'a> SpatialArm<'a> {
         Some(Self {
             attrs,
             joints,
+            others,
+        })
+    }
+
+    /// An arm whose joints come from a model file: a struct of no joint fields.
+    fn from_file(cx: &Ctxt, input: &'a DeriveInput, attrs: SpatialAttrs) -> Option<Self> {
+        let Data::Struct(s) = &input.data else {
+            cx.error_spanned_by(
+                &input.ident,
+                "#[derive(SpatialArm)] reads a model file into a struct: write `struct Name;`",
+            );
+            return None;
+        };
+        let mut others = Vec::new();
+        for field in &s.fields {
+            if joint_kind(&field.ty).is_some()
+                || field.attrs.iter().any(|a| a.path().is_ident("arm"))
+            {
+                // #[arm(urdf = "..")] struct Ur5 { #[arm(dh(..))] waist: Revolute }
+                cx.error_spanned_by(
+                    field,
+                    "the joints come from the model file; remove this joint field (or the \
+                     `urdf`/`mjcf` key)",
+                );
+                return None;
+            }
+            others.push(field);
+        }
+        Some(Self {
+            attrs,
+            joints: Vec::new(),
             others,
         })
     }

@@ -99,7 +99,14 @@ pub struct SpatialAttrs {
     pub payload_inertia: [Option<Scalar>; 6],
     /// Where `payload_com` or `payload_inertia` was written, for an error without `payload`.
     pub payload_extras: Vec<TokenStream>,
+    /// A model file the joints come from: `urdf = ".."` or `mjcf = ".."`, with the chain's
+    /// `base` and `tip`.
+    pub model: Option<(ModelFormat, syn::LitStr)>,
+    pub base: Option<syn::LitStr>,
+    pub tip: Option<syn::LitStr>,
 }
+
+pub use crate::models::Format as ModelFormat;
 
 /// Where a list appears.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -128,6 +135,10 @@ const STRUCT_KEYS: &[&str] = &[
     "payload",
     "payload_com",
     "payload_inertia",
+    "urdf",
+    "mjcf",
+    "base",
+    "tip",
 ];
 pub const INERTIA_KEYS: [&str; 6] = ["xx", "yy", "zz", "xy", "xz", "yz"];
 
@@ -239,6 +250,7 @@ fn entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut SpatialA
         "inertia" | "payload_inertia" => inertia(cx, meta, &key, out),
         "tool" => tool(cx, meta, out),
         "crate" => krate(meta, out),
+        "urdf" | "mjcf" | "base" | "tip" => model_key(cx, meta, &key, out),
         _ => keyed_value(cx, meta, &key, out),
     };
     if let Err(err) = result {
@@ -260,6 +272,8 @@ fn form(key: &str) -> String {
         "gravity" => "gravity = (0, 0, -9.81)".to_string(),
         "range" => "range = (lower, upper)".to_string(),
         "crate" => "crate = \"path\"".to_string(),
+        "urdf" | "mjcf" => format!("{key} = \"models/arm.{key}\""),
+        "base" | "tip" => format!("{key} = \"link_name\""),
         _ => format!("{key} = <number>"),
     }
 }
@@ -549,6 +563,43 @@ fn krate(meta: &ParseNestedMeta<'_>, out: &mut SpatialAttrs) -> syn::Result<()> 
             "expected a path such as \"arm\" or \"::my_deps::planar_arm\"",
         )
     })?);
+    Ok(())
+}
+
+// #[arm(urdf = "models/ur5.urdf", base = "base_link", tip = "tool0")]
+fn model_key(
+    cx: &Ctxt,
+    meta: &ParseNestedMeta<'_>,
+    key: &str,
+    out: &mut SpatialAttrs,
+) -> syn::Result<()> {
+    let lit = meta
+        .value()?
+        .parse::<syn::LitStr>()
+        .map_err(|e| syn::Error::new(e.span(), format!("expected `{}`, a string", form(key))))?;
+    match key {
+        "base" => out.base = Some(lit),
+        "tip" => out.tip = Some(lit),
+        _ => {
+            let format = if key == "urdf" {
+                ModelFormat::Urdf
+            } else {
+                ModelFormat::Mjcf
+            };
+            if let Some((_, first)) = &out.model {
+                // #[arm(urdf = "a.urdf", mjcf = "b.xml")]
+                cx.error_spanned_by(
+                    &lit,
+                    format!(
+                        "the arm is already read from \"{}\"; an arm comes from one file",
+                        first.value()
+                    ),
+                );
+            } else {
+                out.model = Some((format, lit));
+            }
+        }
+    }
     Ok(())
 }
 

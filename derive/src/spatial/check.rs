@@ -39,8 +39,57 @@ fn not_negative(cx: &Ctxt, v: &Option<Scalar>, message: &str) -> bool {
     }
 }
 
+/// A valid arm: the engine's spec, its joints' names, and the file it was read from.
+pub struct Checked {
+    pub spec: SpatialArmSpec,
+    pub names: Vec<String>,
+    pub file: Option<crate::models::Imported>,
+}
+
+/// The joints of an arm read from a model file; `None` after recording the error.
+fn imported(cx: &Ctxt, arm: &SpatialArm<'_>) -> Option<Option<crate::models::Imported>> {
+    let a = &arm.attrs;
+    let Some((format, lit)) = &a.model else {
+        for lit in a.base.iter().chain(&a.tip) {
+            // #[arm(tip = "tool0")] on a hand-written arm
+            cx.error_spanned_by(
+                lit,
+                "`base` and `tip` choose the chain of a model file; they go with `urdf = \"..\"` \
+                 or `mjcf = \"..\"`",
+            );
+        }
+        return (a.base.is_none() && a.tip.is_none()).then_some(None);
+    };
+    if let Some(t) = a
+        .tool_xyz
+        .as_ref()
+        .map(|t| &t.tokens)
+        .or(a.tool_rpy.as_ref().map(|t| &t.tokens))
+    {
+        cx.error_spanned_by(
+            t,
+            "an arm read from a file has its tool frame at the file's `tip`: name that body or \
+             link with `tip = \"..\"`",
+        );
+        return None;
+    }
+    let name = |l: &Option<syn::LitStr>| l.as_ref().map(syn::LitStr::value);
+    match crate::models::import(
+        *format,
+        &lit.value(),
+        name(&a.base).as_deref(),
+        name(&a.tip).as_deref(),
+    ) {
+        Ok(file) => Some(Some(file)),
+        Err(e) => {
+            cx.error_spanned_by(lit, e.0);
+            None
+        }
+    }
+}
+
 /// Validates the parsed arm; `None` after recording errors in `cx`.
-pub fn check(cx: &Ctxt, arm: &SpatialArm<'_>) -> Option<SpatialArmSpec> {
+pub fn check(cx: &Ctxt, arm: &SpatialArm<'_>) -> Option<Checked> {
     let mut ok = true;
     for p in &arm.attrs.params {
         if let Err(msg) = arm.f64_field(&p.name) {
@@ -48,6 +97,7 @@ pub fn check(cx: &Ctxt, arm: &SpatialArm<'_>) -> Option<SpatialArmSpec> {
             ok = false;
         }
     }
+    let file = imported(cx, arm)?;
     let first = arm
         .joints
         .iter()
@@ -65,19 +115,37 @@ pub fn check(cx: &Ctxt, arm: &SpatialArm<'_>) -> Option<SpatialArmSpec> {
             None => ok = false,
         }
     }
+    ok &= joints.len() == arm.joints.len();
+    let mut names: Vec<String> = arm.joints.iter().map(SpatialJoint::name).collect();
+    if let Some(f) = &file {
+        joints.clone_from(&f.joints);
+        names.clone_from(&f.names);
+    }
     let a = &arm.attrs;
     let triple = |t: &Option<Spanned<[Poly; 3]>>, default: [Poly; 3]| {
         t.as_ref().map_or(default, |t| t.value.clone())
     };
     // Standard gravity down the base's z axis, as URDF and MuJoCo assume.
     let down = Poly::constant(ratio(-981, 100));
-    let gravity = triple(&a.gravity, [Poly::default(), Poly::default(), down]);
+    let from_file = file.as_ref().and_then(|f| f.gravity.clone());
+    let gravity = triple(
+        &a.gravity,
+        from_file.unwrap_or([Poly::default(), Poly::default(), down]),
+    );
     let tool_xyz = triple(
         &a.tool_xyz,
-        [Poly::default(), Poly::default(), Poly::default()],
+        file.as_ref().map_or_else(
+            || [Poly::default(), Poly::default(), Poly::default()],
+            |f| f.tool_xyz.clone(),
+        ),
     );
     let tool_rpy = a.tool_rpy.as_ref().map_or_else(
-        || [FixedAngle::zero(), FixedAngle::zero(), FixedAngle::zero()],
+        || {
+            file.as_ref().map_or_else(
+                || [FixedAngle::zero(), FixedAngle::zero(), FixedAngle::zero()],
+                |f| f.tool_rpy.clone(),
+            )
+        },
         |r| {
             r.value.clone().map(|x| FixedAngle {
                 radians: x.radians,
@@ -87,12 +155,16 @@ pub fn check(cx: &Ctxt, arm: &SpatialArm<'_>) -> Option<SpatialArmSpec> {
     );
     let payload = check_payload(cx, a);
     ok &= payload.is_ok();
-    (ok && joints.len() == arm.joints.len()).then(|| SpatialArmSpec {
-        joints,
-        gravity,
-        tool_xyz,
-        tool_rpy,
-        payload: payload.ok().flatten(),
+    ok.then(|| Checked {
+        spec: SpatialArmSpec {
+            joints,
+            gravity,
+            tool_xyz,
+            tool_rpy,
+            payload: payload.ok().flatten(),
+        },
+        names,
+        file,
     })
 }
 

@@ -9,7 +9,7 @@ use planar_arm_core::generate::Header;
 use planar_arm_core::paths::F64;
 
 use super::ast::SpatialArm;
-use super::check::check;
+use super::check::{check, Checked};
 use crate::ctxt::Ctxt;
 
 pub fn derive(input: &DeriveInput) -> TokenStream {
@@ -29,9 +29,9 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
 fn try_derive(input: &DeriveInput) -> Result<TokenStream, TokenStream> {
     let cx = Ctxt::new();
     let arm = SpatialArm::from_ast(&cx, input);
-    let spec = arm.as_ref().and_then(|arm| check(&cx, arm));
+    let checked = arm.as_ref().and_then(|arm| check(&cx, arm));
     cx.check()?;
-    let (Some(arm), Some(spec)) = (arm, spec) else {
+    let (Some(arm), Some(Checked { spec, names, file })) = (arm, checked) else {
         return Err(syn::Error::new_spanned(&input.ident, "invalid arm").to_compile_error());
     };
     let header = crate::expand::header(input);
@@ -53,6 +53,7 @@ fn try_derive(input: &DeriveInput) -> Result<TokenStream, TokenStream> {
     let mut tokens = generated
         .map_err(|e| syn::Error::new_spanned(&input.ident, e.to_string()).to_compile_error())?;
     tokens.extend(joint_types(&arm));
+    tokens.extend(joint_names(&arm, &names, file.as_ref(), &header));
     tokens.extend(crate::expand::param_accessors_of(
         arm.attrs
             .params
@@ -77,6 +78,41 @@ fn joint_types(arm: &SpatialArm<'_>) -> TokenStream {
         quote::quote_spanned!(syn::spanned::Spanned::span(ty)=> ::planar_arm::__private::#check::<#ty>();)
     });
     quote!(const _: () = { #(#checks)* };)
+}
+
+/// `JOINT_NAMES`, and for an arm read from a file, the file as a dependency of the user's
+/// crate (`include_bytes!` is how a derive makes cargo rebuild when a file it read changes).
+fn joint_names(
+    arm: &SpatialArm<'_>,
+    names: &[String],
+    file: Option<&crate::models::Imported>,
+    header: &planar_arm_core::generate::Header,
+) -> TokenStream {
+    let n = names.len();
+    let (impl_generics, ty, where_clause) =
+        (&header.impl_generics, &header.ty, &header.where_clause);
+    let mut doc = vec!["The joints' names, base first: the order of `q`.".to_string()];
+    let mut depend = TokenStream::new();
+    if let (Some(f), Some((_, lit))) = (file, &arm.attrs.model) {
+        doc[0] = format!(
+            "The joints' names in `{}`, base first: the order of `q`.",
+            lit.value()
+        );
+        doc.extend(f.notes.iter().cloned());
+        let path = f.path.display().to_string();
+        depend = quote!(
+            const _: &[u8] = ::core::include_bytes!(#path);
+        );
+    }
+    let doc = doc.join("\n\n");
+    quote! {
+        #[automatically_derived]
+        impl #impl_generics #ty #where_clause {
+            #[doc = #doc]
+            pub const JOINT_NAMES: [&'static str; #n] = [#(#names),*];
+        }
+        #depend
+    }
 }
 
 /// A stub impl whose methods are unreachable, emitted next to a compile error.

@@ -1,0 +1,115 @@
+//! Arms read from the model files users already have: `#[arm(urdf = "..")]` and
+//! `#[arm(mjcf = "..")]`. The file is read at compile time only (the user's program carries no
+//! XML parser): parsed into a [`tree::Tree`], cut to the serial [`chain::Chain`] from `base` to
+//! `tip`, and handed to the engine as the same exact arm the attributes would write.
+
+pub mod chain;
+pub mod frame;
+mod mjcf;
+pub mod tree;
+mod urdf;
+mod xml;
+
+use std::path::PathBuf;
+
+use planar_arm_core::mechanics::spatial::{
+    unit_axis, FixedAngle, SpatialGeometry, SpatialJointSpec,
+};
+use planar_arm_core::Poly;
+
+use tree::FileError;
+
+/// The format of a model file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    Urdf,
+    Mjcf,
+}
+
+/// What a spatial arm takes from its file.
+pub struct Imported {
+    pub joints: Vec<SpatialJointSpec>,
+    /// The joints' names in the file, in order.
+    pub names: Vec<String>,
+    pub tool_xyz: [Poly; 3],
+    pub tool_rpy: [FixedAngle; 3],
+    /// Gravity as the file states it (MJCF's `<option gravity>`), if it does.
+    pub gravity: Option<[Poly; 3]>,
+    /// The file's absolute path, so that the user's crate rebuilds when it changes.
+    pub path: PathBuf,
+    /// Notes for the generated docs: locked joints, what was ignored.
+    pub notes: Vec<String>,
+}
+
+/// The file `path` names, relative to the crate's `Cargo.toml`.
+fn resolve(path: &str) -> PathBuf {
+    let dir = std::env::var_os("CARGO_MANIFEST_DIR").map_or_else(PathBuf::new, PathBuf::from);
+    dir.join(path)
+}
+
+fn consts(v: &[planar_arm_core::ring::Rational; 3]) -> [Poly; 3] {
+    v.clone().map(Poly::constant)
+}
+
+/// Reads `path` and takes the chain from `base` to `tip`.
+pub fn import(
+    format: Format,
+    path: &str,
+    base: Option<&str>,
+    tip: Option<&str>,
+) -> Result<Imported, FileError> {
+    let full = resolve(path);
+    let text = std::fs::read_to_string(&full).map_err(|e| {
+        FileError(format!(
+            "cannot read `{path}` ({e}); the path is relative to the crate's Cargo.toml, here {}",
+            full.display()
+        ))
+    })?;
+    let tree = match format {
+        Format::Urdf => urdf::read(&xml::Xml::parse(path, &text)?)?,
+        Format::Mjcf => mjcf::read(path, &full, &text)?,
+    };
+    let chain = chain::chain(&tree, path, base, tip)?;
+    let mut notes = Vec::new();
+    if !chain.locked.is_empty() {
+        notes.push(format!(
+            "Locked at zero and merged into the link they hang from: {}.",
+            chain
+                .locked
+                .iter()
+                .map(|n| format!("`{n}`"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ));
+    }
+    notes.extend(tree.ignored.iter().cloned());
+    let names = chain.joints.iter().map(|j| j.joint.name.clone()).collect();
+    let joints = chain
+        .joints
+        .into_iter()
+        .map(|c| SpatialJointSpec {
+            geometry: SpatialGeometry::Urdf {
+                xyz: consts(&c.origin.xyz),
+                rpy: c.origin.rpy,
+                axis: unit_axis(&c.joint.axis),
+            },
+            kind: c.joint.kind,
+            mass: Poly::constant(c.body.mass),
+            com: consts(&c.body.com),
+            inertia: c.body.inertia.map(Poly::constant),
+            range: c.joint.range,
+            armature: Poly::constant(c.joint.armature),
+            damping: Poly::constant(c.joint.damping),
+            frictionloss: Poly::constant(c.joint.frictionloss),
+        })
+        .collect();
+    Ok(Imported {
+        joints,
+        names,
+        tool_xyz: consts(&chain.tool.xyz),
+        tool_rpy: chain.tool.rpy,
+        gravity: tree.gravity.as_ref().map(consts),
+        path: full,
+        notes,
+    })
+}
