@@ -113,3 +113,6 @@ pub fn import(
         notes,
     })
 }
+
+#[cfg(test)]
+mod tests;

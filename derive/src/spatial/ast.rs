@@ -46,7 +46,7 @@ impl<'a> SpatialArm<'a> {
                 );
             }
         }
-        if attrs.model.is_some() {
+        if attrs.model_written {
             return Self::from_file(cx, input, attrs);
         }
         let fields = match &input.data {

@@ -2,7 +2,8 @@
 //!
 //! On the struct: `gravity = (gx, gy, gz)`, `tool(xyz = (x, y, z), rpy = (r, p, y))`,
 //! `crate = "..."`, a payload held by the tool (`payload = m`, `payload_com = (x, y, z)`,
-//! `payload_inertia(xx, ..)` in the tool frame). On each joint field: one of `dh(a, alpha, d, theta)`,
+//! `payload_inertia(xx, ..)` in the tool frame), and `urdf = ".."` or `mjcf = ".."` with
+//! `base = ".."` and `tip = ".."` for an arm read from a model file. On each joint field: one of `dh(a, alpha, d, theta)`,
 //! `mdh(a, alpha, d, theta)` or `origin(xyz = (..), rpy = (..))` with `axis = (x, y, z)`; the
 //! link's `mass`, `com = (x, y, z)` and `inertia(xx, yy, zz, xy, xz, yz)`; the joint's `range`,
 //! `armature`, `damping`, `frictionloss`. Lengths and mass properties are exact numbers or
@@ -102,6 +103,7 @@ pub struct SpatialAttrs {
     /// A model file the joints come from: `urdf = ".."` or `mjcf = ".."`, with the chain's
     /// `base` and `tip`.
     pub model: Option<(ModelFormat, syn::LitStr)>,
+    pub model_written: bool,
     pub base: Option<syn::LitStr>,
     pub tip: Option<syn::LitStr>,
 }
@@ -573,6 +575,9 @@ fn model_key(
     key: &str,
     out: &mut SpatialAttrs,
 ) -> syn::Result<()> {
+    // Known to be an arm from a file even when the path cannot be read, so that no
+    // missing-joint error follows.
+    out.model_written |= key == "urdf" || key == "mjcf";
     let lit = meta
         .value()?
         .parse::<syn::LitStr>()
@@ -588,6 +593,7 @@ fn model_key(
             };
             if let Some((_, first)) = &out.model {
                 // #[arm(urdf = "a.urdf", mjcf = "b.xml")]
+                out.malformed = true;
                 cx.error_spanned_by(
                     &lit,
                     format!(

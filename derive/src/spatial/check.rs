@@ -49,6 +49,10 @@ pub struct Checked {
 /// The joints of an arm read from a model file; `None` after recording the error.
 fn imported(cx: &Ctxt, arm: &SpatialArm<'_>) -> Option<Option<crate::models::Imported>> {
     let a = &arm.attrs;
+    if a.model_written && (a.model.is_none() || a.malformed) {
+        // The key's error is reported; reading a file on top would only add to it.
+        return None;
+    }
     let Some((format, lit)) = &a.model else {
         for lit in a.base.iter().chain(&a.tip) {
             // #[arm(tip = "tool0")] on a hand-written arm

@@ -1,0 +1,154 @@
+//! Bad model files: each error names the file, the line and what is wrong.
+
+use super::{import, Format};
+
+/// A file written for one test, by absolute path (which `import` takes as it is).
+fn file(name: &str, text: &str) -> String {
+    let dir = std::env::temp_dir().join(format!("planar_arm_models_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path.display().to_string()
+}
+
+fn error(format: Format, path: &str, base: Option<&str>, tip: Option<&str>) -> String {
+    match import(format, path, base, tip) {
+        Ok(i) => panic!("{path} imported: {:?}", i.names),
+        Err(e) => e.0,
+    }
+}
+
+#[test]
+fn a_missing_file_says_where_it_was_looked_for() {
+    let e = error(Format::Urdf, "models/none.urdf", None, None);
+    assert!(e.starts_with("cannot read `models/none.urdf`"), "{e}");
+    assert!(e.contains("relative to the crate's Cargo.toml"), "{e}");
+}
+
+#[test]
+fn malformed_xml_names_the_line() {
+    let p = file(
+        "bad.urdf",
+        "<robot name=\"r\">\n  <link name=\"a\">\n</robot>\n",
+    );
+    let e = error(Format::Urdf, &p, None, None);
+    assert!(e.starts_with(&format!("{p}:3:")), "{e}");
+    assert!(e.contains("malformed XML"), "{e}");
+}
+
+#[test]
+fn an_unknown_tip_suggests_the_nearest_name() {
+    let e = error(Format::Urdf, "../models/ur5.urdf", None, Some("tool"));
+    assert!(e.contains("no body or link named `tool` for `tip`"), "{e}");
+    assert!(e.contains("did you mean `tool0`?"), "{e}");
+}
+
+#[test]
+fn a_branching_chain_needs_a_tip() {
+    let e = error(Format::Urdf, "../models/panda.urdf", None, None);
+    assert!(
+        e.contains(
+            "the chain branches at `panda_hand` into `panda_leftfinger` and `panda_rightfinger`"
+        ),
+        "{e}"
+    );
+    // Through a finger, its mimic joint is a coupling the chain cannot hold.
+    let e = error(
+        Format::Urdf,
+        "../models/panda.urdf",
+        None,
+        Some("panda_rightfinger"),
+    );
+    assert!(e.contains("mimics another"), "{e}");
+    assert!(e.starts_with("../models/panda.urdf:"), "{e}");
+}
+
+#[test]
+fn a_free_joint_on_the_chain_is_refused_with_its_line() {
+    let p = file(
+        "free.xml",
+        "<mujoco>\n<worldbody>\n<body name=\"ball\">\n  <freejoint/>\n  \
+         <geom size=\"0.1\"/>\n</body>\n</worldbody>\n</mujoco>\n",
+    );
+    let e = error(Format::Mjcf, &p, None, None);
+    assert!(e.starts_with(&format!("{p}:4:3:")), "{e}");
+    assert!(e.contains("hangs on the chain by a free joint"), "{e}");
+}
+
+#[test]
+fn a_tendon_coupling_chain_joints_is_refused() {
+    let p = file(
+        "tendon.xml",
+        "<mujoco>\n<worldbody>\n<body name=\"a\"><joint name=\"j1\"/><geom size=\"0.1\"/>\n\
+         <body name=\"b\"><joint name=\"j2\"/><geom size=\"0.1\"/></body></body>\n</worldbody>\n\
+         <tendon>\n  <fixed name=\"t\"><joint joint=\"j1\" coef=\"1\"/><joint joint=\"j2\" coef=\"-1\"/></fixed>\n</tendon>\n</mujoco>\n",
+    );
+    let e = error(Format::Mjcf, &p, None, None);
+    assert!(e.starts_with(&format!("{p}:7:3:")), "{e}");
+    assert!(e.contains("couples the chain's joint `j1`"), "{e}");
+}
+
+#[test]
+fn a_body_whose_inertia_needs_a_mesh_says_so() {
+    let p = file(
+        "mesh.xml",
+        "<mujoco>\n<worldbody>\n<body name=\"a\"><joint/>\n<geom type=\"mesh\" mesh=\"m\"/>\n</body>\n</worldbody>\n</mujoco>\n",
+    );
+    let e = error(Format::Mjcf, &p, None, None);
+    assert!(e.starts_with(&format!("{p}:4:1:")), "{e}");
+    assert!(
+        e.contains("`mesh` geom's mass properties need its shape"),
+        "{e}"
+    );
+}
+
+#[test]
+fn nothing_that_moves_is_an_error() {
+    let p = file("still.urdf", "<robot name=\"r\"><link name=\"a\"/></robot>");
+    let e = error(Format::Urdf, &p, None, None);
+    assert!(e.contains("no hinge or slide between `a` and `a`"), "{e}");
+}
+
+#[test]
+fn a_hinge_about_its_anchor_with_ref_reads_qpos() {
+    // A pendulum whose hinge sits 0.5 above the body origin, ref 90 degrees: the link frame is
+    // at the anchor and turned back by ref, so q = qpos.
+    let p = file(
+        "anchor.xml",
+        "<mujoco>\n<worldbody>\n<body name=\"p\" pos=\"0 0 1\">\n<joint name=\"h\" pos=\"0 0 0.5\" \
+         axis=\"0 1 0\" ref=\"90\"/>\n<geom type=\"sphere\" size=\"0.1\" mass=\"2\"/>\n</body>\n\
+         </worldbody>\n</mujoco>\n",
+    );
+    let i = import(Format::Mjcf, &p, None, None).unwrap();
+    assert_eq!(i.names, ["h"]);
+    let planar_arm_core::mechanics::spatial::SpatialGeometry::Urdf { xyz, rpy, .. } =
+        &i.joints[0].geometry
+    else {
+        panic!("not an origin joint");
+    };
+    use planar_arm_core::ring::{int, ratio};
+    use planar_arm_core::Poly;
+    assert_eq!(
+        xyz,
+        &[
+            Poly::default(),
+            Poly::default(),
+            Poly::constant(ratio(3, 2))
+        ]
+    );
+    assert_eq!(
+        rpy[1],
+        planar_arm_core::mechanics::spatial::FixedAngle::pi(ratio(-1, 2))
+    );
+    // The ball 0.5 below the anchor in the link's own (turned) frame: it hangs there at
+    // q = ref, where the turn and the fold cancel.
+    assert_eq!(
+        i.joints[0].com,
+        [
+            Poly::default(),
+            Poly::default(),
+            Poly::constant(ratio(-1, 2))
+        ]
+    );
+    assert_eq!(i.joints[0].mass, Poly::constant(int(2)));
+}
