@@ -46,12 +46,7 @@ fn arm(n: usize, seed: &mut u64) -> ArmSpec {
 }
 
 fn derive_and_emit(spec: &ArmSpec) -> (Derived, usize) {
-    let header = Header {
-        impl_generics: quote!(),
-        ty: quote!(Arm),
-        where_clause: quote!(),
-        fields: Vec::new(),
-    };
+    let header = Header::new(quote!(), quote!(Arm), quote!(), Vec::new());
     let d = Derived::new(spec);
     let tokens = generate(&d, &header).expect("representable");
     (d, count_tokens(tokens))

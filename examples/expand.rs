@@ -24,6 +24,8 @@ mod check;
 mod ctxt;
 #[path = "../derive/src/expand.rs"]
 mod expand;
+#[path = "../derive/src/models/mod.rs"]
+mod models;
 #[path = "../derive/src/spatial/mod.rs"]
 mod spatial;
 #[path = "../derive/src/value.rs"]

@@ -39,19 +39,19 @@ fn expand(n: usize) -> String {
     } else {
         &["upper", "fore", "hand"]
     };
-    let header = Header {
-        impl_generics: quote!(),
-        ty: match n {
+    let header = Header::new(
+        quote!(),
+        match n {
             0 => quote!(Polar),
             2 => quote!(Paper2),
             _ => quote!(Paper3),
         },
-        where_clause: quote!(),
-        fields: names[..arm.links.len()]
+        quote!(),
+        names[..arm.links.len()]
             .iter()
             .map(|s| Ident::new(s, Span::call_site()))
             .collect(),
-    };
+    );
     let mut tokens = generate(&derived, &header).expect("the paper's arms emit");
     tokens.extend(closed_forms(&derived, &header));
     // Not rewritten by `paths::qualify`, as the derive's output is not without a crate path:
@@ -114,15 +114,15 @@ fn expand_puma() -> String {
         tool_rpy: core::array::from_fn(|_| FixedAngle::zero()),
         payload: None,
     };
-    let header = Header {
-        impl_generics: quote!(),
-        ty: quote!(Puma560),
-        where_clause: quote!(),
-        fields: ["waist", "shoulder", "elbow", "wrist1", "wrist2", "wrist3"]
+    let header = Header::new(
+        quote!(),
+        quote!(Puma560),
+        quote!(),
+        ["waist", "shoulder", "elbow", "wrist1", "wrist2", "wrist3"]
             .iter()
             .map(|s| Ident::new(s, Span::call_site()))
             .collect(),
-    };
+    );
     let tokens = generate_spatial(&arm, &header).expect("the PUMA emits");
     let file: syn::File = syn::parse2(tokens).expect("generated code parses");
     prettyplease::unparse(&file)

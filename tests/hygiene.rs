@@ -249,14 +249,14 @@ mod determinism {
 
     fn expand(arm: &ArmSpec) -> String {
         let derived = Derived::new(arm);
-        let header = Header {
-            impl_generics: quote!(),
-            ty: quote!(Arm),
-            where_clause: quote!(),
-            fields: (1..=arm.links.len())
+        let header = Header::new(
+            quote!(),
+            quote!(Arm),
+            quote!(),
+            (1..=arm.links.len())
                 .map(|i| format_ident!("l{i}"))
                 .collect(),
-        };
+        );
         let mut tokens = generate(&derived, &header).expect("emits");
         tokens.extend(closed_forms(&derived, &header));
         tokens.to_string()

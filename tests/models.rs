@@ -1,6 +1,8 @@
 //! Arms read from model files (`models/`, copied with their licences) against the same arms
 //! written by hand with attributes: the same `EXACT` and the same numbers, bit for bit.
 
+#![allow(clippy::approx_constant)] // the file's 3.14159265359 is its value, not pi
+
 use planar_arm::nalgebra::SVector;
 use planar_arm::prelude::*;
 

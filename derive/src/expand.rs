@@ -62,12 +62,12 @@ fn renamed() -> Option<TokenStream> {
 pub(crate) fn header(input: &DeriveInput) -> Header {
     let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
     let ident = &input.ident;
-    Header {
-        impl_generics: impl_generics.to_token_stream(),
-        ty: quote!(#ident #ty_generics),
-        where_clause: where_clause.to_token_stream(),
-        fields: field_names(input),
-    }
+    Header::new(
+        impl_generics.to_token_stream(),
+        quote!(#ident #ty_generics),
+        where_clause.to_token_stream(),
+        field_names(input),
+    )
 }
 
 fn try_derive(input: &DeriveInput) -> Result<TokenStream, TokenStream> {

@@ -22,6 +22,10 @@ pub trait SpatialArm<const N: usize>: Dynamics<N> {
     /// The exact tool pose and gravity, as `const` data with `Display` and LaTeX.
     const EXACT: SpatialDerivation<N>;
 
+    /// The joints' names, base first, in the order of `q`: the joint fields' names, or for an
+    /// arm read from a model file the file's joint names (MuJoCo's `qpos` order).
+    const JOINT_NAMES: [&'static str; N];
+
     /// The tool frame in the base frame.
     fn tip_pose(&self, q: &SVector<f64, N>) -> Isometry3<f64>;
 
@@ -34,6 +38,50 @@ pub trait SpatialArm<const N: usize>: Dynamics<N> {
 
     /// The numeric description of the arm now (run-time parameters read from their fields).
     fn model(&self) -> SpatialModel<N>;
+
+    /// The arm with its current values as MJCF, which MuJoCo loads and this derive reads back
+    /// to the same dynamics (`#[arm(mjcf = "..")]`, `q` equal to MuJoCo's `qpos`): one body per
+    /// link named `JOINT_NAME_link`, the tool frame as a body `tool`, a payload merged into the
+    /// last link. Right-angle twists are written as whole degrees and read back exactly.
+    /// Inertias that break the triangle inequality (which MuJoCo refuses) set
+    /// `balanceinertia`, and the file says which: MuJoCo then uses their mean moment.
+    ///
+    /// ```
+    /// use planar_arm::prelude::*;
+    ///
+    /// #[derive(SpatialArm)]
+    /// struct PanTilt {
+    ///     #[arm(dh(d = 0.1, alpha = pi/2), mass = 1.0, inertia(xx = 0.01, yy = 0.01, zz = 0.01))]
+    ///     pan: Revolute,
+    ///     #[arm(dh(a = 0.3), mass = 0.5, com = (-0.15, 0, 0), inertia(xx = 0.001, yy = 0.004, zz = 0.004))]
+    ///     tilt: Revolute,
+    /// }
+    ///
+    /// let text = PanTilt { pan: Revolute, tilt: Revolute }.to_mjcf();
+    /// assert!(text.contains(r#"<joint name="tilt" type="hinge" axis="0 0 1"/>"#));
+    /// // The pan link's twist, as the tilt body's orientation: exactly 90 degrees about x.
+    /// assert!(text.contains(r#"<body name="tilt_link" pos="0 0 0.1" euler="0 0 90">"#));
+    /// ```
+    #[cfg(feature = "std")]
+    #[must_use]
+    fn to_mjcf(&self) -> std::string::String
+    where
+        Self: Sized,
+    {
+        super::export::mjcf(&self.model(), &Self::JOINT_NAMES, short_name::<Self>())
+    }
+
+    /// The arm with its current values as URDF, which Pinocchio and ROS load and this derive
+    /// reads back: links `base`, `JOINT_NAME_link` and `tool`. URDF holds neither armature nor
+    /// gravity; the file says in comments what of them it left out.
+    #[cfg(feature = "std")]
+    #[must_use]
+    fn to_urdf(&self) -> std::string::String
+    where
+        Self: Sized,
+    {
+        super::export::urdf(&self.model(), &Self::JOINT_NAMES, short_name::<Self>())
+    }
 
     /// Every joint configuration that puts the tool at `target`, in closed form, for six-joint
     /// arms of the classes of [`SpatialIk`](super::SpatialIk): each angle in (-pi, pi] or the
@@ -92,4 +140,12 @@ pub trait SpatialArm<const N: usize>: Dynamics<N> {
     ) -> Result<(Vector3<f64>, Vector3<f64>), ArmError> {
         super::statics::tip_wrench(&self.jacobian(q), q, tau)
     }
+}
+
+/// The type's name without its path, as a model's name.
+#[cfg(feature = "std")]
+fn short_name<T>() -> &'static str {
+    let full = core::any::type_name::<T>();
+    let base = full.split('<').next().unwrap_or(full);
+    base.rsplit("::").next().unwrap_or(base)
 }

@@ -33,6 +33,8 @@
 //! turn the tool, up to eight solutions in all.
 
 mod arm;
+#[cfg(feature = "std")]
+pub mod export;
 mod ik;
 mod joint;
 mod model;

@@ -3122,6 +3122,15 @@ Cost: 57 multiplications, 44 additions, 0 divisions, 5 sin_cos pairs.*/
             }),
         }
     };
+    ///The joints' names, base first: the order of `q`.
+    const JOINT_NAMES: [&'static ::core::primitive::str; 6] = [
+        "waist",
+        "shoulder",
+        "elbow",
+        "wrist1",
+        "wrist2",
+        "wrist3",
+    ];
     #[inline]
     fn model(&self) -> ::planar_arm::spatial::SpatialModel<6> {
         ::planar_arm::spatial::SpatialModel {

@@ -54,7 +54,7 @@ pub fn closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
             };
             quote! {
                 #[automatically_derived]
-                #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
+                #[allow(clippy::nursery, clippy::approx_constant)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops); a model file's 1.5707963 is its value, not pi/2
                 impl #impl_generics ::planar_arm::kinematics::ClosedFormIk<2> for #ty #where_clause {
                     type Target = ::planar_arm::nalgebra::Point2<#F64>;
                     #[doc = #doc]
@@ -65,7 +65,7 @@ pub fn closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
                     }
                 }
                 #[automatically_derived]
-                #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
+                #[allow(clippy::nursery, clippy::approx_constant)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops); a model file's 1.5707963 is its value, not pi/2
                 impl #impl_generics ::planar_arm::kinematics::TipForce for #ty #where_clause {
                     #[inline]
                     fn tip_force(&self, #q: &::planar_arm::nalgebra::SVector<#F64, 2>, #tau: &::planar_arm::nalgebra::SVector<#F64, 2>)
@@ -83,7 +83,7 @@ pub fn closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
             };
             quote! {
             #[automatically_derived]
-            #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
+            #[allow(clippy::nursery, clippy::approx_constant)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops); a model file's 1.5707963 is its value, not pi/2
             impl #impl_generics ::planar_arm::kinematics::ClosedFormIk<3> for #ty #where_clause {
                 type Target = ::planar_arm::nalgebra::Isometry2<#F64>;
                 /// Through the wrist point, as in the paper: the two-link solution for
@@ -95,7 +95,7 @@ pub fn closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
                 }
             }
             #[automatically_derived]
-            #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
+            #[allow(clippy::nursery, clippy::approx_constant)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops); a model file's 1.5707963 is its value, not pi/2
             impl #impl_generics ::planar_arm::kinematics::TipWrench for #ty #where_clause {
                 #[inline]
                 fn tip_wrench(&self, #q: &::planar_arm::nalgebra::SVector<#F64, 3>, #tau: &::planar_arm::nalgebra::SVector<#F64, 3>)
@@ -141,7 +141,7 @@ fn ik_impl(header: &Header, n: usize, doc: &str, solve: &TokenStream) -> TokenSt
     };
     quote! {
         #[automatically_derived]
-        #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
+        #[allow(clippy::nursery, clippy::approx_constant)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops); a model file's 1.5707963 is its value, not pi/2
         impl #impl_generics ::planar_arm::kinematics::ClosedFormIk<#nn> for #ty #where_clause {
             type Target = #target_ty;
             #[doc = #doc]
@@ -208,7 +208,7 @@ fn mixed_closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
     let statics = match d.arm.links.len() {
         2 => quote! {
             #[automatically_derived]
-            #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
+            #[allow(clippy::nursery, clippy::approx_constant)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops); a model file's 1.5707963 is its value, not pi/2
             impl #impl_generics ::planar_arm::kinematics::TipForce for #ty #where_clause {
                 /// By the generated Jacobian: `J^T F = tau`, a prismatic joint's entry of
                 /// `tau` a force along it.
@@ -221,7 +221,7 @@ fn mixed_closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
         },
         3 => quote! {
             #[automatically_derived]
-            #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
+            #[allow(clippy::nursery, clippy::approx_constant)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops); a model file's 1.5707963 is its value, not pi/2
             impl #impl_generics ::planar_arm::kinematics::TipWrench for #ty #where_clause {
                 /// By the generated Jacobian: `J^T (F, T) = tau`, a prismatic joint's entry of
                 /// `tau` a force along it.

@@ -136,12 +136,12 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
     let (dynamics, methods) = super::traits::split_dynamics(methods);
     Ok(quote! {
         #[automatically_derived]
-        #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
+        #[allow(clippy::nursery, clippy::approx_constant)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops); a model file's 1.5707963 is its value, not pi/2
         impl #impl_generics ::planar_arm::Dynamics<#nn> for #ty #where_clause {
             #(#dynamics)*
         }
         #[automatically_derived]
-        #[allow(clippy::nursery)]
+        #[allow(clippy::nursery, clippy::approx_constant)]
         impl #impl_generics ::planar_arm::PlanarArm<#nn> for #ty #where_clause {
             #exact
             #[inline]
@@ -196,7 +196,7 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
     let svt = quote!(::planar_arm::nalgebra::SVector<__T, #nn>);
     quote! {
         #[automatically_derived]
-        #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
+        #[allow(clippy::nursery, clippy::approx_constant)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops); a model file's 1.5707963 is its value, not pi/2
         impl #impl_generics ::planar_arm::Dynamics<#nn> for #ty #where_clause {
             fn mass_matrix #g(&self, _: #vt) -> #mt #body
             fn coriolis #g(&self, _: #vt, _: #vt) -> #svt #body

@@ -133,7 +133,7 @@ pub(crate) fn identification_impl(
     } = header;
     Ok(quote! {
         #[automatically_derived]
-        #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
+        #[allow(clippy::nursery, clippy::approx_constant)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops); a model file's 1.5707963 is its value, not pi/2
         impl #impl_generics ::planar_arm::Identification<#nn, #pl, #bl> for #ty #where_clause {
             const PARAMETERS: [&'static #STR; #pl] = [#(#names),*];
             const BASE_PARAMETERS: [&'static #STR; #bl] = [#(#formulas),*];

@@ -238,6 +238,11 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
     body.extend(frozen::variants(n, &hot, split.as_ref())?);
     body.extend(solved(n));
     body.push(exact(n, &d)?);
+    let (names, names_doc) = (&header.joint_names, &header.joint_names_doc);
+    body.push(quote! {
+        #[doc = #names_doc]
+        const JOINT_NAMES: [&'static #STR; #nn] = [#(#names),*];
+    });
     body.push(model(arm)?);
     body.push(inverse_kinematics(arm)?);
     let Header {
@@ -250,12 +255,12 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
     let identification = super::spatial_identification::spatial_identification(arm, header)?;
     Ok(quote! {
         #[automatically_derived]
-        #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)
+        #[allow(clippy::nursery, clippy::approx_constant)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops); a model file's 1.5707963 is its value, not pi/2
         impl #impl_generics ::planar_arm::Dynamics<#nn> for #ty #where_clause {
             #(#dynamics)*
         }
         #[automatically_derived]
-        #[allow(clippy::nursery)]
+        #[allow(clippy::nursery, clippy::approx_constant)]
         impl #impl_generics ::planar_arm::spatial::SpatialArm<#nn> for #ty #where_clause {
             #(#body)*
         }

@@ -34,7 +34,9 @@ fn try_derive(input: &DeriveInput) -> Result<TokenStream, TokenStream> {
     let (Some(arm), Some(Checked { spec, names, file })) = (arm, checked) else {
         return Err(syn::Error::new_spanned(&input.ident, "invalid arm").to_compile_error());
     };
-    let header = crate::expand::header(input);
+    let mut header = crate::expand::header(input);
+    header.joint_names.clone_from(&names);
+    header.joint_names_doc = joint_names_doc(&arm, file.as_ref());
     let generate = |spec: &_| planar_arm_core::spatial::generate_spatial(spec, &header);
     // As for planar arms: literals whose exact coefficients overflow `EXACT` enter as named
     // constants, fewer digits each round.
@@ -53,7 +55,14 @@ fn try_derive(input: &DeriveInput) -> Result<TokenStream, TokenStream> {
     let mut tokens = generated
         .map_err(|e| syn::Error::new_spanned(&input.ident, e.to_string()).to_compile_error())?;
     tokens.extend(joint_types(&arm));
-    tokens.extend(joint_names(&arm, &names, file.as_ref(), &header));
+    if let Some(f) = &file {
+        // `include_bytes!` is how a derive makes cargo rebuild the user's crate when a file it
+        // read changes.
+        let path = f.path.display().to_string();
+        tokens.extend(quote!(
+            const _: &[u8] = ::core::include_bytes!(#path);
+        ));
+    }
     tokens.extend(crate::expand::param_accessors_of(
         arm.attrs
             .params
@@ -80,39 +89,18 @@ fn joint_types(arm: &SpatialArm<'_>) -> TokenStream {
     quote!(const _: () = { #(#checks)* };)
 }
 
-/// `JOINT_NAMES`, and for an arm read from a file, the file as a dependency of the user's
-/// crate (`include_bytes!` is how a derive makes cargo rebuild when a file it read changes).
-fn joint_names(
-    arm: &SpatialArm<'_>,
-    names: &[String],
-    file: Option<&crate::models::Imported>,
-    header: &planar_arm_core::generate::Header,
-) -> TokenStream {
-    let n = names.len();
-    let (impl_generics, ty, where_clause) =
-        (&header.impl_generics, &header.ty, &header.where_clause);
-    let mut doc = vec!["The joints' names, base first: the order of `q`.".to_string()];
-    let mut depend = TokenStream::new();
-    if let (Some(f), Some((_, lit))) = (file, &arm.attrs.model) {
-        doc[0] = format!(
-            "The joints' names in `{}`, base first: the order of `q`.",
-            lit.value()
-        );
-        doc.extend(f.notes.iter().cloned());
-        let path = f.path.display().to_string();
-        depend = quote!(
-            const _: &[u8] = ::core::include_bytes!(#path);
-        );
-    }
-    let doc = doc.join("\n\n");
-    quote! {
-        #[automatically_derived]
-        impl #impl_generics #ty #where_clause {
-            #[doc = #doc]
-            pub const JOINT_NAMES: [&'static str; #n] = [#(#names),*];
-        }
-        #depend
-    }
+/// `JOINT_NAMES`' documentation: for an arm read from a file, the file and what the reading
+/// locked or ignored.
+fn joint_names_doc(arm: &SpatialArm<'_>, file: Option<&crate::models::Imported>) -> String {
+    let (Some(f), Some((_, lit))) = (file, &arm.attrs.model) else {
+        return "The joints' names, base first: the order of `q`.".to_string();
+    };
+    let mut doc = vec![format!(
+        "The joints' names in `{}`, base first: the order of `q`.",
+        lit.value()
+    )];
+    doc.extend(f.notes.iter().cloned());
+    doc.join("\n\n")
 }
 
 /// A stub impl whose methods are unreachable, emitted next to a compile error.
@@ -164,6 +152,7 @@ fn stub(input: &DeriveInput) -> TokenStream {
             const EXACT: ::planar_arm::exact::SpatialDerivation<#nn> = ::planar_arm::exact::SpatialDerivation {
                 expansion: ::core::option::Option::None,
             };
+            const JOINT_NAMES: [&'static str; #nn] = [""; #nn];
             fn tip_pose(&self, _: #v) -> ::planar_arm::nalgebra::Isometry3<#F64> #body
             fn link_poses(&self, _: #v) -> [::planar_arm::nalgebra::Isometry3<#F64>; #nn] #body
             fn jacobian<__T: ::planar_arm::Real>(&self, _: #vt) -> ::planar_arm::nalgebra::SMatrix<__T, 6, #nn> #body

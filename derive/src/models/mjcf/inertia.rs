@@ -22,6 +22,13 @@ fn f(r: &Rational) -> f64 {
 /// `<inertial pos quat mass diaginertia|fullinertia>`, in the body's frame.
 pub fn inertial(a: &Attrs<'_, '_>, c: &Compiler) -> Result<Inertial, FileError> {
     let mass = a.number("mass")?.unwrap_or_else(|| int(0));
+    let oriented = ["quat", "axisangle", "euler", "xyaxes", "zaxis"]
+        .iter()
+        .any(|k| a.node.attribute(*k).is_some());
+    if oriented && a.node.attribute("fullinertia").is_some() {
+        // As MuJoCo's schema: a full tensor is in the body's axes.
+        return Err(a.error("an <inertial> with `fullinertia` takes no orientation"));
+    }
     let inertia: [Rational; 6] = if let Some(full) = a.numbers("fullinertia", 6)? {
         // MuJoCo's order: ixx iyy izz ixy ixz iyz, as ours.
         core::array::from_fn(|i| full[i].clone())
@@ -47,6 +54,26 @@ pub fn inertial(a: &Attrs<'_, '_>, c: &Compiler) -> Result<Inertial, FileError> 
     }
     let pos = a.triple("pos")?.unwrap_or_default();
     Ok(body.placed(&pos, &orientation(a, c)?))
+}
+
+/// Whether the principal moments of the tensor (xx, yy, zz, xy, xz, yz) break `A + B >= C`:
+/// the second moment `tr/2 E - I` is not positive semi-definite (a principal minor is
+/// negative), decided exactly.
+pub fn breaks_triangle(i: &[Rational; 6]) -> bool {
+    let half = (&i[0] + &i[1] + &i[2]) / int(2);
+    let [xx, yy, zz, xy, xz, yz] = i.clone();
+    let (a, b, c) = (&half - &xx, &half - &yy, &half - &zz);
+    let (d, e, f) = (-xy, -xz, -yz);
+    let minors = [
+        a.clone(),
+        b.clone(),
+        c.clone(),
+        &a * &b - &d * &d,
+        &a * &c - &e * &e,
+        &b * &c - &f * &f,
+        &a * (&b * &c - &f * &f) - &d * (&d * &c - &f * &e) + &e * (&d * &f - &b * &e),
+    ];
+    minors.iter().any(num_traits::Signed::is_negative)
 }
 
 /// A geom's solid, in the body's frame; `None` for a geom of no mass.
@@ -211,6 +238,25 @@ mod tests {
         // A capsule of zero length is a sphere: 2/5 m r^2 every way.
         let g = body("<geom type=\"capsule\" size=\"0.5 0\" mass=\"2\"/>");
         assert_eq!(g.inertia[..3], [ratio(1, 5), ratio(1, 5), ratio(1, 5)]);
+    }
+
+    #[test]
+    fn the_triangle_inequality_is_decided_exactly() {
+        let t = |v: [i64; 6]| v.map(int);
+        assert!(!breaks_triangle(&t([1, 1, 2, 0, 0, 0])));
+        assert!(breaks_triangle(&t([1, 1, 3, 0, 0, 0])));
+        // Corke's PUMA waist: only Iyy.
+        assert!(breaks_triangle(&t([0, 7, 0, 0, 0, 0])));
+        // A valid tensor turned off its axes stays valid: diag(2, 3, 4) about z by 45 degrees.
+        let turned = [
+            ratio(5, 2),
+            ratio(5, 2),
+            int(4),
+            ratio(1, 2),
+            int(0),
+            int(0),
+        ];
+        assert!(!breaks_triangle(&turned));
     }
 
     #[test]

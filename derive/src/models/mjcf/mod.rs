@@ -93,6 +93,7 @@ pub fn read(path: &str, full: &Path, text: &str) -> Result<Tree, FileError> {
     };
     let mut from_geoms = "auto".to_string();
     let mut autolimits = true;
+    let mut balance = false;
     for c in top.iter().filter(|n| n.has_tag_name("compiler")) {
         match c.attribute("angle") {
             Some("radian") => compiler.degrees = false,
@@ -119,13 +120,10 @@ pub fn read(path: &str, full: &Path, text: &str) -> Result<Tree, FileError> {
         if let Some(v) = c.attribute("autolimits") {
             autolimits = v == "true";
         }
-        for key in [
-            "settotalmass",
-            "boundmass",
-            "boundinertia",
-            "balanceinertia",
-            "fusestatic",
-        ] {
+        if let Some(v) = c.attribute("balanceinertia") {
+            balance = v == "true";
+        }
+        for key in ["settotalmass", "boundmass", "boundinertia"] {
             if c.attribute(key)
                 .is_some_and(|v| v != "false" && v != "-1" && v != "0")
             {
@@ -142,6 +140,7 @@ pub fn read(path: &str, full: &Path, text: &str) -> Result<Tree, FileError> {
         compiler: &compiler,
         from_geoms: &from_geoms,
         autolimits,
+        balance,
         tree: Tree::default(),
     };
     reader.tree.gravity = Some(gravity(&files, &top)?);
@@ -192,6 +191,9 @@ struct Reader<'a, 't> {
     compiler: &'a Compiler,
     from_geoms: &'a str,
     autolimits: bool,
+    /// `balanceinertia`: an inertia that breaks the triangle inequality becomes its mean
+    /// moment about every axis.
+    balance: bool,
     tree: Tree,
 }
 
@@ -438,14 +440,22 @@ impl<'a, 't> Reader<'a, 't> {
             _ => explicit.is_none(),
         };
         if !use_geoms {
-            return explicit
-                .map(|n| {
-                    inertia::inertial(
-                        &Attrs::new(self.files, self.defaults, *n, class),
-                        self.compiler,
-                    )
-                })
-                .transpose();
+            let Some(n) = explicit else {
+                return Ok(None);
+            };
+            let a = Attrs::new(self.files, self.defaults, *n, class);
+            let mut body = inertia::inertial(&a, self.compiler)?;
+            if inertia::breaks_triangle(&body.inertia) {
+                if !self.balance {
+                    return Err(a.error(
+                        "the inertia breaks the triangle inequality (A + B >= C), which MuJoCo \
+                         refuses unless <compiler balanceinertia=\"true\">",
+                    ));
+                }
+                let mean = (&body.inertia[0] + &body.inertia[1] + &body.inertia[2]) / int(3);
+                body.inertia = [mean.clone(), mean.clone(), mean, int(0), int(0), int(0)];
+            }
+            return Ok(Some(body));
         }
         let mut sum: Option<Inertial> = None;
         for g in elements.iter().filter(|n| n.has_tag_name("geom")) {
