@@ -15,6 +15,11 @@
 //! `examples/puma_dynamics.rs` tracks a tool path and `examples/puma_identify.rs` identifies
 //! its base parameters from noisy torques.
 //!
+//! An arm can also come from its model file, `#[arm(urdf = "..")]` or `#[arm(mjcf = "..")]`
+//! with `base` and `tip`, read at compile time with `q` equal to MuJoCo's `qpos`; and any arm
+//! goes back out with [`SpatialArm::to_mjcf`] and [`SpatialArm::to_urdf`] (the README's "Arms
+//! from model files"; `examples/models.rs`).
+//!
 //! How the derive builds the code: each joint is `pre * motion(q) * post`, constant parts
 //! around one rotation about (or slide along) the joint's axis. Multiplied out exactly, with
 //! twists at multiples of `pi/2` folding to 0 and 1 and consecutive parallel axes collapsing
