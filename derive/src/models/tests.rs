@@ -152,3 +152,75 @@ fn a_hinge_about_its_anchor_with_ref_reads_qpos() {
     );
     assert_eq!(i.joints[0].mass, Poly::constant(int(2)));
 }
+
+#[test]
+fn frames_and_orientations_compose_as_mujoco_places_bodies() {
+    // A <frame> turned 90 degrees about z holding a body shifted along its x: the body sits
+    // on the world's y axis, turned with the frame; its xyaxes turn it back.
+    let p = file(
+        "frame.xml",
+        "<mujoco>\n<worldbody>\n<frame pos=\"1 0 0\" euler=\"0 0 90\">\n\
+         <body name=\"b\" pos=\"2 0 0\" xyaxes=\"0 -1 0 1 0 0\">\n<joint name=\"j\" axis=\"1 0 0\"/>\n\
+         <geom type=\"sphere\" size=\"0.1\" mass=\"1\"/>\n</body>\n</frame>\n</worldbody>\n</mujoco>\n",
+    );
+    let i = import(Format::Mjcf, &p, None, None).unwrap();
+    let planar_arm_core::mechanics::spatial::SpatialGeometry::Urdf { xyz, rpy, axis } =
+        &i.joints[0].geometry
+    else {
+        panic!("not an origin joint");
+    };
+    use planar_arm_core::ring::int;
+    use planar_arm_core::Poly;
+    // (1, 0, 0) + Rz(90) (2, 0, 0) = (1, 2, 0).
+    assert_eq!(
+        xyz,
+        &[
+            Poly::constant(int(1)),
+            Poly::constant(int(2)),
+            Poly::default()
+        ]
+    );
+    // Rz(90) then xyaxes (x = -y, y = x), a turn of -90 about z: no turn at all.
+    assert!(rpy
+        .iter()
+        .all(|a| *a == planar_arm_core::mechanics::spatial::FixedAngle::zero()));
+    assert_eq!(axis[0], Poly::constant(int(1)));
+}
+
+#[test]
+fn default_classes_and_childclass_supply_attributes() {
+    let p = file(
+        "classes.xml",
+        "<mujoco>\n<default>\n<joint damping=\"0.5\"/>\n<default class=\"arm\">\n\
+         <joint axis=\"0 1 0\" armature=\"0.1\"/>\n<geom type=\"capsule\" size=\"0.05\" fromto=\"0 0 0 0 0 1\" mass=\"2\"/>\n\
+         </default>\n</default>\n<worldbody>\n<body name=\"a\" childclass=\"arm\">\n<joint name=\"j\"/>\n\
+         <geom/>\n</body>\n</worldbody>\n</mujoco>\n",
+    );
+    let i = import(Format::Mjcf, &p, None, None).unwrap();
+    use planar_arm_core::ring::{int, ratio};
+    use planar_arm_core::Poly;
+    let j = &i.joints[0];
+    // damping from main, armature and axis from `arm`, the geom's mass and fromto too.
+    assert_eq!(j.damping, Poly::constant(ratio(1, 2)));
+    assert_eq!(j.armature, Poly::constant(ratio(1, 10)));
+    assert_eq!(j.mass, Poly::constant(int(2)));
+    assert_eq!(j.com[2], Poly::constant(ratio(1, 2)));
+    let planar_arm_core::mechanics::spatial::SpatialGeometry::Urdf { axis, .. } = &j.geometry
+    else {
+        panic!("not an origin joint");
+    };
+    assert_eq!(axis[1], Poly::constant(int(1)));
+}
+
+#[test]
+fn an_inertial_with_both_a_tensor_and_an_orientation_is_refused_as_mujoco_does() {
+    let p = file(
+        "both.xml",
+        "<mujoco>\n<worldbody>\n<body name=\"a\"><joint/>\n\
+         <inertial pos=\"0 0 0\" euler=\"0 0 90\" mass=\"1\" fullinertia=\"1 2 3 0 0 0\"/>\n\
+         </body>\n</worldbody>\n</mujoco>\n",
+    );
+    let e = error(Format::Mjcf, &p, None, None);
+    assert!(e.starts_with(&format!("{p}:4:1:")), "{e}");
+    assert!(e.contains("takes no orientation"), "{e}");
+}
