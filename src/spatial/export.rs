@@ -231,20 +231,7 @@ pub fn mjcf<const N: usize>(model: &SpatialModel<N>, names: &[&str; N], name: &s
             names[k],
             nums(s.axis.as_slice())
         );
-        let mut held = *link;
-        let mut tensor_at = s.post;
-        if k + 1 == N {
-            // The payload rides on the last link, placed by the tool frame.
-            if let Some(p) = &model.payload {
-                let tool = Frame {
-                    r: model.tool.rotation.to_rotation_matrix().into_inner(),
-                    p: model.tool.translation.vector,
-                };
-                held = merge(link, &s.post, p, &s.post.then(&tool));
-                tensor_at = Frame::IDENTITY;
-            }
-        }
-        let (com, inertia) = placed(&held, &tensor_at);
+        let (held, com, inertia) = carried(model, k, link, &s.post);
         if breaks_triangle(&inertia) {
             unbalanced.push(names[k]);
         }
@@ -266,11 +253,7 @@ pub fn mjcf<const N: usize>(model: &SpatialModel<N>, names: &[&str; N], name: &s
         before = s.post;
         depth += 1;
     }
-    let tool = Frame {
-        r: model.tool.rotation.to_rotation_matrix().into_inner(),
-        p: model.tool.translation.vector,
-    };
-    let t = before.then(&tool);
+    let t = before.then(&tool_frame(model));
     let [r, p, y] = rpy(&t.r);
     let _ = writeln!(
         body,
@@ -315,6 +298,34 @@ pub fn mjcf<const N: usize>(model: &SpatialModel<N>, names: &[&str; N], name: &s
     let _ = writeln!(out, "  </worldbody>");
     let _ = writeln!(out, "</mujoco>");
     out
+}
+
+/// The tool frame in the last link's frame.
+fn tool_frame<const N: usize>(model: &SpatialModel<N>) -> Frame {
+    Frame {
+        r: model.tool.rotation.to_rotation_matrix().into_inner(),
+        p: model.tool.translation.vector,
+    }
+}
+
+/// What body `k` of a file carries, in the file's body frame (after the joint's motion; the
+/// link's own frame is `post` there): the link, and on the last the payload, placed by the tool
+/// frame. Its mass properties, centre of mass and tensor about it in the body's axes.
+fn carried<const N: usize>(
+    model: &SpatialModel<N>,
+    k: usize,
+    link: &SpatialLink,
+    post: &Frame,
+) -> (SpatialLink, Vector3<f64>, Matrix3<f64>) {
+    let (held, at) = match &model.payload {
+        Some(p) if k + 1 == N => (
+            merge(link, post, p, &post.then(&tool_frame(model))),
+            Frame::IDENTITY,
+        ),
+        _ => (*link, *post),
+    };
+    let (com, inertia) = placed(&held, &at);
+    (held, com, inertia)
 }
 
 /// Two bodies merged, each placed in a common frame.
@@ -377,19 +388,7 @@ pub fn urdf<const N: usize>(model: &SpatialModel<N>, names: &[&str; N], name: &s
         let s = split(&joint.geometry, joint.kind);
         let at = before.then(&s.pre);
         let child = std::format!("{}_link", names[k]);
-        let mut held = *link;
-        let mut tensor_at = s.post;
-        if k + 1 == N {
-            if let Some(p) = &model.payload {
-                let tool = Frame {
-                    r: model.tool.rotation.to_rotation_matrix().into_inner(),
-                    p: model.tool.translation.vector,
-                };
-                held = merge(link, &s.post, p, &s.post.then(&tool));
-                tensor_at = Frame::IDENTITY;
-            }
-        }
-        let (com, i) = placed(&held, &tensor_at);
+        let (held, com, i) = carried(model, k, link, &s.post);
         let _ = writeln!(out, "  <link name=\"{child}\">");
         let _ = writeln!(
             out,
@@ -444,11 +443,7 @@ pub fn urdf<const N: usize>(model: &SpatialModel<N>, names: &[&str; N], name: &s
         parent = child;
         before = s.post;
     }
-    let tool = Frame {
-        r: model.tool.rotation.to_rotation_matrix().into_inner(),
-        p: model.tool.translation.vector,
-    };
-    let t = before.then(&tool);
+    let t = before.then(&tool_frame(model));
     let [r, p, y] = rpy(&t.r);
     let _ = writeln!(out, "  <link name=\"tool\"/>");
     let _ = writeln!(
