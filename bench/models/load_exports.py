@@ -54,6 +54,9 @@ import mujoco
 import numpy as np
 import pinocchio as pin
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from fixtures import line, check_spd  # noqa: E402  (shared with the models' fixture)
+
 ROOT = Path(__file__).resolve().parents[2]
 EXPORT = ROOT / "tests" / "data" / "export"
 SEED = 20240612
@@ -69,10 +72,6 @@ def log(*args):
 def fmt(x):
     # repr of a Python float is the shortest string that reads back to the same double.
     return repr(float(x))
-
-
-def line(key, values):
-    return key + " " + " ".join(fmt(v) for v in np.asarray(values, dtype=float).ravel())
 
 
 def mx(a):
@@ -115,16 +114,6 @@ def load(what, name, fn, path, loadlog):
     loadlog.append(f"{name} ({what}): " + ("; ".join(msgs) if msgs else "loaded, nothing printed"))
     log(loadlog[-1])
     return res, exc
-
-
-def check_spd(name, M):
-    asym = float(np.max(np.abs(M - M.T)))
-    if asym > TOL * max(1.0, float(np.max(np.abs(M)))):
-        raise SystemExit(f"{name}: M not symmetric ({asym})")
-    eig = np.linalg.eigvalsh(0.5 * (M + M.T))
-    if eig[0] <= 0:
-        raise SystemExit(f"{name}: M not positive definite (eigenvalues {eig})")
-    return asym, float(eig[0])
 
 
 def random_state(rng, slide_ranges):
