@@ -103,6 +103,54 @@ impl<const N: usize> Model<N> {
         }
     }
 
+    /// The same arm as a spatial arm in MuJoCo's x-y plane: each joint a URDF-style joint at the
+    /// previous link's end (the base origin for the first), a hinge about `+z` or a slide
+    /// along the previous link's `x`; each link's centre of mass at `(x, y, 0)`; gravity
+    /// `(0, -g, 0)`; the tool at the last link's end; the payload as the tool's. A planar body
+    /// has one moment of inertia, about `z`: the tensor's out-of-plane moments, which a planar
+    /// motion never feels, are set equal to it, so that the tensor meets the triangle
+    /// inequality MuJoCo requires. Its dynamics are this arm's (`tests/models.rs` checks the
+    /// spatial reference against the planar arms).
+    #[must_use]
+    pub fn to_spatial(&self) -> crate::spatial::SpatialModel<N> {
+        use crate::spatial::{JointGeometry, SpatialJoint, SpatialLink, SpatialModel};
+        use nalgebra::{Isometry3, Matrix3, Vector3};
+        let body = |mass: f64, inertia: f64, com: Vector2<f64>| SpatialLink {
+            mass,
+            com: Vector3::new(com.x, com.y, 0.0),
+            inertia: Matrix3::from_diagonal_element(inertia),
+        };
+        let mut before = 0.0;
+        let joints = self.links.map(|l| {
+            let axis = match l.joint {
+                crate::Joint::Revolute => Vector3::z(),
+                crate::Joint::Prismatic => Vector3::x(),
+            };
+            let geometry = JointGeometry::Urdf {
+                xyz: Vector3::new(before, 0.0, 0.0),
+                rpy: Vector3::zeros(),
+                axis,
+            };
+            before = l.length;
+            SpatialJoint {
+                geometry,
+                kind: l.joint,
+                range: l.range,
+                armature: l.armature,
+                damping: l.damping,
+                frictionloss: l.frictionloss,
+            }
+        });
+        let p = &self.payload;
+        SpatialModel {
+            joints,
+            links: self.links.map(|l| body(l.mass, l.inertia, l.com)),
+            gravity: Vector3::new(0.0, -self.gravity, 0.0),
+            tool: Isometry3::translation(before, 0.0, 0.0),
+            payload: (p.mass != 0.0 || p.inertia != 0.0).then(|| body(p.mass, p.inertia, p.com)),
+        }
+    }
+
     /// The same arm holding `payload` at its tip (in place of any payload it held).
     #[must_use]
     pub const fn with_payload(self, payload: Payload) -> Self {

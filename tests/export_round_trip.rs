@@ -7,7 +7,7 @@
 #[path = "common/export_arms.rs"]
 mod export_arms;
 
-use export_arms::{DhArm, MdhArm, OriginArm};
+use export_arms::{DhArm, MdhArm, OriginArm, PlanarMix};
 use planar_arm::nalgebra::SVector;
 use planar_arm::prelude::*;
 
@@ -32,6 +32,15 @@ struct MdhUrdfBack;
 struct Ur5;
 
 #[derive(SpatialArm)]
+#[arm(mjcf = "tests/data/export/planar_mix.xml", tip = "tool")]
+struct PlanarMjcfBack;
+
+/// URDF holds no gravity: the plane's is given on the struct.
+#[derive(SpatialArm)]
+#[arm(urdf = "tests/data/export/planar_mix.urdf", tip = "tool", gravity = (0, -9.81, 0))]
+struct PlanarUrdfBack;
+
+#[derive(SpatialArm)]
 #[arm(mjcf = "tests/data/export/ur5.xml", tip = "tool")]
 struct Ur5MjcfBack;
 
@@ -52,17 +61,26 @@ fn close(a: &[f64], b: &[f64], what: &str) {
     assert!(d < 1e-12, "{what}: {d:e}\n{a:?}\n{b:?}");
 }
 
-fn same<const N: usize, A: SpatialArm<N>, B: SpatialArm<N>>(a: &A, b: &B, what: &str) {
-    assert_eq!(A::JOINT_NAMES, B::JOINT_NAMES, "{what}");
+/// A few states, the same for every arm.
+fn states<const N: usize>() -> Vec<[SVector<f64, N>; 3]> {
     let mut x = 0.37_f64;
     let mut next = move || {
         x = (x * 9301.0 + 49297.0) % 233_280.0;
         x / 233_280.0 - 0.5
     };
-    for _ in 0..4 {
-        let q = SVector::<f64, N>::from_fn(|_, _| next());
-        let qd = SVector::<f64, N>::from_fn(|_, _| 2.0 * next());
-        let qdd = SVector::<f64, N>::from_fn(|_, _| 2.0 * next());
+    (0..4)
+        .map(|_| {
+            let q = SVector::<f64, N>::from_fn(|_, _| next());
+            let qd = SVector::<f64, N>::from_fn(|_, _| 2.0 * next());
+            let qdd = SVector::<f64, N>::from_fn(|_, _| 2.0 * next());
+            [q, qd, qdd]
+        })
+        .collect()
+}
+
+/// The same dynamics: M, bias, gravity, inverse dynamics.
+fn same_dynamics<const N: usize, A: Dynamics<N>, B: Dynamics<N>>(a: &A, b: &B, what: &str) {
+    for [q, qd, qdd] in states::<N>() {
         close(
             a.mass_matrix(&q).as_slice(),
             b.mass_matrix(&q).as_slice(),
@@ -75,6 +93,13 @@ fn same<const N: usize, A: SpatialArm<N>, B: SpatialArm<N>>(a: &A, b: &B, what: 
             b.inverse_dynamics(&q, &qd, &qdd).as_slice(),
             what,
         );
+    }
+}
+
+fn same<const N: usize, A: SpatialArm<N>, B: SpatialArm<N>>(a: &A, b: &B, what: &str) {
+    assert_eq!(A::JOINT_NAMES, B::JOINT_NAMES, "{what}");
+    same_dynamics(a, b, what);
+    for [q, ..] in states::<N>() {
         let (pa, pb) = (
             a.tip_pose(&q).to_homogeneous(),
             b.tip_pose(&q).to_homogeneous(),
@@ -95,6 +120,41 @@ fn mjcf_exports_read_back_to_the_same_arms() {
 fn urdf_exports_read_back_to_the_same_arms() {
     same(&MdhArm::default(), &MdhUrdfBack, "mdh via urdf");
     same(&Ur5, &Ur5UrdfBack, "ur5 via urdf");
+}
+
+/// A planar arm written as a spatial one in the x-y plane: the same dynamics and tip.
+fn same_planar<const N: usize, A: PlanarArm<N>, B: SpatialArm<N>>(a: &A, b: &B, what: &str) {
+    assert_eq!(A::JOINT_NAMES, B::JOINT_NAMES, "{what}");
+    same_dynamics(a, b, what);
+    for [q, ..] in states::<N>() {
+        let (pa, pb) = (a.tip_pose(&q), b.tip_pose(&q));
+        let turn = pb.rotation * planar_arm::nalgebra::Vector3::x();
+        let theirs = [
+            pb.translation.x,
+            pb.translation.y,
+            pb.translation.z,
+            turn.y.atan2(turn.x),
+        ];
+        let ours = [pa.translation.x, pa.translation.y, 0.0, pa.rotation.angle()];
+        close(&ours, &theirs, what);
+    }
+}
+
+#[test]
+fn planar_exports_read_back_as_spatial_arms_of_the_same_dynamics() {
+    same_planar(&PlanarMix::default(), &PlanarMjcfBack, "planar via mjcf");
+    // URDF cannot hold armature: compare the arm without it.
+    let mut bare = PlanarMix::default().model();
+    bare.links[1].armature = 0.0;
+    let back = PlanarUrdfBack;
+    for [q, qd, qdd] in states::<3>() {
+        let ours = planar_arm::reference::inverse_dynamics(&bare, &q, &qd, &qdd);
+        close(
+            ours.as_slice(),
+            back.inverse_dynamics(&q, &qd, &qdd).as_slice(),
+            "planar via urdf",
+        );
+    }
 }
 
 #[test]

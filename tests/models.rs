@@ -96,3 +96,45 @@ fn ur5_from_its_urdf_is_the_ur5_typed_by_hand() {
     let model = Ur5File.model();
     assert_eq!(model.joints[2].range, Some((-3.14159265359, 3.14159265359)));
 }
+
+#[path = "common/export_arms.rs"]
+mod export_arms;
+
+/// The paper's three equal links under gravity, for `to_spatial`.
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81)]
+struct Paper3 {
+    #[arm(length = 1, mass = 1)]
+    upper: Revolute,
+    #[arm(length = 1, mass = 1)]
+    fore: Revolute,
+    #[arm(length = 1, mass = 1)]
+    hand: Revolute,
+}
+
+/// A planar arm as a spatial one in the x-y plane (what `to_mjcf` writes) has the planar
+/// arm's dynamics: the spatial reference's Newton-Euler recursion and composite-body mass
+/// matrix on `to_spatial` against the planar derive, slides, friction and payload included.
+#[test]
+fn planar_arms_are_spatial_arms_in_the_plane() {
+    use planar_arm::reference::spatial as reference;
+    fn check<const N: usize, A: PlanarArm<N>>(arm: &A) {
+        let spatial = arm.model().to_spatial();
+        for [q, qd, qdd] in states::<N>() {
+            let q = q.map(|x| 0.2 + 0.2 * x); // slides inside their range
+            let m = reference::mass_matrix(&spatial, &q);
+            assert!((m - arm.mass_matrix(&q)).amax() < 1e-12 * m.amax(), "M");
+            let tau = reference::inverse_dynamics(&spatial, &q, &qd, &qdd);
+            let ours = arm.inverse_dynamics(&q, &qd, &qdd);
+            assert!(
+                (tau - ours).amax() < 1e-12 * tau.amax().max(1.0),
+                "{tau} {ours}"
+            );
+            let tip = reference::tip_pose(&spatial, &q).translation.vector;
+            let planar = arm.tip_pose(&q).translation.vector;
+            assert!((tip.xy() - planar).norm() < 1e-12 && tip.z == 0.0);
+        }
+    }
+    check(&Paper3::default());
+    check(&export_arms::PlanarMix::default());
+}

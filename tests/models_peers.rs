@@ -189,7 +189,7 @@ fn industrial_urdfs_match_pinocchio() {
 
 #[test]
 fn exported_files_load_in_mujoco_and_pinocchio_as_the_arms_that_wrote_them() {
-    use export_arms::{DhArm, MdhArm, OriginArm};
+    use export_arms::{DhArm, MdhArm, OriginArm, PlanarMix};
     let worst = [
         check(EXPORTS, &DhArm::default(), DhArm::JOINT_NAMES, "dh_arm.xml"),
         check(
@@ -212,6 +212,13 @@ fn exported_files_load_in_mujoco_and_pinocchio_as_the_arms_that_wrote_them() {
             "mdh_arm.urdf",
         ),
         check(EXPORTS, &Ur5, Ur5::JOINT_NAMES, "ur5.urdf"),
+        // A planar arm's MJCF: its plane is MuJoCo's x-y plane, gravity along -y.
+        check(
+            EXPORTS,
+            &PlanarMix::default(),
+            PlanarMix::JOINT_NAMES,
+            "planar_mix.xml",
+        ),
     ];
     eprintln!("worst relative difference of the exports: {worst:?}");
     // The DH arm's URDF has no armature: Pinocchio's M misses exactly the 0.05 of `fore`.

@@ -41,10 +41,64 @@ pub trait PlanarArm<const N: usize>: Dynamics<N> {
     /// run-time parameters carry them by name ([`exact::Term::params`]).
     const EXACT: exact::Derivation<N>;
 
+    /// The joints' names, base first, in the order of `q`: the link fields' names.
+    const JOINT_NAMES: [&'static str; N];
+
     /// The arm's numeric description now: links, gravity and payload, with every run-time
     /// parameter read from its field. This is what the [`reference`](mod@crate::reference)
     /// implementations and a simulator take to model the same arm.
     fn model(&self) -> Model<N>;
+
+    /// The arm with its current values as MJCF, which MuJoCo loads and
+    /// `#[derive(SpatialArm)]` reads back to the same dynamics: the plane is MuJoCo's x-y
+    /// plane, each hinge turns about `+z`, each slide moves along its link's `x`, gravity is
+    /// `0 -g 0`, and `q` is `qpos`. The link's moment `inertia` is its `izz`; the
+    /// out-of-plane moments, which a planar motion never feels, are written equal to it, so
+    /// that the tensor meets the triangle inequality MuJoCo requires (as its `balanceinertia`
+    /// would make a planar rod's). See [`Model::to_spatial`] for the spatial arm it writes.
+    ///
+    /// ```
+    /// use planar_arm::prelude::*;
+    ///
+    /// #[derive(PlanarArm, Default)]
+    /// #[arm(gravity = 9.81)]
+    /// struct Pendulum {
+    ///     #[arm(length = 0.5, mass = 1.0, damping = 0.1)]
+    ///     rod: Revolute,
+    /// }
+    ///
+    /// let text = Pendulum::default().to_mjcf();
+    /// assert!(text.contains(r#"<option gravity="0 -9.81 0"/>"#));
+    /// assert!(text.contains(r#"<joint name="rod" type="hinge" axis="0 0 1" damping="0.1"/>"#));
+    /// ```
+    #[cfg(feature = "std")]
+    #[must_use]
+    fn to_mjcf(&self) -> std::string::String
+    where
+        Self: Sized,
+    {
+        crate::spatial::export::mjcf(
+            &self.model().to_spatial(),
+            &Self::JOINT_NAMES,
+            crate::spatial::export::short_name::<Self>(),
+        )
+    }
+
+    /// The arm with its current values as URDF (the plane as in [`to_mjcf`](Self::to_mjcf)),
+    /// which Pinocchio and ROS load; URDF holds neither armature nor a gravity of its own, and
+    /// the file says which of them it left out.
+    #[cfg(feature = "std")]
+    #[must_use]
+    fn to_urdf(&self) -> std::string::String
+    where
+        Self: Sized,
+    {
+        crate::spatial::export::urdf(
+            &self.model().to_spatial(),
+            &Self::JOINT_NAMES,
+            crate::spatial::export::short_name::<Self>(),
+        )
+    }
 
     /// The numeric link parameters, base first (`self.model().links`).
     fn links(&self) -> [Link; N] {

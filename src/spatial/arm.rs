@@ -68,7 +68,11 @@ pub trait SpatialArm<const N: usize>: Dynamics<N> {
     where
         Self: Sized,
     {
-        super::export::mjcf(&self.model(), &Self::JOINT_NAMES, short_name::<Self>())
+        super::export::mjcf(
+            &self.model(),
+            &Self::JOINT_NAMES,
+            super::export::short_name::<Self>(),
+        )
     }
 
     /// The arm with its current values as URDF, which Pinocchio and ROS load and this derive
@@ -80,7 +84,11 @@ pub trait SpatialArm<const N: usize>: Dynamics<N> {
     where
         Self: Sized,
     {
-        super::export::urdf(&self.model(), &Self::JOINT_NAMES, short_name::<Self>())
+        super::export::urdf(
+            &self.model(),
+            &Self::JOINT_NAMES,
+            super::export::short_name::<Self>(),
+        )
     }
 
     /// Every joint configuration that puts the tool at `target`, in closed form, for six-joint
@@ -140,12 +148,4 @@ pub trait SpatialArm<const N: usize>: Dynamics<N> {
     ) -> Result<(Vector3<f64>, Vector3<f64>), ArmError> {
         super::statics::tip_wrench(&self.jacobian(q), q, tau)
     }
-}
-
-/// The type's name without its path, as a model's name.
-#[cfg(feature = "std")]
-fn short_name<T>() -> &'static str {
-    let full = core::any::type_name::<T>();
-    let base = full.split('<').next().unwrap_or(full);
-    base.rsplit("::").next().unwrap_or(base)
 }

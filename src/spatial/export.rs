@@ -456,3 +456,10 @@ pub fn urdf<const N: usize>(model: &SpatialModel<N>, names: &[&str; N], name: &s
     let _ = writeln!(out, "</robot>");
     out
 }
+
+/// The type's name without its path, as a model's name.
+pub(crate) fn short_name<T>() -> &'static str {
+    let full = core::any::type_name::<T>();
+    let base = full.split('<').next().unwrap_or(full);
+    base.rsplit("::").next().unwrap_or(base)
+}

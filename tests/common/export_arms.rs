@@ -2,6 +2,8 @@
 //! `tests/export_round_trip.rs`): every convention, slides, twists off the right angles, full
 //! inertia tensors, joint friction and limits, a payload.
 
+#![allow(dead_code)] // each test file uses some of these arms
+
 use planar_arm::prelude::*;
 
 /// Standard DH, a payload at a turned tool.
@@ -43,4 +45,16 @@ pub struct OriginArm {
     #[arm(origin(xyz = (0.2, 0, 0.1), rpy = (0, pi/2, 0)), axis = (0, 1, 1), mass = 0.7,
           com = (0.1, 0, 0), inertia(xx = 0.002, yy = 0.01, zz = 0.01, xy = 0.0005), armature = 0.01)]
     pub second: Revolute,
+}
+
+/// A planar arm: hinge, slide, hinge, with friction, a range and a payload.
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81, payload = 0.4, payload_com = (0.05, 0.01))]
+pub struct PlanarMix {
+    #[arm(length = 0.5, mass = 2.0, inertia = 0.05, com = (0.25, 0.02), damping = 0.1)]
+    pub shoulder: Revolute,
+    #[arm(length = 0.3, mass = 1.0, inertia = 0.01, range = (0, 0.4), armature = 0.2)]
+    pub reach: Prismatic,
+    #[arm(length = 0.2, mass = 0.5, com = (0.1, -0.01), frictionloss = 0.05)]
+    pub wrist: Revolute,
 }

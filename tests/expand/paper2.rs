@@ -1,5 +1,5 @@
 #[automatically_derived]
-#[allow(clippy::nursery)]
+#[allow(clippy::nursery, clippy::approx_constant)]
 impl ::planar_arm::Dynamics<2> for Paper2 {
     /**The mass matrix M(q), derived exactly (symmetric; upper triangle shown). Joint angles `q`, rates `qd`, accelerations `qdd` (1-based in the formulas); `cK` and `sK...` are the cosine and sine of the sum of the joint angles named by the digits.
 
@@ -414,7 +414,7 @@ Cost: 47 multiplications, 36 additions, 3 divisions, 2 sin_cos pairs.*/
     type __Frozen = ::planar_arm::__private::Block<0>;
 }
 #[automatically_derived]
-#[allow(clippy::nursery)]
+#[allow(clippy::nursery, clippy::approx_constant)]
 impl ::planar_arm::PlanarArm<2> for Paper2 {
     const EXACT: ::planar_arm::exact::Derivation<2> = {
         const __NAMES: &[&::core::primitive::str] = &[];
@@ -447,6 +447,8 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
             ],
         }
     };
+    ///The joints' names, base first: the order of `q`.
+    const JOINT_NAMES: [&'static ::core::primitive::str; 2] = ["upper", "fore"];
     #[inline]
     fn model(&self) -> ::planar_arm::Model<2> {
         ::planar_arm::Model {
@@ -599,7 +601,7 @@ Cost: 8 multiplications, 10 additions, 0 divisions, 2 sin_cos pairs.*/
     }
 }
 #[automatically_derived]
-#[allow(clippy::nursery)]
+#[allow(clippy::nursery, clippy::approx_constant)]
 impl ::planar_arm::kinematics::ClosedFormIk<2> for Paper2 {
     type Target = ::planar_arm::nalgebra::Point2<::core::primitive::f64>;
     ///The paper's closed form for two equal links: cos(q2/2) = r / 2l, q1 + q2/2 = atan2(y, x).
@@ -615,7 +617,7 @@ impl ::planar_arm::kinematics::ClosedFormIk<2> for Paper2 {
     }
 }
 #[automatically_derived]
-#[allow(clippy::nursery)]
+#[allow(clippy::nursery, clippy::approx_constant)]
 impl ::planar_arm::kinematics::TipForce for Paper2 {
     #[inline]
     fn tip_force(

@@ -1,5 +1,5 @@
 #[automatically_derived]
-#[allow(clippy::nursery)]
+#[allow(clippy::nursery, clippy::approx_constant)]
 impl ::planar_arm::Dynamics<3> for Paper3 {
     /**The mass matrix M(q), derived exactly (symmetric; upper triangle shown). Joint angles `q`, rates `qd`, accelerations `qdd` (1-based in the formulas); `cK` and `sK...` are the cosine and sine of the sum of the joint angles named by the digits.
 
@@ -691,7 +691,7 @@ Cost: 47 multiplications, 44 additions, 3 divisions, 3 sin_cos pairs.*/
     type __Frozen = ::planar_arm::__private::Block<0>;
 }
 #[automatically_derived]
-#[allow(clippy::nursery)]
+#[allow(clippy::nursery, clippy::approx_constant)]
 impl ::planar_arm::PlanarArm<3> for Paper3 {
     const EXACT: ::planar_arm::exact::Derivation<3> = {
         const __NAMES: &[&::core::primitive::str] = &[];
@@ -757,6 +757,8 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
             ],
         }
     };
+    ///The joints' names, base first: the order of `q`.
+    const JOINT_NAMES: [&'static ::core::primitive::str; 3] = ["upper", "fore", "hand"];
     #[inline]
     fn model(&self) -> ::planar_arm::Model<3> {
         ::planar_arm::Model {
@@ -952,7 +954,7 @@ Cost: 14 multiplications, 19 additions, 0 divisions, 3 sin_cos pairs.*/
     }
 }
 #[automatically_derived]
-#[allow(clippy::nursery)]
+#[allow(clippy::nursery, clippy::approx_constant)]
 impl ::planar_arm::kinematics::ClosedFormIk<3> for Paper3 {
     type Target = ::planar_arm::nalgebra::Isometry2<::core::primitive::f64>;
     /// Through the wrist point, as in the paper: the two-link solution for
@@ -969,7 +971,7 @@ impl ::planar_arm::kinematics::ClosedFormIk<3> for Paper3 {
     }
 }
 #[automatically_derived]
-#[allow(clippy::nursery)]
+#[allow(clippy::nursery, clippy::approx_constant)]
 impl ::planar_arm::kinematics::TipWrench for Paper3 {
     #[inline]
     fn tip_wrench(

@@ -1,5 +1,5 @@
 #[automatically_derived]
-#[allow(clippy::nursery)]
+#[allow(clippy::nursery, clippy::approx_constant)]
 impl ::planar_arm::Dynamics<2> for Polar {
     /**The mass matrix M(q), derived exactly (symmetric; upper triangle shown). Joint angles `q`, rates `qd`, accelerations `qdd` (1-based in the formulas); `cK` and `sK...` are the cosine and sine of the sum of the joint angles named by the digits.
 
@@ -380,7 +380,7 @@ Cost: 36 multiplications, 18 additions, 2 divisions, 1 sin_cos pairs.*/
     type __Frozen = ::planar_arm::__private::Block<0>;
 }
 #[automatically_derived]
-#[allow(clippy::nursery)]
+#[allow(clippy::nursery, clippy::approx_constant)]
 impl ::planar_arm::PlanarArm<2> for Polar {
     const EXACT: ::planar_arm::exact::Derivation<2> = {
         const __NAMES: &[&::core::primitive::str] = &[];
@@ -416,6 +416,8 @@ impl ::planar_arm::PlanarArm<2> for Polar {
             ],
         }
     };
+    ///The joints' names, base first: the order of `q`.
+    const JOINT_NAMES: [&'static ::core::primitive::str; 2] = ["turret", "boom"];
     #[inline]
     fn model(&self) -> ::planar_arm::Model<2> {
         ::planar_arm::Model {
@@ -551,7 +553,7 @@ Cost: 8 multiplications, 7 additions, 0 divisions, 1 sin_cos pairs.*/
     }
 }
 #[automatically_derived]
-#[allow(clippy::nursery)]
+#[allow(clippy::nursery, clippy::approx_constant)]
 impl ::planar_arm::kinematics::ClosedFormIk<2> for Polar {
     type Target = ::planar_arm::nalgebra::Point2<::core::primitive::f64>;
     ///The polar arm: q1 = atan2(y, x) and the slide r - l1 - l2, or the opposite direction with the slide -r - l1 - l2; the branches within the ranges (see `kinematics::ik_rp`).
@@ -573,7 +575,7 @@ impl ::planar_arm::kinematics::ClosedFormIk<2> for Polar {
     }
 }
 #[automatically_derived]
-#[allow(clippy::nursery)]
+#[allow(clippy::nursery, clippy::approx_constant)]
 impl ::planar_arm::kinematics::TipForce for Polar {
     /// By the generated Jacobian: `J^T F = tau`, a prismatic joint's entry of
     /// `tau` a force along it.

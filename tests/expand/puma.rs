@@ -1,5 +1,5 @@
 #[automatically_derived]
-#[allow(clippy::nursery)]
+#[allow(clippy::nursery, clippy::approx_constant)]
 impl ::planar_arm::Dynamics<6> for Puma560 {
     /**The gravity torques g = dV/dq (forces for slides) that hold the arm.
 
@@ -2746,7 +2746,7 @@ Cost: 1456 multiplications, 1164 additions, 0 divisions, 5 sin_cos pairs.*/
     }
 }
 #[automatically_derived]
-#[allow(clippy::nursery)]
+#[allow(clippy::nursery, clippy::approx_constant)]
 impl ::planar_arm::spatial::SpatialArm<6> for Puma560 {
     /**The tool frame in the base frame: rotation R and position p.
 
@@ -3372,7 +3372,7 @@ Cost: 57 multiplications, 44 additions, 0 divisions, 5 sin_cos pairs.*/
     }
 }
 #[automatically_derived]
-#[allow(clippy::nursery)]
+#[allow(clippy::nursery, clippy::approx_constant)]
 impl ::planar_arm::Identification<6, 60, 36> for Puma560 {
     const PARAMETERS: [&'static ::core::primitive::str; 60] = [
         "m1",

@@ -13,7 +13,7 @@ use quote::quote;
 use super::function::{Fn, Param};
 use crate::emit::{check_representable, EmitError};
 use crate::methods::Derived;
-use crate::paths::F64;
+use crate::paths::{F64, STR};
 use crate::slp::{Emit, Input};
 
 pub use super::header::Header;
@@ -130,6 +130,8 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
         impl_generics,
         ty,
         where_clause,
+        joint_names,
+        joint_names_doc,
         ..
     } = header;
     let nn = &cx.nn;
@@ -144,6 +146,8 @@ pub fn generate<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream,
         #[allow(clippy::nursery, clippy::approx_constant)]
         impl #impl_generics ::planar_arm::PlanarArm<#nn> for #ty #where_clause {
             #exact
+            #[doc = #joint_names_doc]
+            const JOINT_NAMES: [&'static #STR; #nn] = [#(#joint_names),*];
             #[inline]
             fn model(&self) -> ::planar_arm::Model<#nn> {
                 #model
@@ -220,6 +224,7 @@ pub fn stub(n: usize, header: &Header) -> TokenStream {
                 coriolis: [::planar_arm::__private::terms(b"", &[]); #nn],
                 gravity: [::planar_arm::__private::terms(b"", &[]); #nn],
             };
+            const JOINT_NAMES: [&'static #STR; #nn] = [""; #nn];
             fn model(&self) -> ::planar_arm::Model<#nn> #body
             fn tip_pose(&self, _: #v) -> ::planar_arm::nalgebra::Isometry2<#F64> #body
             fn jacobian #g(&self, _: #vt) -> ::planar_arm::nalgebra::SMatrix<__T, 3, #nn> #body
