@@ -139,6 +139,8 @@ impl<const N: usize> Model<N> {
                 armature: l.armature,
                 damping: l.damping,
                 frictionloss: l.frictionloss,
+                stiffness: 0.0,
+                springref: 0.0,
             }
         });
         let p = &self.payload;

@@ -89,6 +89,8 @@ fn expand_puma() -> String {
         armature: Poly::default(),
         damping: Poly::default(),
         frictionloss: Poly::default(),
+        stiffness: Poly::default(),
+        springref: Poly::default(),
     };
     let arm = SpatialArmSpec {
         joints: vec![

@@ -232,3 +232,71 @@ fn exported_files_load_in_mujoco_and_pinocchio_as_the_arms_that_wrote_them() {
         "only the armature of `fore` is missing: {missing}"
     );
 }
+
+/// A test arm with springs (`tests/data/springs.xml`): a hinge's `springref` in degrees, a
+/// slide's in metres, a `ref` beside a `springref`, a hinge about an anchor.
+#[derive(SpatialArm)]
+#[arm(mjcf = "tests/data/springs.xml")]
+struct Springs;
+
+/// MuJoCo puts the springs in `qfrc_passive`; here they are part of the potential, so
+/// `gravity` and `bias` hold them: `bias = qfrc_bias - qfrc_passive` (damping included), and
+/// the inverse dynamics is `mj_inverse`'s. The potential energy's derivative is the static
+/// torque, springs and all (central differences).
+#[test]
+fn joint_springs_match_mujoco() {
+    let text = include_str!("data/springs_peers.txt");
+    let mut lines: Vec<(&str, Vec<f64>)> = Vec::new();
+    for line in text.lines().filter(|l| !l.starts_with('#')) {
+        let (key, rest) = line.split_once(' ').unwrap();
+        if key == "joints" {
+            assert_eq!(rest.split(' ').collect::<Vec<_>>(), Springs::JOINT_NAMES);
+            continue;
+        }
+        lines.push((key, rest.split(' ').map(|x| x.parse().unwrap()).collect()));
+    }
+    let mut worst = 0.0_f64;
+    for state in lines.chunks(7) {
+        let v = |k: usize| SVector::<f64, 3>::from_column_slice(&state[k].1);
+        let (q, qd, qdd) = (v(0), v(1), v(2));
+        let m = SMatrix::<f64, 3, 3>::from_row_slice(&state[3].1);
+        let (bias, passive, tau) = (v(4), v(5), v(6));
+        for (what, ours, theirs) in [
+            (
+                "M",
+                Springs.mass_matrix(&q).as_slice().to_vec(),
+                m.as_slice().to_vec(),
+            ),
+            (
+                "bias",
+                Springs.bias(&q, &qd).as_slice().to_vec(),
+                (bias - passive).as_slice().to_vec(),
+            ),
+            (
+                "tau",
+                Springs.inverse_dynamics(&q, &qd, &qdd).as_slice().to_vec(),
+                tau.as_slice().to_vec(),
+            ),
+        ] {
+            let d = relative(&ours, &theirs);
+            assert!(
+                d < 1e-12,
+                "{what}: {d:e}\n ours {ours:?}\n theirs {theirs:?}"
+            );
+            worst = worst.max(d);
+        }
+        let h = 1e-6;
+        for i in 0..3 {
+            let step = SVector::<f64, 3>::from_fn(|k, _| if k == i { h } else { 0.0 });
+            let dv = (Springs.potential_energy(&(q + step))
+                - Springs.potential_energy(&(q - step)))
+                / (2.0 * h);
+            let g = Springs.gravity(&q)[i];
+            assert!(
+                (dv - g).abs() < 1e-6 * g.abs().max(1.0),
+                "dV/dq{i} {dv} against g {g}"
+            );
+        }
+    }
+    eprintln!("springs against MuJoCo: {worst:e}");
+}

@@ -11,7 +11,7 @@ use planar_arm::sim::{
 };
 
 /// PUMA 560, Corke's standard DH parameters and mass properties, with a little armature and
-/// friction on the first three joints.
+/// friction on the first three joints and a spring on the fourth.
 #[derive(SpatialArm, Default)]
 #[arm(gravity = (0, 0, -9.81))]
 struct Puma560 {
@@ -24,7 +24,7 @@ struct Puma560 {
           inertia(xx = 0.066, yy = 0.086, zz = 0.0125), armature = 0.1, frictionloss = 0.3)]
     elbow: Revolute,
     #[arm(dh(a = 0, alpha = pi/2, d = 0.4318), mass = 0.82, com = (0, 0.019, 0),
-          inertia(xx = 1.8e-3, yy = 1.3e-3, zz = 1.8e-3))]
+          inertia(xx = 1.8e-3, yy = 1.3e-3, zz = 1.8e-3), stiffness = 2, springref = 0.5)]
     wrist1: Revolute,
     #[arm(dh(a = 0, alpha = -pi/2, d = 0), mass = 0.34, inertia(xx = 0.3e-3, yy = 0.4e-3, zz = 0.3e-3))]
     wrist2: Revolute,
@@ -33,7 +33,7 @@ struct Puma560 {
     wrist3: Revolute,
 }
 
-/// The same arm without friction, for the energy checks.
+/// The same arm without friction or spring, for the energy checks.
 #[derive(SpatialArm, Default)]
 #[arm(gravity = (0, 0, -9.81))]
 struct FreePuma {

@@ -47,6 +47,8 @@ fn random_arm<const N: usize>(rng: &mut Rng, convention: usize) -> SpatialModel<
             armature: rng.range(0.0, 0.2),
             damping: rng.range(0.0, 0.5),
             frictionloss: rng.range(0.0, 0.3),
+            stiffness: rng.range(0.0, 2.0),
+            springref: rng.range(-1.0, 1.0),
             ..SpatialJoint::new(geometry, kind)
         }
     });
@@ -420,7 +422,8 @@ fn the_regressor_reproduces_the_inverse_dynamics() {
                 let (q, qd, qdd): (SVector<f64, N>, SVector<f64, N>, SVector<f64, N>) =
                     (rng.vector(3.0), rng.vector(2.0), rng.vector(5.0));
                 let blocks = reference::regressor(&model, &q, &qd, &qdd);
-                let mut tau = reference::friction(&model, &qd);
+                // The joints' own terms, friction and springs, beside the links' blocks.
+                let mut tau = reference::friction(&model, &qd) + reference::springs(&model, &q);
                 for i in 0..N {
                     tau[i] += model.joints[i].armature * qdd[i];
                 }

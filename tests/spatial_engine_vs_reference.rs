@@ -200,6 +200,9 @@ fn spec(d: &ArmDraw) -> SpatialArmSpec {
                 armature: Poly::constant(ratio(j.joint_terms[0], 10)),
                 damping: Poly::constant(ratio(j.joint_terms[1], 10)),
                 frictionloss: Poly::constant(ratio(j.joint_terms[2], 10)),
+                // A spring wherever there is damping, relaxed off zero.
+                stiffness: Poly::constant(ratio(j.joint_terms[1], 2)),
+                springref: Poly::constant(ratio(j.joint_terms[0] - 1, 4)),
             }
         })
         .collect();
@@ -255,6 +258,8 @@ fn model<const N: usize>(d: &ArmDraw) -> SpatialModel<N> {
             armature,
             damping,
             frictionloss,
+            stiffness: j.joint_terms[1] as f64 / 2.0,
+            springref: (j.joint_terms[0] - 1) as f64 / 4.0,
             ..SpatialJoint::new(geometry, kind)
         }
     });

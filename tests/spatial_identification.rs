@@ -349,6 +349,10 @@ mod random_arms {
                     armature: term(j.terms[0], 3),
                     damping: term(j.terms[1], 5),
                     frictionloss: term(j.terms[2], 7),
+                    // A spring's torque is linear in the angle itself: arms with springs get
+                    // no Identification.
+                    stiffness: Poly::default(),
+                    springref: Poly::default(),
                 }
             })
             .collect();

@@ -17,7 +17,8 @@ Files, in sorted order of their names, one arm each (`arm NAME` is the file name
   joints from the world to the body `tool` (every export is one chain of 1-DoF joints; the
   script stops if there are other joints). gravity is m.opt.gravity. M is mj_fullM (with
   dof_armature on its diagonal), bias is qfrc_bias, gravity_torque is qfrc_bias at qvel = 0,
-  damping is dof_damping, tau is qfrc_inverse of mj_inverse. MuJoCo's frictionloss is a
+  both plus the joint springs' stiffness (q - springref) (MuJoCo's qfrc_passive; the crate
+  counts springs in its static torques g = dV/dq), damping is dof_damping, tau is qfrc_inverse of mj_inverse. MuJoCo's frictionloss is a
   constraint, disabled here, so it is in none of the numbers.
 - *.urdf: pinocchio.buildModelFromUrdf. gravity is Pinocchio's default model.gravity
   (0 0 -9.81). M is crba (upper triangle copied to the lower), bias nonLinearEffects,
@@ -36,8 +37,8 @@ by all arms in the order written. q is uniform in [-1, 1]; slide/prismatic joint
 when the joint's range is [0, 0.5], otherwise [-0.3, 0.3]. qd and qdd are uniform in [-1, 1].
 
 Checks made before anything is written, stopping on failure: M is symmetric and positive
-definite; MuJoCo's qfrc_inverse = M qdd + qfrc_bias + damping qd and qfrc_passive =
--damping qd (to 1e-10); Pinocchio's rnea = M qdd + nle (to 1e-10) and crba's M equals the
+definite; MuJoCo's qfrc_inverse = M qdd + qfrc_bias + damping qd + springs and
+qfrc_passive = -damping qd - springs (to 1e-10); Pinocchio's rnea = M qdd + nle (to 1e-10) and crba's M equals the
 columns rnea(q, 0, e_i) without gravity; bias at qd = 0 equals gravity_torque. Anything the
 loaders print (on stdout or stderr, at the file-descriptor level), Python warnings and
 MuJoCo's data.warning counters are reported on stderr and in the file's comments.
@@ -220,9 +221,11 @@ def mujoco_arm(name, path, rng, notes, maxdiff, mineigs, loadlog, states_out):
         k, a, f = float(m.jnt_stiffness[j]), float(m.dof_armature[d]), float(m.dof_frictionloss[d])
         if k != 0 or a != 0 or f != 0:
             notes.append(f"{name} {jn}: stiffness {fmt(k)} armature {fmt(a)} frictionloss {fmt(f)}")
-        if k != 0:
-            log(f"WARNING {name}.{jn}: stiffness {k} (spring force is in qfrc_passive and tau)")
     damping = m.dof_damping[dofs].copy()
+    # Joint springs, stiffness (q - springref): MuJoCo's qfrc_passive; the crate counts them in
+    # its static torques g = dV/dq, so they are added to bias and gravity_torque here.
+    stiffness = np.array([float(m.jnt_stiffness[j]) for j in joints])
+    springref = np.array([float(m.qpos_spring[m.jnt_qposadr[j]]) for j in joints])
 
     out = [f"arm {name}", "joints " + " ".join(jnames), line("gravity", m.opt.gravity)]
     d, dg, di = mujoco.MjData(m), mujoco.MjData(m), mujoco.MjData(m)
@@ -250,19 +253,20 @@ def mujoco_arm(name, path, rng, notes, maxdiff, mineigs, loadlog, states_out):
 
         mujoco.mj_fullM(m, d, Mfull)
         M = Mfull[np.ix_(dofs, dofs)].copy()
-        bias = d.qfrc_bias[dofs].copy()
-        grav = dg.qfrc_bias[dofs].copy()
+        springs = stiffness * (q - springref)
+        bias = d.qfrc_bias[dofs].copy() + springs
+        grav = dg.qfrc_bias[dofs].copy() + springs
         tau = di.qfrc_inverse[dofs].copy()
         passive = d.qfrc_passive[dofs].copy()
 
         asym, mineig = check_spd(name, M)
         record(maxdiff, "M asymmetry", asym, None)
         record(maxdiff, "mj_inverse - (M qdd + bias + damping qd)", mx(tau - (M @ qdd + bias + damping * qd)), name=name)
-        record(maxdiff, "qfrc_passive + damping qd", mx(passive + damping * qd), name=name)
-        record(maxdiff, "mj_inverse bias - mj_forward bias", mx(di.qfrc_bias[dofs] - bias), name=name)
+        record(maxdiff, "qfrc_passive + damping qd + springs", mx(passive + damping * qd + springs), name=name)
+        record(maxdiff, "mj_inverse bias - mj_forward bias", mx(di.qfrc_bias[dofs] + springs - bias), name=name)
         rne = np.zeros(m.nv)
         mujoco.mj_rne(m, dg, 0, rne)
-        record(maxdiff, "gravity_torque - mj_rne(qd=0)", mx(rne[dofs] - grav), name=name)
+        record(maxdiff, "gravity_torque - mj_rne(qd=0) - springs", mx(rne[dofs] + springs - grav), name=name)
         mineigs[name] = min(mineigs.get(name, np.inf), mineig)
         states.append((q, qd, qdd, M, bias, grav, damping, tau))
 
@@ -453,8 +457,9 @@ def main():
 #                         dof_armature on the diagonal). Pinocchio: crba, upper triangle
 #                         copied to the lower.
 #   bias                  M qdd + bias = rigid-body generalized force: Coriolis + centrifugal
-#                         + gravity, no damping. MuJoCo qfrc_bias, Pinocchio nonLinearEffects
-#   gravity_torque        bias at qd = 0. MuJoCo qfrc_bias with qvel = 0, Pinocchio
+#                         + gravity + joint springs stiffness (q - springref), no damping.
+#                         MuJoCo qfrc_bias + springs, Pinocchio nonLinearEffects
+#   gravity_torque        bias at qd = 0. MuJoCo qfrc_bias with qvel = 0 + springs, Pinocchio
 #                         computeGeneralizedGravity
 #   damping               per-joint viscous damping coefficients (MuJoCo dof_damping,
 #                         Pinocchio model.damping), repeated in every state

@@ -52,7 +52,9 @@ pub trait Dynamics<const N: usize> {
     fn coriolis<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> SVector<T, N>;
     /// The Coriolis matrix C(q, qd) built from Christoffel symbols: `C qd = c` and `Mdot - 2C` is skew.
     fn coriolis_matrix<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> SMatrix<T, N, N>;
-    /// The torques that hold the arm against gravity, g(q) = dV/dq.
+    /// The static torques that hold the arm still, g(q) = dV/dq: against gravity and, for a
+    /// spatial arm with joint springs, against them (`stiffness (q - springref)`, whose energy
+    /// is part of V).
     fn gravity<T: Real>(&self, q: &SVector<T, N>) -> SVector<T, N>;
     /// The joint friction torques f(qd): viscous `damping qd_i` plus Coulomb
     /// `frictionloss sign(qd_i)` (MuJoCo's `damping` and `frictionloss`), with `sign(0) = 0`.
@@ -146,7 +148,8 @@ pub trait Dynamics<const N: usize> {
 
     /// Kinetic energy, J: the links, the payload and the rotors (`armature qd_i^2 / 2`).
     fn kinetic_energy<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> T;
-    /// Potential energy, J, measured from y = 0 at the base.
+    /// Potential energy, J: gravity's, measured from the base's origin, and any joint
+    /// springs' `stiffness (q - springref)^2 / 2`.
     fn potential_energy<T: Real>(&self, q: &SVector<T, N>) -> T;
 
     /// A view that evaluates the parameter-only part of the dynamics once and reuses it on every

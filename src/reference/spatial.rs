@@ -139,18 +139,36 @@ pub fn centres_of_mass<const N: usize>(
     core::array::from_fn(|i| poses[i].transform_point(&Point3::from(links[i].com)).coords)
 }
 
-/// The potential energy `-sum m_i g . c_i`, J.
+/// The potential energy `-sum m_i g . c_i` of gravity and `sum k_i (q_i - r_i)^2 / 2` of the
+/// joint springs, J.
 #[must_use]
 pub fn potential_energy<const N: usize>(model: &SpatialModel<N>, q: &SVector<f64, N>) -> f64 {
+    let springs: f64 = model
+        .joints
+        .iter()
+        .zip(q.iter())
+        .map(|(j, q)| j.stiffness * (q - j.springref).powi(2) / 2.0)
+        .sum();
     centres_of_mass(model, q)
         .iter()
         .zip(&rigid_links(model))
         .map(|(c, l)| -l.mass * model.gravity.dot(c))
-        .sum()
+        .sum::<f64>()
+        + springs
 }
 
-/// The gravity torques `g = dV/dq` (forces for slides): `g_i = -sum_{j >= i} m_j g . dc_j/dq_i`,
-/// with `dc_j/dq_i = z_i x (c_j - o_i)` for a hinge and `z_i` for a slide.
+/// The joint springs' torques `k_i (q_i - r_i)`.
+#[must_use]
+pub fn springs<const N: usize>(model: &SpatialModel<N>, q: &SVector<f64, N>) -> SVector<f64, N> {
+    SVector::from_fn(|i, _| {
+        let j = &model.joints[i];
+        j.stiffness * (q[i] - j.springref)
+    })
+}
+
+/// The static torques `g = dV/dq` (forces for slides): gravity's,
+/// `-sum_{j >= i} m_j g . dc_j/dq_i` with `dc_j/dq_i = z_i x (c_j - o_i)` for a hinge and `z_i`
+/// for a slide, and the joint's spring's ([`springs`]).
 #[must_use]
 pub fn gravity<const N: usize>(model: &SpatialModel<N>, q: &SVector<f64, N>) -> SVector<f64, N> {
     let axes = joint_axes(model, q);
@@ -166,6 +184,6 @@ pub fn gravity<const N: usize>(model: &SpatialModel<N>, q: &SVector<f64, N>) -> 
                 };
                 -links[j].mass * model.gravity.dot(&dc)
             })
-            .sum()
-    })
+            .sum::<f64>()
+    }) + springs(model, q)
 }

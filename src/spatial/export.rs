@@ -215,10 +215,18 @@ pub fn mjcf<const N: usize>(model: &SpatialModel<N>, names: &[&str; N], name: &s
             };
             let _ = write!(extra, " range=\"{lo} {hi}\"");
         }
+        let springref = match joint.kind {
+            Joint::Revolute => degrees(joint.springref),
+            Joint::Prismatic => num(joint.springref),
+        };
+        if joint.stiffness != 0.0 && joint.springref != 0.0 {
+            let _ = write!(extra, " springref=\"{springref}\"");
+        }
         for (key, v) in [
             ("armature", joint.armature),
             ("damping", joint.damping),
             ("frictionloss", joint.frictionloss),
+            ("stiffness", joint.stiffness),
         ] {
             if v != 0.0 {
                 let _ = write!(extra, " {key}=\"{}\"", num(v));
@@ -360,19 +368,27 @@ pub fn urdf<const N: usize>(model: &SpatialModel<N>, names: &[&str; N], name: &s
         out,
         "  <!-- Written by planar_arm: joint values are q; the tip is the link `tool`. -->"
     );
-    let armature: Vec<&str> = model
-        .joints
-        .iter()
-        .zip(names)
-        .filter(|(j, _)| j.armature != 0.0)
-        .map(|(_, n)| *n)
-        .collect();
-    if !armature.is_empty() {
-        let _ = writeln!(
-            out,
-            "  <!-- Not written, as URDF cannot hold it: the armature of {}. -->",
-            armature.join(", ")
-        );
+    for (what, has) in [
+        (
+            "armature",
+            (|j: &super::SpatialJoint| j.armature != 0.0) as fn(&_) -> bool,
+        ),
+        ("spring", |j: &super::SpatialJoint| j.stiffness != 0.0),
+    ] {
+        let which: Vec<&str> = model
+            .joints
+            .iter()
+            .zip(names)
+            .filter(|(j, _)| has(j))
+            .map(|(_, n)| *n)
+            .collect();
+        if !which.is_empty() {
+            let _ = writeln!(
+                out,
+                "  <!-- Not written, as URDF cannot hold it: the {what} of {}. -->",
+                which.join(", ")
+            );
+        }
     }
     if model.gravity != Vector3::new(0.0, 0.0, -9.81) {
         let _ = writeln!(

@@ -21,6 +21,13 @@ pub struct SpatialJoint {
     pub damping: f64,
     /// Coulomb friction (N m, or N).
     pub frictionloss: f64,
+    /// The joint spring's stiffness (N m/rad, or N/m), MuJoCo's: a torque
+    /// `stiffness (q - springref)` pulling the joint toward `springref`, whose energy
+    /// `stiffness (q - springref)^2 / 2` is part of the potential energy, so that the static
+    /// torques `gravity(q) = dV/dq` hold it.
+    pub stiffness: f64,
+    /// Where the spring is relaxed (radians, or metres).
+    pub springref: f64,
 }
 
 impl SpatialJoint {
@@ -34,6 +41,8 @@ impl SpatialJoint {
             armature: 0.0,
             damping: 0.0,
             frictionloss: 0.0,
+            stiffness: 0.0,
+            springref: 0.0,
         }
     }
 
@@ -115,8 +124,8 @@ pub struct SpatialModel<const N: usize> {
 }
 
 impl<const N: usize> SpatialModel<N> {
-    /// Checks that the model is usable: every value finite, masses, armature and friction not
-    /// negative, inertia tensors symmetric with no negative moment on the diagonal, ranges with
+    /// Checks that the model is usable: every value finite, masses, armature, friction and
+    /// spring stiffness not negative, inertia tensors symmetric with no negative moment on the diagonal, ranges with
     /// `lower < upper`, and URDF axes not zero. The triangle inequality of the moments is not
     /// required: published models break it (Corke's PUMA 560), as the derive allows.
     ///
@@ -145,10 +154,14 @@ impl<const N: usize> SpatialModel<N> {
                 ("armature", j.armature),
                 ("damping", j.damping),
                 ("frictionloss", j.frictionloss),
+                ("stiffness", j.stiffness),
             ] {
                 if !value.is_finite() || value < 0.0 {
                     return fail(what, Some(i), value);
                 }
+            }
+            if !j.springref.is_finite() {
+                return fail("springref", Some(i), j.springref);
             }
             l.check(
                 Some(i),

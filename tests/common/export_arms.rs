@@ -35,12 +35,13 @@ pub struct MdhArm {
     pub wrist: Revolute,
 }
 
-/// URDF joints with tilted axes.
+/// URDF joints with tilted axes and a spring.
 #[derive(SpatialArm, Default)]
 #[arm(gravity = (0.5, 0, -9.8))]
 pub struct OriginArm {
     #[arm(origin(xyz = (0, 0, 0.1), rpy = (0.1, 0, 0.3)), axis = (0, 0, 1), mass = 1.0,
-          com = (0.02, 0, 0.05), inertia(xx = 0.01, yy = 0.012, zz = 0.008))]
+          com = (0.02, 0, 0.05), inertia(xx = 0.01, yy = 0.012, zz = 0.008),
+          stiffness = 0.8, springref = 0.25)]
     pub first: Revolute,
     #[arm(origin(xyz = (0.2, 0, 0.1), rpy = (0, pi/2, 0)), axis = (0, 1, 1), mass = 0.7,
           com = (0.1, 0, 0), inertia(xx = 0.002, yy = 0.01, zz = 0.01, xy = 0.0005), armature = 0.01)]

@@ -3147,6 +3147,8 @@ Cost: 57 multiplications, 44 additions, 0 divisions, 5 sin_cos pairs.*/
                     armature: 0.0,
                     damping: 0.0,
                     frictionloss: 0.0,
+                    stiffness: 0.0,
+                    springref: 0.0,
                 },
                 ::planar_arm::spatial::SpatialJoint {
                     geometry: ::planar_arm::spatial::JointGeometry::Dh {
@@ -3160,6 +3162,8 @@ Cost: 57 multiplications, 44 additions, 0 divisions, 5 sin_cos pairs.*/
                     armature: 0.0,
                     damping: 0.0,
                     frictionloss: 0.0,
+                    stiffness: 0.0,
+                    springref: 0.0,
                 },
                 ::planar_arm::spatial::SpatialJoint {
                     geometry: ::planar_arm::spatial::JointGeometry::Dh {
@@ -3173,6 +3177,8 @@ Cost: 57 multiplications, 44 additions, 0 divisions, 5 sin_cos pairs.*/
                     armature: 0.0,
                     damping: 0.0,
                     frictionloss: 0.0,
+                    stiffness: 0.0,
+                    springref: 0.0,
                 },
                 ::planar_arm::spatial::SpatialJoint {
                     geometry: ::planar_arm::spatial::JointGeometry::Dh {
@@ -3186,6 +3192,8 @@ Cost: 57 multiplications, 44 additions, 0 divisions, 5 sin_cos pairs.*/
                     armature: 0.0,
                     damping: 0.0,
                     frictionloss: 0.0,
+                    stiffness: 0.0,
+                    springref: 0.0,
                 },
                 ::planar_arm::spatial::SpatialJoint {
                     geometry: ::planar_arm::spatial::JointGeometry::Dh {
@@ -3199,6 +3207,8 @@ Cost: 57 multiplications, 44 additions, 0 divisions, 5 sin_cos pairs.*/
                     armature: 0.0,
                     damping: 0.0,
                     frictionloss: 0.0,
+                    stiffness: 0.0,
+                    springref: 0.0,
                 },
                 ::planar_arm::spatial::SpatialJoint {
                     geometry: ::planar_arm::spatial::JointGeometry::Dh {
@@ -3212,6 +3222,8 @@ Cost: 57 multiplications, 44 additions, 0 divisions, 5 sin_cos pairs.*/
                     armature: 0.0,
                     damping: 0.0,
                     frictionloss: 0.0,
+                    stiffness: 0.0,
+                    springref: 0.0,
                 },
             ],
             links: [

@@ -509,10 +509,12 @@ fn model(arm: &SpatialArmSpec) -> Result<TokenStream, EmitError> {
             }
             None => quote!(::core::option::Option::None),
         };
-        let (armature, damping, frictionloss) = (
+        let (armature, damping, frictionloss, stiffness, springref) = (
             coefficient_tokens(&j.armature)?,
             coefficient_tokens(&j.damping)?,
             coefficient_tokens(&j.frictionloss)?,
+            coefficient_tokens(&j.stiffness)?,
+            coefficient_tokens(&j.springref)?,
         );
         joints.push(quote!(::planar_arm::spatial::SpatialJoint {
             geometry: #geometry,
@@ -521,6 +523,8 @@ fn model(arm: &SpatialArmSpec) -> Result<TokenStream, EmitError> {
             armature: #armature,
             damping: #damping,
             frictionloss: #frictionloss,
+            stiffness: #stiffness,
+            springref: #springref,
         }));
         links.push(link_tokens(&SpatialBody::of_link(j))?);
     }

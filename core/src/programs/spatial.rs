@@ -228,6 +228,10 @@ fn gravity_program(arm: &SpatialArmSpec, mut p: Program, torques: bool) -> Metho
                 p.neg(f)
             }
         };
+        let value = match crate::programs::spatial_newton_euler::spring(&mut p, arm, i) {
+            Some(s) => p.add(value, s),
+            None => value,
+        };
         out[i] = (format!("g{}", i + 1), value);
     }
     if torques {
@@ -235,7 +239,10 @@ fn gravity_program(arm: &SpatialArmSpec, mut p: Program, torques: bool) -> Metho
             .described("composite masses and first moments from the tip, crossed with gravity")
     } else {
         let d = dot(&mut p, &moment, &g);
-        let v = p.neg(d);
+        let mut v = p.neg(d);
+        if let Some(e) = crate::programs::spatial_newton_euler::spring_energy(&mut p, arm) {
+            v = p.add(v, e);
+        }
         Method::new(p, vec![("v".to_string(), v)])
             .described("the first moment of every link's mass, dotted with gravity")
     }

@@ -135,6 +135,41 @@ pub(crate) fn friction(p: &mut Program, arm: &SpatialArmSpec, j: usize) -> Id {
     p.add(viscous, coulomb)
 }
 
+/// Joint `j`'s spring torque `stiffness (q - springref)`, if it has a spring: part of the
+/// static torques g(q), as its energy is part of the potential.
+pub(crate) fn spring(p: &mut Program, arm: &SpatialArmSpec, j: usize) -> Option<Id> {
+    let spec = &arm.joints[j];
+    if !spec.sprung() {
+        return None;
+    }
+    let q = p.input(Input::Q(j));
+    let rest = p.poly(&spec.springref);
+    let stretch = p.sub(q, rest);
+    let k = p.poly(&spec.stiffness);
+    Some(p.mul(k, stretch))
+}
+
+/// The joints' springs' energy `sum stiffness (q - springref)^2 / 2`, if any joint has one.
+pub(crate) fn spring_energy(p: &mut Program, arm: &SpatialArmSpec) -> Option<Id> {
+    let mut total: Option<Id> = None;
+    for (j, spec) in arm.joints.iter().enumerate() {
+        let Some(torque) = spring(p, arm, j) else {
+            continue;
+        };
+        let q = p.input(Input::Q(j));
+        let rest = p.poly(&spec.springref);
+        let stretch = p.sub(q, rest);
+        let twice = p.mul(torque, stretch);
+        let half = p.constant(crate::algebra::ring::ratio(1, 2));
+        let e = p.mul(half, twice);
+        total = Some(match total {
+            Some(t) => p.add(t, e),
+            None => e,
+        });
+    }
+    total
+}
+
 /// The joints' friction `damping qd + frictionloss sign(qd)` alone.
 pub(crate) fn friction_method(arm: &SpatialArmSpec) -> Method {
     let mut p = Program::new();
@@ -316,6 +351,11 @@ pub(crate) fn newton_euler(
         if with_joint_terms && terms.rates {
             let f = friction(p, arm, j);
             torques[j] = p.add(torques[j], f);
+        }
+        if terms.gravity {
+            if let Some(s) = spring(p, arm, j) {
+                torques[j] = p.add(torques[j], s);
+            }
         }
     }
     torques

@@ -101,6 +101,8 @@ pub fn import(
             armature: Poly::constant(c.joint.armature),
             damping: Poly::constant(c.joint.damping),
             frictionloss: Poly::constant(c.joint.frictionloss),
+            stiffness: Poly::constant(c.joint.stiffness),
+            springref: Poly::constant(c.joint.springref),
         })
         .collect();
     Ok(Imported {

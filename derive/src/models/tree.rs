@@ -44,6 +44,9 @@ pub struct Joint {
     pub armature: Rational,
     pub damping: Rational,
     pub frictionloss: Rational,
+    /// A spring `stiffness (q - springref)`.
+    pub stiffness: Rational,
+    pub springref: Rational,
 }
 
 /// A body (URDF link, MJCF body).

@@ -136,6 +136,8 @@ fn joint_motion(xml: &Xml<'_>, j: Node<'_, '_>, name: &str) -> Result<Motion, Fi
         armature: int(0),
         damping,
         frictionloss,
+        stiffness: int(0),
+        springref: int(0),
     }))
 }
 

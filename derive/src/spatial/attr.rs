@@ -6,7 +6,7 @@
 //! `base = ".."` and `tip = ".."` for an arm read from a model file. On each joint field: one of `dh(a, alpha, d, theta)`,
 //! `mdh(a, alpha, d, theta)` or `origin(xyz = (..), rpy = (..))` with `axis = (x, y, z)`; the
 //! link's `mass`, `com = (x, y, z)` and `inertia(xx, yy, zz, xy, xz, yz)`; the joint's `range`,
-//! `armature`, `damping`, `frictionloss`. Lengths and mass properties are exact numbers or
+//! `armature`, `damping`, `frictionloss`, and a spring's `stiffness` and `springref`. Lengths and mass properties are exact numbers or
 //! run-time parameters (`self.NAME`); angles are numbers and multiples of `pi`.
 
 use planar_arm_core::ring::Rational;
@@ -89,6 +89,8 @@ pub struct SpatialAttrs {
     pub armature: Option<Scalar>,
     pub damping: Option<Scalar>,
     pub frictionloss: Option<Scalar>,
+    pub stiffness: Option<Scalar>,
+    pub springref: Option<Scalar>,
     // On the struct.
     pub gravity: Option<Triple>,
     pub tool_xyz: Option<Triple>,
@@ -129,6 +131,8 @@ const FIELD_KEYS: &[&str] = &[
     "armature",
     "damping",
     "frictionloss",
+    "stiffness",
+    "springref",
 ];
 const STRUCT_KEYS: &[&str] = &[
     "gravity",
@@ -648,6 +652,8 @@ fn keyed_value(
         "armature" => out.armature = Some(scalar(meta, params)?),
         "damping" => out.damping = Some(scalar(meta, params)?),
         "frictionloss" => out.frictionloss = Some(scalar(meta, params)?),
+        "stiffness" => out.stiffness = Some(scalar(meta, params)?),
+        "springref" => out.springref = Some(scalar(meta, params)?),
         "range" => {
             let mut uses = Vec::new();
             let (e, tokens) = expr(meta)?;

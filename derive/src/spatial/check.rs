@@ -335,6 +335,11 @@ fn check_joint(
         &a.frictionloss,
         &format!("joint `{name}`: frictionloss cannot be negative (it would feed energy in)"),
     );
+    ok &= not_negative(
+        cx,
+        &a.stiffness,
+        &format!("joint `{name}`: a spring's stiffness cannot be negative (it would push the joint away)"),
+    );
     ok &= check_inertia(cx, &format!("joint `{name}`:"), &a.inertia);
     let range = a.range.as_ref().and_then(|r| {
         let (lo, hi) = &r.value;
@@ -362,6 +367,8 @@ fn check_joint(
         armature: or_zero(&a.armature),
         damping: or_zero(&a.damping),
         frictionloss: or_zero(&a.frictionloss),
+        stiffness: or_zero(&a.stiffness),
+        springref: or_zero(&a.springref),
     })
 }
 

@@ -17,7 +17,8 @@
 //! - [`kinetic_energy`]: each link's velocity by an outward recursion of its own.
 //!
 //! The equations of motion are those of planar arms: `tau = M qdd + c + g + f`, `M` holding
-//! each joint's armature on its diagonal, `g = dV/dq` ([`gravity`](super::gravity)) and
+//! each joint's armature on its diagonal, `g = dV/dq` ([`gravity`](super::gravity): gravity's
+//! and the joint springs' torques) and
 //! `f_i = damping_i qd_i + frictionloss_i sign(qd_i)` ([`friction`]).
 
 use nalgebra::{Matrix3, Point3, SMatrix, SVector, Vector3};
@@ -135,7 +136,10 @@ pub fn inverse_dynamics<const N: usize>(
     qdd: &SVector<f64, N>,
 ) -> SVector<f64, N> {
     let armature = SVector::<f64, N>::from_fn(|i, _| model.joints[i].armature * qdd[i]);
-    rnea(model, q, qd, qdd, &model.gravity) + armature + friction(model, qd)
+    rnea(model, q, qd, qdd, &model.gravity)
+        + armature
+        + friction(model, qd)
+        + super::springs(model, q)
 }
 
 /// `c + g + f`: [`inverse_dynamics`] at zero acceleration.

@@ -373,6 +373,21 @@ impl SpatialKinematics {
             links.push(frame.clone());
         }
         let tool = frame.mul_within(&tool_frame(arm), budget)?;
+        // The joint springs' energy, stiffness (q - springref)^2 / 2: the potential is theirs
+        // and gravity's, and g = dV/dq holds the springs' torques.
+        for (j, joint) in arm
+            .joints
+            .iter()
+            .enumerate()
+            .filter(|(_, j)| moving && j.sprung())
+        {
+            let stretch = E::var(Var::Q(j)).sub(&constant(&joint.springref));
+            let energy = stretch
+                .mul(&stretch)
+                .scale_by(&joint.stiffness)
+                .scale(&crate::algebra::ring::ratio(1, 2));
+            potential.add_assign(&energy);
+        }
         let gravity = (0..arm.joints.len()).map(|i| potential.diff_q(i)).collect();
         Some(Self {
             links,

@@ -187,6 +187,19 @@ pub struct SpatialJointSpec {
     pub damping: Poly,
     /// Coulomb friction.
     pub frictionloss: Poly,
+    /// The joint spring's stiffness: a torque `stiffness (q - springref)` toward `springref`
+    /// (MuJoCo's), whose energy `stiffness (q - springref)^2 / 2` is part of the potential.
+    pub stiffness: Poly,
+    /// Where the spring is relaxed.
+    pub springref: Poly,
+}
+
+impl SpatialJointSpec {
+    /// Whether the joint has a spring.
+    #[must_use]
+    pub fn sprung(&self) -> bool {
+        self.stiffness != Poly::default()
+    }
 }
 
 /// A rigid body's mass properties in some frame: mass, centre of mass, and the inertia tensor
@@ -302,6 +315,8 @@ impl SpatialArmSpec {
                 armature: f(&j.armature),
                 damping: f(&j.damping),
                 frictionloss: f(&j.frictionloss),
+                stiffness: f(&j.stiffness),
+                springref: f(&j.springref),
             })
             .collect();
         Self {

@@ -21,7 +21,7 @@ use num_traits::One;
 use super::modular::{dependencies, Sampled};
 use crate::algebra::residue::{Prime, Residues};
 use crate::algebra::ring::Rational;
-use crate::mechanics::spatial::spec::{SpatialArmSpec, SpatialGeometry};
+use crate::mechanics::spatial::spec::{SpatialArmSpec, SpatialGeometry, SpatialJointSpec};
 use crate::methods::identification::regressor::BaseParameters;
 use crate::programs::method::Method;
 use crate::programs::spatial_regressor::{regressor, standard_parameters, Entry, SpatialParameter};
@@ -126,10 +126,12 @@ fn sampled(
 }
 
 /// The standard and base parameters; `None` when the geometry is not exact (see the module's
-/// docs) or a dozen primes have not settled the elimination.
+/// docs), a joint has a spring (whose torque `stiffness (q - springref)` is linear in the
+/// angle itself, not a point of its circle: not in this regressor), or a dozen primes have not
+/// settled the elimination.
 #[must_use]
 pub fn identification(arm: &SpatialArmSpec) -> Option<SpatialIdentification> {
-    if !exact_geometry(arm) {
+    if !exact_geometry(arm) || arm.joints.iter().any(SpatialJointSpec::sprung) {
         return None;
     }
     let parameters = standard_parameters(arm);

@@ -1,6 +1,7 @@
 //! MJCF, as MuJoCo's compiler reads it, for what a chain's rigid-body dynamics depends on:
 //! nested bodies and `<frame>`s with their position and orientation, `hinge` and `slide` joints
-//! (`pos`, `axis`, `ref`, `range`, `armature`, `damping`, `frictionloss`), `<inertial>` or the
+//! (`pos`, `axis`, `ref`, `range`, `armature`, `damping`, `frictionloss`, `stiffness`,
+//! `springref`), `<inertial>` or the
 //! geoms' mass properties, default classes and `childclass`, `<include>`, `<compiler angle
 //! eulerseq inertiafromgeom autolimits>` and `<option gravity>`.
 //!
@@ -333,16 +334,6 @@ impl<'a, 't> Reader<'a, 't> {
             }
             other => return Err(a.error(format!("joint type `{other}`: expected hinge, slide, ball or free"))),
         };
-        let stiffness = a.number("stiffness")?.unwrap_or_else(|| int(0));
-        if !num_traits::Zero::is_zero(&stiffness) {
-            return Ok((
-                Motion::Unsupported(format!(
-                    "joint `{name}` with a spring (stiffness {}), which spatial arms do not model",
-                    a.get("stiffness").unwrap_or_default()
-                )),
-                none,
-            ));
-        }
         let axis = a
             .triple("axis")?
             .unwrap_or_else(|| [int(0), int(0), int(1)]);
@@ -421,6 +412,13 @@ impl<'a, 't> Reader<'a, 't> {
                 armature: non_negative("armature")?,
                 damping: non_negative("damping")?,
                 frictionloss: non_negative("frictionloss")?,
+                stiffness: non_negative("stiffness")?,
+                // MuJoCo's springref is a qpos, as our q is: no ref folded in.
+                springref: match a.number("springref")? {
+                    Some(r) if hinge => self.compiler.radians(&r),
+                    Some(r) => r,
+                    None => int(0),
+                },
             }),
             fold,
         ))
