@@ -36,6 +36,12 @@ struct Reacher;
 #[arm(mjcf = "models/hopper.xml")]
 struct Hopper;
 
+/// The reacher again, as a planar arm: its hinges turn about z, its links lie along x at
+/// `qpos = 0`, and gravity is normal to its plane.
+#[derive(PlanarArm)]
+#[arm(mjcf = "models/reacher.xml")]
+struct ReacherPlanar;
+
 #[derive(SpatialArm)]
 #[arm(mjcf = "models/swimmer6.xml")]
 struct Swimmer6;
@@ -161,6 +167,7 @@ fn control_suite_models_match_mujoco() {
         check(MODELS, &CartPole, ["slider", "hinge_1"], "cartpole"),
         check(MODELS, &Pendulum, ["hinge"], "pendulum"),
         check(MODELS, &Reacher, ["shoulder", "wrist"], "reacher"),
+        check(MODELS, &ReacherPlanar, ["shoulder", "wrist"], "reacher"),
         check(
             MODELS,
             &Hopper,

@@ -48,6 +48,11 @@ impl<'a> Arm<'a> {
                 );
             }
         }
+        if struct_attrs.mentioned.contains(&attr::URDF)
+            || struct_attrs.mentioned.contains(&attr::MJCF)
+        {
+            return Self::from_file(cx, input, struct_attrs);
+        }
         let fields = match &input.data {
             Data::Struct(s) => &s.fields,
             Data::Enum(e) => {
@@ -281,5 +286,38 @@ pub fn joint_kind(ty: &syn::Type) -> Option<JointKind> {
         syn::Type::Group(g) => joint_kind(&g.elem),
         syn::Type::Paren(p) => joint_kind(&p.elem),
         _ => None,
+    }
+}
+
+impl<'a> Arm<'a> {
+    /// An arm whose links come from a model file: a struct of no link fields.
+    fn from_file(cx: &Ctxt, input: &'a DeriveInput, attrs: Attrs) -> Option<Self> {
+        let Data::Struct(s) = &input.data else {
+            cx.error_spanned_by(
+                &input.ident,
+                "#[derive(PlanarArm)] reads a model file into a struct: write `struct Name;`",
+            );
+            return None;
+        };
+        let mut others = Vec::new();
+        for field in &s.fields {
+            if joint_kind(&field.ty).is_some()
+                || field.attrs.iter().any(|a| a.path().is_ident(attr::ARM))
+            {
+                // #[arm(mjcf = "..")] struct Acrobot { #[arm(length = 1)] upper: Revolute }
+                cx.error_spanned_by(
+                    field,
+                    "the links come from the model file; remove this link field (or the \
+                     `urdf`/`mjcf` key)",
+                );
+                return None;
+            }
+            others.push(field);
+        }
+        Some(Self {
+            attrs,
+            links: Vec::new(),
+            others,
+        })
     }
 }

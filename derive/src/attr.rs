@@ -24,8 +24,22 @@ pub const PAYLOAD_INERTIA: &str = "payload_inertia";
 pub const PAYLOAD_COM: &str = "payload_com";
 pub const CRATE: &str = "crate";
 pub const RANGE: &str = "range";
+pub const URDF: &str = "urdf";
+pub const MJCF: &str = "mjcf";
+pub const BASE: &str = "base";
+pub const TIP: &str = "tip";
 
-pub const STRUCT_KEYS: &[&str] = &[GRAVITY, PAYLOAD, PAYLOAD_INERTIA, PAYLOAD_COM, CRATE];
+pub const STRUCT_KEYS: &[&str] = &[
+    GRAVITY,
+    PAYLOAD,
+    PAYLOAD_INERTIA,
+    PAYLOAD_COM,
+    CRATE,
+    URDF,
+    MJCF,
+    BASE,
+    TIP,
+];
 pub const FIELD_KEYS: &[&str] = &[
     LENGTH,
     MASS,
@@ -79,6 +93,11 @@ pub struct Attrs {
     pub tokens: TokenStream,
     /// `#[arm(crate = "path")]`: the path of `planar_arm` in the user's crate.
     pub krate: Option<syn::Path>,
+    /// `#[arm(urdf = "..")]` or `#[arm(mjcf = "..")]`: the model file the links come from, and
+    /// the chain's `base` and `tip`.
+    pub model: Option<(crate::models::Format, syn::LitStr)>,
+    pub base: Option<syn::LitStr>,
+    pub tip: Option<syn::LitStr>,
 }
 
 impl Attrs {
@@ -176,6 +195,10 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
     let key = path_text(path);
     if key == CRATE && place == Place::Struct {
         parse_crate(cx, meta, out);
+        return;
+    }
+    if [URDF, MJCF, BASE, TIP].contains(&key.as_str()) && place == Place::Struct {
+        parse_model_key(cx, meta, &key, out);
         return;
     }
     // #[arm(inertia(zz = 0.1))], before the value is skipped
@@ -326,6 +349,55 @@ pub(crate) fn tokens_between(
 }
 
 /// `#[arm(crate = "path")]`: the path of `planar_arm` where the user renamed the dependency.
+// #[arm(mjcf = "models/acrobot.xml", tip = "lower_arm")]
+fn parse_model_key(cx: &Ctxt, meta: &ParseNestedMeta<'_>, key: &str, out: &mut Attrs) {
+    let known = STRUCT_KEYS
+        .iter()
+        .copied()
+        .find(|k| *k == key)
+        .unwrap_or(URDF);
+    out.mentioned.push(known);
+    let lit = match meta.value().and_then(|v| v.parse::<syn::LitStr>()) {
+        Ok(lit) => lit,
+        Err(_) => {
+            skip_to_comma(meta.input);
+            out.malformed = true;
+            let example = if key == BASE || key == TIP {
+                format!("{key} = \"link_name\"")
+            } else {
+                format!("{key} = \"models/arm.{key}\"")
+            };
+            cx.error_spanned_by(&meta.path, format!("expected `{example}`, a string"));
+            return;
+        }
+    };
+    let slot = match key {
+        BASE => &mut out.base,
+        TIP => &mut out.tip,
+        _ => {
+            if let Some((_, first)) = &out.model {
+                out.malformed = true;
+                cx.error_spanned_by(
+                    &lit,
+                    format!(
+                        "the arm is already read from \"{}\"; an arm comes from one file",
+                        first.value()
+                    ),
+                );
+                return;
+            }
+            let format = if key == URDF {
+                crate::models::Format::Urdf
+            } else {
+                crate::models::Format::Mjcf
+            };
+            out.model = Some((format, lit));
+            return;
+        }
+    };
+    *slot = Some(lit);
+}
+
 fn parse_crate(cx: &Ctxt, meta: &ParseNestedMeta<'_>, out: &mut Attrs) {
     out.mentioned.push(CRATE);
     let lit = match meta.value().and_then(|v| v.parse::<syn::LitStr>()) {

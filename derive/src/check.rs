@@ -79,6 +79,15 @@ fn sign_check(cx: &Ctxt, v: &Value, positive: bool, message: &str) -> bool {
 /// Validates the parsed arm; `None` after recording errors in `cx`.
 pub fn check(cx: &Ctxt, arm: &Arm<'_>) -> Option<ArmSpec<Poly>> {
     let mut ok = params_exist(cx, arm);
+    for lit in arm.attrs.base.iter().chain(&arm.attrs.tip) {
+        // #[arm(tip = "hand")] on a hand-written arm
+        cx.error_spanned_by(
+            lit,
+            "`base` and `tip` choose the chain of a model file; they go with `urdf = \"..\"` or \
+             `mjcf = \"..\"`",
+        );
+        ok = false;
+    }
     let gravity = match arm.get(GRAVITY) {
         Some(g) => {
             // #[arm(gravity = 9.81)]
@@ -107,6 +116,62 @@ pub fn check(cx: &Ctxt, arm: &Arm<'_>) -> Option<ArmSpec<Poly>> {
         payload,
     })?;
     definite(cx, arm, &spec).then_some(spec)
+}
+
+/// An arm read from a model file: its spec, and what the file says of it. `None` after the
+/// error is reported.
+pub fn check_file(
+    cx: &Ctxt,
+    arm: &Arm<'_>,
+) -> Option<(ArmSpec<Poly>, crate::models::PlanarImport)> {
+    let (format, lit) = arm.attrs.model.as_ref().filter(|_| !arm.attrs.malformed)?;
+    let mut ok = params_exist(cx, arm);
+    let own = arm.get(GRAVITY);
+    let name = |l: &Option<syn::LitStr>| l.as_ref().map(syn::LitStr::value);
+    let file = match crate::models::import_planar(
+        *format,
+        &lit.value(),
+        name(&arm.attrs.base).as_deref(),
+        name(&arm.attrs.tip).as_deref(),
+        own.is_some(),
+    ) {
+        Ok(file) => file,
+        Err(e) => {
+            cx.error_spanned_by(lit, e.0);
+            return None;
+        }
+    };
+    let gravity = match own {
+        Some(g) => {
+            ok &= sign_check(
+                cx,
+                g,
+                false,
+                "gravity is a magnitude along -y and cannot be negative",
+            );
+            g.value.clone()
+        }
+        None => Poly::constant(file.planar.gravity.clone()),
+    };
+    let payload = check_payload(cx, arm, &mut ok);
+    let spec = ArmSpec {
+        links: file.planar.links.clone(),
+        gravity,
+        payload,
+    };
+    if let Some((joint, _)) = literal(&spec).and_then(|l| planar_arm_core::definite::weak_joint(&l))
+    {
+        cx.error_spanned_by(
+            lit,
+            format!(
+                "joint `{}`: its link moves (almost) no mass and turns no inertia, so its \
+                 acceleration is undefined: a planar arm needs mass or armature there",
+                file.names[joint]
+            ),
+        );
+        return None;
+    }
+    ok.then_some((spec, file))
 }
 
 /// A literal arm whose mass matrix is singular (some joint moves no mass and turns no inertia,

@@ -73,14 +73,47 @@ pub(crate) fn header(input: &DeriveInput) -> Header {
 fn try_derive(input: &DeriveInput) -> Result<TokenStream, TokenStream> {
     let cx = Ctxt::new();
     let arm = Arm::from_ast(&cx, input);
-    let spec = arm.as_ref().and_then(|arm| check(&cx, arm));
+    let from_file = arm.as_ref().is_some_and(|a| {
+        a.attrs.mentioned.contains(&crate::attr::URDF)
+            || a.attrs.mentioned.contains(&crate::attr::MJCF)
+    });
+    let (spec, file) = if from_file {
+        match arm
+            .as_ref()
+            .and_then(|arm| crate::check::check_file(&cx, arm))
+        {
+            Some((spec, file)) => (Some(spec), Some(file)),
+            None => (None, None),
+        }
+    } else {
+        (arm.as_ref().and_then(|arm| check(&cx, arm)), None)
+    };
     cx.check()?;
     let (Some(arm), Some(spec)) = (arm, spec) else {
         // Unreachable: `check` reports every reason it returns `None`.
         return Err(syn::Error::new_spanned(&input.ident, "invalid arm").to_compile_error());
     };
-    let header = header(input);
-    let first = derive_spec(&arm, &spec, &header);
+    let mut header = header(input);
+    let mut depend = TokenStream::new();
+    if let (Some(file), Some((_, lit))) = (&file, &arm.attrs.model) {
+        header.joint_names.clone_from(&file.names);
+        let mut doc = vec![format!(
+            "The joints' names in `{}`, base first: the order of `q`.",
+            lit.value()
+        )];
+        doc.extend(file.planar.notes.iter().cloned());
+        header.joint_names_doc = doc.join("\n\n");
+        // `include_bytes!` makes cargo rebuild the user's crate when the file changes.
+        let path = file.path.display().to_string();
+        depend = quote!(
+            const _: &[u8] = ::core::include_bytes!(#path);
+        );
+    }
+    let header = header;
+    let first = derive_spec(&arm, &spec, &header).map(|mut t| {
+        t.extend(depend.clone());
+        t
+    });
     if first.is_ok() {
         return first;
     }
@@ -90,7 +123,8 @@ fn try_derive(input: &DeriveInput) -> Result<TokenStream, TokenStream> {
     for bits in NAMED_BITS {
         let (named, count) = name_long_literals(&spec, bits);
         if count > 0 {
-            if let Ok(tokens) = derive_spec(&arm, &named, &header) {
+            if let Ok(mut tokens) = derive_spec(&arm, &named, &header) {
+                tokens.extend(depend);
                 return Ok(tokens);
             }
         }

@@ -147,7 +147,7 @@ pub fn potential_energy<const N: usize>(model: &SpatialModel<N>, q: &SVector<f64
         .joints
         .iter()
         .zip(q.iter())
-        .map(|(j, q)| j.stiffness * (q - j.springref).powi(2) / 2.0)
+        .map(|(j, q)| j.stiffness * (q - j.springref) * (q - j.springref) / 2.0)
         .sum();
     centres_of_mass(model, q)
         .iter()

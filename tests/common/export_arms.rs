@@ -59,3 +59,15 @@ pub struct PlanarMix {
     #[arm(length = 0.2, mass = 0.5, com = (0.1, -0.01), frictionloss = 0.05)]
     pub wrist: Revolute,
 }
+
+/// A planar arm of exact decimals and no payload: its MJCF reads back to the same `EXACT`.
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81)]
+pub struct PlanarExact {
+    #[arm(length = 0.5, mass = 2.0, inertia = 0.05, com = (0.25, 0.02), damping = 0.1)]
+    pub shoulder: Revolute,
+    #[arm(length = 0.3, mass = 1.0, inertia = 0.01, range = (0, 0.4), armature = 0.2)]
+    pub reach: Prismatic,
+    #[arm(length = 0.2, mass = 0.5, inertia = 0.002, com = (0.1, -0.01), frictionloss = 0.05)]
+    pub wrist: Revolute,
+}

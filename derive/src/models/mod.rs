@@ -6,6 +6,7 @@
 pub mod chain;
 pub mod frame;
 mod mjcf;
+pub mod planar;
 pub mod tree;
 mod urdf;
 mod xml;
@@ -15,8 +16,10 @@ use std::path::PathBuf;
 use planar_arm_core::mechanics::spatial::{
     unit_axis, FixedAngle, SpatialGeometry, SpatialJointSpec,
 };
+use planar_arm_core::ring::Rational;
 use planar_arm_core::Poly;
 
+use num_traits::Zero;
 use tree::FileError;
 
 /// The format of a model file.
@@ -51,13 +54,8 @@ fn consts(v: &[planar_arm_core::ring::Rational; 3]) -> [Poly; 3] {
     v.clone().map(Poly::constant)
 }
 
-/// Reads `path` and takes the chain from `base` to `tip`.
-pub fn import(
-    format: Format,
-    path: &str,
-    base: Option<&str>,
-    tip: Option<&str>,
-) -> Result<Imported, FileError> {
+/// The tree of the file at `path` and the file's absolute path.
+fn read(format: Format, path: &str) -> Result<(tree::Tree, PathBuf), FileError> {
     let full = resolve(path);
     let text = std::fs::read_to_string(&full).map_err(|e| {
         FileError(format!(
@@ -69,7 +67,11 @@ pub fn import(
         Format::Urdf => urdf::read(&xml::Xml::parse(path, &text)?)?,
         Format::Mjcf => mjcf::read(path, &full, &text)?,
     };
-    let chain = chain::chain(&tree, path, base, tip)?;
+    Ok((tree, full))
+}
+
+/// The notes every import makes: what was locked, what was not read.
+fn notes(tree: &tree::Tree, chain: &chain::Chain) -> Vec<String> {
     let mut notes = Vec::new();
     if !chain.locked.is_empty() {
         notes.push(format!(
@@ -83,6 +85,51 @@ pub fn import(
         ));
     }
     notes.extend(tree.ignored.iter().cloned());
+    notes
+}
+
+/// What a planar arm takes from its file.
+pub struct PlanarImport {
+    pub planar: planar::Planar,
+    pub names: Vec<String>,
+    pub path: PathBuf,
+}
+
+/// Reads `path` as a planar arm: the chain from `base` to `tip` in the plane of its hinges,
+/// under the file's gravity (URDF's: `0 0 -9.81`) unless `own_gravity`.
+pub fn import_planar(
+    format: Format,
+    path: &str,
+    base: Option<&str>,
+    tip: Option<&str>,
+    own_gravity: bool,
+) -> Result<PlanarImport, FileError> {
+    let (tree, full) = read(format, path)?;
+    let chain = chain::chain(&tree, path, base, tip)?;
+    let down = Rational::new((-981).into(), 100.into());
+    let g = tree
+        .gravity
+        .clone()
+        .unwrap_or_else(|| [Rational::zero(), Rational::zero(), down]);
+    let mut planar = planar::planar(&chain, path, (!own_gravity).then_some(&g))?;
+    planar.notes.extend(notes(&tree, &chain));
+    Ok(PlanarImport {
+        planar,
+        names: chain.joints.iter().map(|j| j.joint.name.clone()).collect(),
+        path: full,
+    })
+}
+
+/// Reads `path` and takes the chain from `base` to `tip`.
+pub fn import(
+    format: Format,
+    path: &str,
+    base: Option<&str>,
+    tip: Option<&str>,
+) -> Result<Imported, FileError> {
+    let (tree, full) = read(format, path)?;
+    let chain = chain::chain(&tree, path, base, tip)?;
+    let notes = notes(&tree, &chain);
     let names = chain.joints.iter().map(|j| j.joint.name.clone()).collect();
     let joints = chain
         .joints

@@ -224,3 +224,42 @@ fn an_inertial_with_both_a_tensor_and_an_orientation_is_refused_as_mujoco_does()
     assert!(e.starts_with(&format!("{p}:4:1:")), "{e}");
     assert!(e.contains("takes no orientation"), "{e}");
 }
+
+fn planar_error(path: &str) -> String {
+    match super::import_planar(Format::Mjcf, path, None, None, false) {
+        Ok(i) => panic!("{path} read as planar: {:?}", i.names),
+        Err(e) => e.0,
+    }
+}
+
+#[test]
+fn what_a_planar_arm_cannot_say_yet_is_named() {
+    // The acrobot's links stand along z at qpos = 0, with gravity along them.
+    let e = planar_error("../models/acrobot.xml");
+    assert!(e.contains("along the plane's x"), "{e}");
+    // The cart-pole's plane has y = -z: gravity points up it.
+    let e = planar_error("../models/cartpole.xml");
+    assert!(e.contains("gravity"), "{e}");
+    // The UR5 is not planar: its second axis leaves the first's plane by a right angle.
+    let e = match super::import_planar(Format::Urdf, "../models/ur5.urdf", None, None, false) {
+        Ok(_) => panic!("the UR5 read as planar"),
+        Err(e) => e.0,
+    };
+    assert!(
+        e.contains("joint `shoulder_lift_joint`: its axis") && e.contains("by 90.000 degrees"),
+        "{e}"
+    );
+}
+
+#[test]
+fn the_reacher_is_planar_in_its_own_plane() {
+    let i = super::import_planar(Format::Mjcf, "../models/reacher.xml", None, None, false).unwrap();
+    assert_eq!(i.names, ["shoulder", "wrist"]);
+    // Gravity is normal to the plane: none acts.
+    assert_eq!(i.planar.gravity, planar_arm_core::ring::int(0));
+    assert!(
+        i.planar.notes[0].contains("normal (0, 0, 1)"),
+        "{}",
+        i.planar.notes[0]
+    );
+}

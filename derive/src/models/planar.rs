@@ -1,0 +1,281 @@
+//! A model file's chain as a planar arm: every hinge about one axis `n` (the plane's normal),
+//! every slide in the plane, and at `q = 0` the joints in a line, the plane's `x`, so that each
+//! link starts where the one before it ends and points the same way (the planar derive's
+//! convention: a link's length along its own `x`, a slide along the link before it).
+//!
+//! The plane's frame: its origin at the first joint, `x` from the first joint toward the next
+//! (or along the first slide, or toward the tip), `y = n x x`. Offsets along `n` do not change a
+//! planar motion and are dropped; gravity must lie along `-y` (a part along `n` does no work
+//! and is dropped). What the planar derive cannot say yet (a joint turning the other way, a
+//! link bent at `q = 0`, gravity along the links, a spring) is an error naming the joint.
+
+use num_traits::{Signed, Zero};
+use planar_arm_core::ring::{int, to_f64, Rational};
+use planar_arm_core::Poly;
+use planar_arm_core::{JointKind, LinkSpec};
+
+use super::chain::Chain;
+use super::frame::{decimal, Pose, Vec3};
+use super::tree::FileError;
+
+fn f(r: &Rational) -> f64 {
+    to_f64(r).unwrap_or(0.0)
+}
+
+fn dot(a: &Vec3, b: &Vec3) -> Rational {
+    (0..3).map(|i| &a[i] * &b[i]).sum()
+}
+
+fn cross(a: &Vec3, b: &Vec3) -> Vec3 {
+    [
+        &a[1] * &b[2] - &a[2] * &b[1],
+        &a[2] * &b[0] - &a[0] * &b[2],
+        &a[0] * &b[1] - &a[1] * &b[0],
+    ]
+}
+
+fn sub(a: &Vec3, b: &Vec3) -> Vec3 {
+    core::array::from_fn(|i| &a[i] - &b[i])
+}
+
+fn norm(a: &Vec3) -> f64 {
+    a.iter().map(|x| f(x) * f(x)).sum::<f64>().sqrt()
+}
+
+/// `v` of unit length: exact along a coordinate axis, else each entry the shortest decimal.
+fn unit(v: &Vec3) -> Vec3 {
+    let nonzero: Vec<usize> = (0..3).filter(|&i| !v[i].is_zero()).collect();
+    if let [i] = nonzero.as_slice() {
+        let mut u: Vec3 = Default::default();
+        u[*i] = if v[*i].is_negative() { int(-1) } else { int(1) };
+        return u;
+    }
+    let n = norm(v);
+    v.clone().map(|x| decimal(f(&x) / n))
+}
+
+/// Whether `v` is zero, to rounding against `scale`.
+fn negligible(v: &Vec3, scale: f64) -> bool {
+    v.iter().all(Zero::is_zero) || norm(v) <= 1e-12 * scale.max(1e-300)
+}
+
+fn small(x: &Rational, scale: f64) -> bool {
+    x.is_zero() || f(x).abs() <= 1e-12 * scale.max(1e-300)
+}
+
+/// What a planar derive takes from a file.
+pub struct Planar {
+    pub links: Vec<LinkSpec<Poly>>,
+    /// Gravity's magnitude along the plane's `-y`.
+    pub gravity: Rational,
+    /// Notes for the docs: the plane chosen, what was dropped.
+    pub notes: Vec<String>,
+}
+
+fn show(v: &Vec3) -> String {
+    let parts: Vec<String> = v.iter().map(|x| format!("{}", f(x))).collect();
+    format!("({})", parts.join(", "))
+}
+
+/// The chain as a planar arm under the file's gravity `g` (in the base frame; `None` when the
+/// struct gives its own).
+pub fn planar(chain: &Chain, file: &str, g: Option<&Vec3>) -> Result<Planar, FileError> {
+    let fail = |joint: &str, what: String| FileError(format!("{file}: joint `{joint}`: {what}"));
+    // Each joint's frame at q = 0 in the base's, its axis there, and the tool's.
+    let mut frames: Vec<Pose> = Vec::new();
+    let mut at = Pose::identity();
+    for j in &chain.joints {
+        at = at.then(&j.origin);
+        frames.push(at.clone());
+    }
+    let tool = at.then(&chain.tool);
+    let axes: Vec<Vec3> = chain
+        .joints
+        .iter()
+        .zip(&frames)
+        .map(|(j, w)| w.rotation().apply(&j.joint.axis))
+        .collect();
+    let name = |i: usize| chain.joints[i].joint.name.as_str();
+    let hinge = |i: usize| chain.joints[i].joint.kind == JointKind::Revolute;
+    let first = (0..axes.len()).find(|&i| hinge(i)).ok_or_else(|| {
+        FileError(format!(
+            "{file}: no hinge fixes the plane of a planar arm; read the file with \
+             #[derive(SpatialArm)]"
+        ))
+    })?;
+    let n = unit(&axes[first]);
+    for (i, a) in axes.iter().enumerate() {
+        let scale = norm(a);
+        if hinge(i) {
+            let off = cross(a, &n);
+            if !negligible(&off, scale) {
+                let angle = (norm(&off) / scale).asin().to_degrees();
+                return Err(fail(
+                    name(i),
+                    format!(
+                        "its axis {} leaves the plane of `{}`'s {} by {angle:.3} degrees: the \
+                         model is not planar; read it with #[derive(SpatialArm)]",
+                        show(a),
+                        name(first),
+                        show(&n)
+                    ),
+                ));
+            }
+            if dot(a, &n).is_negative() {
+                return Err(fail(
+                    name(i),
+                    "it turns the other way from the first hinge (about -n), which the planar \
+                     derive's `reversed` will say; read the file with #[derive(SpatialArm)] for now"
+                        .to_string(),
+                ));
+            }
+        } else if !small(&dot(a, &n), scale) {
+            return Err(fail(
+                name(i),
+                format!(
+                    "the slide {} leaves the plane by {}",
+                    show(a),
+                    f(&dot(a, &n)) / scale
+                ),
+            ));
+        }
+    }
+    // The plane's x: the line of the joints at q = 0.
+    let anchors: Vec<Vec3> = frames.iter().map(|w| w.xyz.clone()).collect();
+    let in_plane = |v: &Vec3| -> Vec3 {
+        let along = dot(v, &n);
+        core::array::from_fn(|i| &v[i] - &along * &n[i])
+    };
+    let size = anchors
+        .iter()
+        .chain(core::iter::once(&tool.xyz))
+        .map(norm)
+        .fold(1e-3_f64, f64::max);
+    let direction = (1..anchors.len())
+        .map(|i| in_plane(&sub(&anchors[i], &anchors[i - 1])))
+        .chain(
+            (0..axes.len())
+                .filter(|&i| !hinge(i))
+                .map(|i| axes[i].clone()),
+        )
+        .chain(core::iter::once(in_plane(&sub(
+            &tool.xyz,
+            &anchors[anchors.len() - 1],
+        ))))
+        .find(|v| !negligible(v, size));
+    let x = match direction {
+        Some(v) => unit(&v),
+        // Every joint at one point and no slide: any direction in the plane.
+        None => {
+            let k = (0..3).find(|&k| n[k].is_zero()).unwrap_or(0);
+            let mut e: Vec3 = Default::default();
+            e[k] = int(1);
+            unit(&in_plane(&e))
+        }
+    };
+    let y = cross(&n, &x);
+    let mut links = Vec::new();
+    for (i, j) in chain.joints.iter().enumerate() {
+        let end = anchors.get(i + 1).unwrap_or(&tool.xyz);
+        let step = sub(end, &anchors[i]);
+        if !small(&dot(&step, &y), size) {
+            return Err(fail(
+                name(i),
+                format!(
+                    "its link is bent at q = 0 (the next joint is {} off the line of the joints), \
+                     which the planar derive's `offset` will say; read the file with \
+                     #[derive(SpatialArm)] for now",
+                    f(&dot(&step, &y))
+                ),
+            ));
+        }
+        if !hinge(i) {
+            let a = &axes[i];
+            if !negligible(&cross(a, &x), norm(a)) || dot(a, &x).is_negative() {
+                return Err(fail(
+                    name(i),
+                    format!(
+                        "the slide {} is not along the link before it, {}, which the planar \
+                         derive's `offset` will say",
+                        show(a),
+                        show(&x)
+                    ),
+                ));
+            }
+        }
+        if !j.joint.stiffness.is_zero() {
+            return Err(fail(
+                name(i),
+                "a spring, which planar arms do not have yet; read the file with \
+                 #[derive(SpatialArm)]"
+                    .to_string(),
+            ));
+        }
+        let body = j.body.moved(&Pose {
+            xyz: Default::default(),
+            rpy: frames[i].rpy.clone(),
+        });
+        let c = body.com.clone();
+        let [xx, yy, zz, xy, xz, yz] = body.inertia.clone();
+        let tensor = [
+            [xx, xy.clone(), xz.clone()],
+            [xy, yy, yz.clone()],
+            [xz, yz, zz],
+        ];
+        let about_n: Rational = (0..3)
+            .flat_map(|a| (0..3).map(move |b| (a, b)))
+            .map(|(a, b)| &n[a] * &tensor[a][b] * &n[b])
+            .sum();
+        links.push(LinkSpec {
+            length: Poly::constant(dot(&step, &x)),
+            mass: Poly::constant(body.mass.clone()),
+            inertia: Poly::constant(about_n),
+            com: (Poly::constant(dot(&c, &x)), Poly::constant(dot(&c, &y))),
+            armature: Poly::constant(j.joint.armature.clone()),
+            damping: Poly::constant(j.joint.damping.clone()),
+            frictionloss: Poly::constant(j.joint.frictionloss.clone()),
+            joint: j.joint.kind,
+            range: j.joint.range.clone(),
+        });
+    }
+    let mut notes = vec![format!(
+        "Read as a planar arm in the plane through the first joint with normal {} (the hinges' \
+         axis), x along {} (the line of the joints at q = 0) and y = n x x: a joint's angle is \
+         its qpos, its link's length the distance to the next joint along x.",
+        show(&n),
+        show(&x)
+    )];
+    let Some(g) = g else {
+        return Ok(Planar {
+            links,
+            gravity: int(0),
+            notes,
+        });
+    };
+    let (gx, gy) = (dot(g, &x), dot(g, &y));
+    let gscale = norm(g);
+    if !small(&gx, gscale) || gy.is_positive() {
+        return Err(FileError(format!(
+            "{file}: gravity {} has {} along the plane's x {} and {} along its y {}: a planar \
+             arm's gravity is along -y, with its links along x at q = 0; the planar derive's \
+             `gravity = (gx, gy)` will say this; give `gravity = <magnitude>` on the struct, or \
+             read the file with #[derive(SpatialArm)]",
+            show(g),
+            f(&gx),
+            show(&x),
+            f(&gy),
+            show(&y)
+        )));
+    }
+    if !small(&dot(g, &n), gscale) {
+        notes.push(format!(
+            "Gravity's part along the hinges' axis, {}, does no work on a planar arm and is dropped.",
+            f(&dot(g, &n))
+        ));
+    }
+    Ok(Planar {
+        links,
+        gravity: -gy,
+        notes,
+    })
+}
