@@ -100,18 +100,6 @@ fn ur5_from_its_urdf_is_the_ur5_typed_by_hand() {
 #[path = "common/export_arms.rs"]
 mod export_arms;
 
-/// The paper's three equal links under gravity, for `to_spatial`.
-#[derive(PlanarArm, Default)]
-#[arm(gravity = 9.81)]
-struct Paper3 {
-    #[arm(length = 1, mass = 1)]
-    upper: Revolute,
-    #[arm(length = 1, mass = 1)]
-    fore: Revolute,
-    #[arm(length = 1, mass = 1)]
-    hand: Revolute,
-}
-
 /// A planar arm as a spatial one in the x-y plane (what `to_mjcf` writes) has the planar
 /// arm's dynamics: the spatial reference's Newton-Euler recursion and composite-body mass
 /// matrix on `to_spatial` against the planar derive, slides, friction and payload included.
@@ -135,6 +123,6 @@ fn planar_arms_are_spatial_arms_in_the_plane() {
             assert!((tip.xy() - planar).norm() < 1e-12 && tip.z == 0.0);
         }
     }
-    check(&Paper3::default());
+    check(&export_arms::PlanarExact::default());
     check(&export_arms::PlanarMix::default());
 }

@@ -371,31 +371,11 @@ fn parse_model_key(cx: &Ctxt, meta: &ParseNestedMeta<'_>, key: &str, out: &mut A
             return;
         }
     };
-    let slot = match key {
-        BASE => &mut out.base,
-        TIP => &mut out.tip,
-        _ => {
-            if let Some((_, first)) = &out.model {
-                out.malformed = true;
-                cx.error_spanned_by(
-                    &lit,
-                    format!(
-                        "the arm is already read from \"{}\"; an arm comes from one file",
-                        first.value()
-                    ),
-                );
-                return;
-            }
-            let format = if key == URDF {
-                crate::models::Format::Urdf
-            } else {
-                crate::models::Format::Mjcf
-            };
-            out.model = Some((format, lit));
-            return;
-        }
-    };
-    *slot = Some(lit);
+    match key {
+        BASE => out.base = Some(lit),
+        TIP => out.tip = Some(lit),
+        _ => out.malformed |= !crate::models::set_file(cx, &mut out.model, key, lit),
+    }
 }
 
 fn parse_crate(cx: &Ctxt, meta: &ParseNestedMeta<'_>, out: &mut Attrs) {

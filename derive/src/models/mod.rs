@@ -29,6 +29,34 @@ pub enum Format {
     Mjcf,
 }
 
+/// Records `urdf = ".."` (or `mjcf`, by `key`) in `slot`: an error at `lit`, and `false`, when
+/// an earlier key already named a file.
+pub fn set_file(
+    cx: &crate::ctxt::Ctxt,
+    slot: &mut Option<(Format, syn::LitStr)>,
+    key: &str,
+    lit: syn::LitStr,
+) -> bool {
+    if let Some((_, first)) = slot {
+        // #[arm(urdf = "a.urdf", mjcf = "b.xml")]
+        cx.error_spanned_by(
+            &lit,
+            format!(
+                "the arm is already read from \"{}\"; an arm comes from one file",
+                first.value()
+            ),
+        );
+        return false;
+    }
+    let format = if key == "urdf" {
+        Format::Urdf
+    } else {
+        Format::Mjcf
+    };
+    *slot = Some((format, lit));
+    true
+}
+
 /// What a spatial arm takes from its file.
 pub struct Imported {
     pub joints: Vec<SpatialJointSpec>,

@@ -589,26 +589,7 @@ fn model_key(
     match key {
         "base" => out.base = Some(lit),
         "tip" => out.tip = Some(lit),
-        _ => {
-            let format = if key == "urdf" {
-                ModelFormat::Urdf
-            } else {
-                ModelFormat::Mjcf
-            };
-            if let Some((_, first)) = &out.model {
-                // #[arm(urdf = "a.urdf", mjcf = "b.xml")]
-                out.malformed = true;
-                cx.error_spanned_by(
-                    &lit,
-                    format!(
-                        "the arm is already read from \"{}\"; an arm comes from one file",
-                        first.value()
-                    ),
-                );
-            } else {
-                out.model = Some((format, lit));
-            }
-        }
+        _ => out.malformed |= !crate::models::set_file(cx, &mut out.model, key, lit),
     }
     Ok(())
 }
