@@ -1,7 +1,7 @@
 use planar_arm::prelude::*;
 
 #[derive(PlanarArm)]
-#[arm(gravty = 9.81, base = 0)]
+#[arm(gravty = 9.81, height = 0)]
 struct Arm {
     #[arm(length = 1, mass = 1)]
     upper: Revolute,
