@@ -196,7 +196,7 @@ fn industrial_urdfs_match_pinocchio() {
 
 #[test]
 fn exported_files_load_in_mujoco_and_pinocchio_as_the_arms_that_wrote_them() {
-    use export_arms::{DhArm, MdhArm, OriginArm, PlanarMix};
+    use export_arms::{DhArm, MdhArm, OriginArm, PlanarExact, PlanarMix};
     let worst = [
         check(EXPORTS, &DhArm::default(), DhArm::JOINT_NAMES, "dh_arm.xml"),
         check(
@@ -225,6 +225,12 @@ fn exported_files_load_in_mujoco_and_pinocchio_as_the_arms_that_wrote_them() {
             &PlanarMix::default(),
             PlanarMix::JOINT_NAMES,
             "planar_mix.xml",
+        ),
+        check(
+            EXPORTS,
+            &PlanarExact::default(),
+            PlanarExact::JOINT_NAMES,
+            "planar_exact.xml",
         ),
     ];
     eprintln!("worst relative difference of the exports: {worst:?}");

@@ -56,7 +56,7 @@ import numpy as np
 import pinocchio as pin
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from fixtures import line, check_spd  # noqa: E402  (shared with the models' fixture)
+from fixtures import body_path, line, check_spd  # noqa: E402  (shared with the models' fixture)
 
 ROOT = Path(__file__).resolve().parents[2]
 EXPORT = ROOT / "tests" / "data" / "export"
@@ -137,17 +137,6 @@ def record(maxdiff, key, v, limit=TOL, name=""):
     if limit is not None and v > limit:
         raise SystemExit(f"{name}: {key} = {v}")
     maxdiff[key] = max(maxdiff.get(key, 0.0), v)
-
-
-def body_path(m, tip):
-    b = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, tip)
-    if b < 0:
-        raise SystemExit(f"no body {tip}")
-    path = []
-    while b != 0:
-        path.append(b)
-        b = int(m.body_parentid[b])
-    return path[::-1]
 
 
 def inertia_margin(m, bodies):

@@ -292,28 +292,7 @@ pub fn joint_kind(ty: &syn::Type) -> Option<JointKind> {
 impl<'a> Arm<'a> {
     /// An arm whose links come from a model file: a struct of no link fields.
     fn from_file(cx: &Ctxt, input: &'a DeriveInput, attrs: Attrs) -> Option<Self> {
-        let Data::Struct(s) = &input.data else {
-            cx.error_spanned_by(
-                &input.ident,
-                "#[derive(PlanarArm)] reads a model file into a struct: write `struct Name;`",
-            );
-            return None;
-        };
-        let mut others = Vec::new();
-        for field in &s.fields {
-            if joint_kind(&field.ty).is_some()
-                || field.attrs.iter().any(|a| a.path().is_ident(attr::ARM))
-            {
-                // #[arm(mjcf = "..")] struct Acrobot { #[arm(length = 1)] upper: Revolute }
-                cx.error_spanned_by(
-                    field,
-                    "the links come from the model file; remove this link field (or the \
-                     `urdf`/`mjcf` key)",
-                );
-                return None;
-            }
-            others.push(field);
-        }
+        let others = crate::models::other_fields(cx, input, "PlanarArm", "link")?;
         Some(Self {
             attrs,
             links: Vec::new(),

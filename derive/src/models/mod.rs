@@ -57,6 +57,41 @@ pub fn set_file(
     true
 }
 
+/// The fields of a struct whose links (or joints, `what`) come from a model file: none may be
+/// one. `None` after the error, at the derive's struct or at the offending field.
+pub fn other_fields<'a>(
+    cx: &crate::ctxt::Ctxt,
+    input: &'a syn::DeriveInput,
+    derive: &str,
+    what: &str,
+) -> Option<Vec<&'a syn::Field>> {
+    let syn::Data::Struct(s) = &input.data else {
+        cx.error_spanned_by(
+            &input.ident,
+            format!("#[derive({derive})] reads a model file into a struct: write `struct Name;`"),
+        );
+        return None;
+    };
+    let mut others = Vec::new();
+    for field in &s.fields {
+        if crate::ast::joint_kind(&field.ty).is_some()
+            || field.attrs.iter().any(|a| a.path().is_ident("arm"))
+        {
+            // #[arm(urdf = "..")] struct Ur5 { #[arm(dh(..))] waist: Revolute }
+            cx.error_spanned_by(
+                field,
+                format!(
+                    "the {what}s come from the model file; remove this {what} field (or the \
+                     `urdf`/`mjcf` key)"
+                ),
+            );
+            return None;
+        }
+        others.push(field);
+    }
+    Some(others)
+}
+
 /// What a spatial arm takes from its file.
 pub struct Imported {
     pub joints: Vec<SpatialJointSpec>,

@@ -121,28 +121,7 @@ impl<'a> SpatialArm<'a> {
 
     /// An arm whose joints come from a model file: a struct of no joint fields.
     fn from_file(cx: &Ctxt, input: &'a DeriveInput, attrs: SpatialAttrs) -> Option<Self> {
-        let Data::Struct(s) = &input.data else {
-            cx.error_spanned_by(
-                &input.ident,
-                "#[derive(SpatialArm)] reads a model file into a struct: write `struct Name;`",
-            );
-            return None;
-        };
-        let mut others = Vec::new();
-        for field in &s.fields {
-            if joint_kind(&field.ty).is_some()
-                || field.attrs.iter().any(|a| a.path().is_ident("arm"))
-            {
-                // #[arm(urdf = "..")] struct Ur5 { #[arm(dh(..))] waist: Revolute }
-                cx.error_spanned_by(
-                    field,
-                    "the joints come from the model file; remove this joint field (or the \
-                     `urdf`/`mjcf` key)",
-                );
-                return None;
-            }
-            others.push(field);
-        }
+        let others = crate::models::other_fields(cx, input, "SpatialArm", "joint")?;
         Some(Self {
             attrs,
             joints: Vec::new(),
