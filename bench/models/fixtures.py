@@ -97,6 +97,23 @@ def random_state(rng, slide):
     return q, qd, qdd
 
 
+def evaluate(m, datas, dofs, qadr, q, qd, qdd):
+    """The chain's joints at (q, qd, qdd), the others at rest: mj_forward into d (with qd) and
+    dg (at rest, for gravity), mj_inverse into di (with qd and qdd)."""
+    d, dg, di = datas
+    for dd in datas:
+        dd.qpos[:] = 0.0
+        dd.qvel[:] = 0.0
+        dd.qacc[:] = 0.0
+        dd.qpos[qadr] = q
+    d.qvel[dofs] = qd
+    mujoco.mj_forward(m, d)
+    mujoco.mj_forward(m, dg)  # qvel = 0
+    di.qvel[dofs] = qd
+    di.qacc[dofs] = qdd
+    mujoco.mj_inverse(m, di)
+
+
 def body_path(m, tip):
     """Bodies from the world's child down to tip (world excluded)."""
     b = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, tip)
@@ -162,17 +179,7 @@ def mujoco_arm(name, file, tip, rng, notes, maxdiff, mineigs):
     Mfull = np.zeros((m.nv, m.nv))
     for _ in range(STATES):
         q, qd, qdd = random_state(rng, slide)
-        for dd in (d, dg, di):
-            dd.qpos[:] = 0.0
-            dd.qvel[:] = 0.0
-            dd.qacc[:] = 0.0
-            dd.qpos[qadr] = q
-        d.qvel[dofs] = qd
-        mujoco.mj_forward(m, d)
-        mujoco.mj_forward(m, dg)  # qvel = 0
-        di.qvel[dofs] = qd
-        di.qacc[dofs] = qdd
-        mujoco.mj_inverse(m, di)
+        evaluate(m, (d, dg, di), dofs, qadr, q, qd, qdd)
 
         mujoco.mj_fullM(m, d, Mfull)
         M = Mfull[np.ix_(dofs, dofs)].copy()

@@ -56,7 +56,7 @@ import numpy as np
 import pinocchio as pin
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from fixtures import body_path, line, check_spd  # noqa: E402  (shared with the models' fixture)
+from fixtures import body_path, check_spd, evaluate, line  # noqa: E402  (shared with the models' fixture)
 
 ROOT = Path(__file__).resolve().parents[2]
 EXPORT = ROOT / "tests" / "data" / "export"
@@ -222,17 +222,7 @@ def mujoco_arm(name, path, rng, notes, maxdiff, mineigs, loadlog, states_out):
     states = []
     for _ in range(STATES):
         q, qd, qdd = random_state(rng, slide_ranges)
-        for dd in (d, dg, di):
-            dd.qpos[:] = 0.0
-            dd.qvel[:] = 0.0
-            dd.qacc[:] = 0.0
-            dd.qpos[qadr] = q
-        d.qvel[dofs] = qd
-        mujoco.mj_forward(m, d)
-        mujoco.mj_forward(m, dg)
-        di.qvel[dofs] = qd
-        di.qacc[dofs] = qdd
-        mujoco.mj_inverse(m, di)
+        evaluate(m, (d, dg, di), dofs, qadr, q, qd, qdd)
         for dd in (d, dg, di):
             for w in range(len(dd.warning)):
                 if dd.warning[w].number:
