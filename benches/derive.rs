@@ -40,7 +40,7 @@ fn arm(n: usize, seed: &mut u64) -> ArmSpec {
                 LinkSpec::rod(ratio(l, 10), ratio(m, 10))
             })
             .collect(),
-        gravity: ratio(981, 100),
+        gravity: planar_arm_core::down(ratio(981, 100)),
         payload: None,
     }
 }

@@ -271,7 +271,7 @@ fn spec<const N: usize>(model: &Model<N>) -> ArmSpec {
                 range: None,
             })
             .collect(),
-        gravity: exact(model.gravity),
+        gravity: (exact(model.gravity.x), exact(model.gravity.y)),
         payload: None,
     }
 }

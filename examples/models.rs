@@ -1,6 +1,7 @@
 //! Arms from the model files users already have: the DeepMind control suite's acrobot and
-//! cart-pole (MJCF) and the UR5 (URDF), derived at compile time from `models/`; each one's
-//! joints, mass matrix at a state and gravity torques, then the UR5 written back as MJCF.
+//! cart-pole (MJCF) as planar arms and the UR5 (URDF) as a spatial one, derived at compile time
+//! from `models/`; each one's joints, mass matrix at a state and gravity torques, then the UR5
+//! written back as MJCF.
 //!
 //! `q` is MuJoCo's `qpos` (the URDF's joint values): the numbers below are MuJoCo's and
 //! Pinocchio's for the same files (`tests/models_peers.rs` checks them to 1e-15).
@@ -12,14 +13,15 @@
 use planar_arm::nalgebra::SVector;
 use planar_arm::prelude::*;
 
-/// `dm_control/suite/acrobot.xml`: two capsules hanging from a hinge, a second hinge between
-/// them, both about the y axis.
-#[derive(SpatialArm)]
+/// `dm_control/suite/acrobot.xml`: two capsules on a hinge, a second hinge between them, both
+/// about the y axis. Upright at `qpos = 0`: its links stand along its plane's x, so gravity
+/// points along -x of the plane.
+#[derive(PlanarArm)]
 #[arm(mjcf = "models/acrobot.xml")]
 struct Acrobot;
 
 /// `dm_control/suite/cartpole.xml`: a cart on a slide and a pole on a hinge.
-#[derive(SpatialArm)]
+#[derive(PlanarArm)]
 #[arm(mjcf = "models/cartpole.xml")]
 struct CartPole;
 
@@ -28,9 +30,9 @@ struct CartPole;
 #[arm(urdf = "models/ur5.urdf", tip = "tool0")]
 struct Ur5;
 
-fn show<const N: usize, A: SpatialArm<N>>(title: &str, arm: &A, q: &SVector<f64, N>) {
-    println!("{title}");
-    println!("  joints  {}", A::JOINT_NAMES.join(", "));
+/// The joints, `q`, `M(q)` and `g(q)` of a planar or spatial arm (one dynamics trait).
+fn dynamics<const N: usize, A: Dynamics<N>>(names: &[&str], arm: &A, q: &SVector<f64, N>) {
+    println!("  joints  {}", names.join(", "));
     println!("  q       {:.3?}", q.as_slice());
     let m = arm.mass_matrix(q);
     for (i, row) in m.row_iter().enumerate() {
@@ -40,22 +42,36 @@ fn show<const N: usize, A: SpatialArm<N>>(title: &str, arm: &A, q: &SVector<f64,
     }
     let g: Vec<String> = arm.gravity(q).iter().map(|x| format!("{x:.5}")).collect();
     println!("  g(q)    [{}]", g.join(", "));
+}
+
+fn planar<const N: usize, A: PlanarArm<N>>(title: &str, arm: &A, q: &SVector<f64, N>) {
+    println!("{title}");
+    dynamics(&A::JOINT_NAMES, arm, q);
+    let g = arm.model().gravity;
+    println!("  gravity ({:.4}, {:.4}) in the plane", g.x, g.y);
+    let p = arm.tip_pose(q).translation.vector;
+    println!("  tip     ({:.4}, {:.4}) in the plane\n", p.x, p.y);
+}
+
+fn spatial<const N: usize, A: SpatialArm<N>>(title: &str, arm: &A, q: &SVector<f64, N>) {
+    println!("{title}");
+    dynamics(&A::JOINT_NAMES, arm, q);
     let p = arm.tip_pose(q).translation.vector;
     println!("  tip     ({:.4}, {:.4}, {:.4})\n", p.x, p.y, p.z);
 }
 
 fn main() {
-    show(
+    planar(
         "acrobot (models/acrobot.xml)",
         &Acrobot,
         &SVector::from([0.3, -0.5]),
     );
-    show(
+    planar(
         "cart-pole (models/cartpole.xml)",
         &CartPole,
         &SVector::from([0.1, 0.4]),
     );
-    show(
+    spatial(
         "UR5 (models/ur5.urdf)",
         &Ur5,
         &SVector::from([0.0, -1.2, 1.0, -0.5, 0.3, 0.0]),

@@ -115,7 +115,7 @@ fn main() {
         )
     );
     let mut general = ArmSpec::paper(2);
-    general.gravity = ratio(981, 100);
+    general.gravity = planar_arm::symbolic::down(ratio(981, 100));
     general.links[0] = LinkSpec::rod(ratio(3, 2), ratio(2, 1));
     general.links[1] = LinkSpec::rod(ratio(1, 1), ratio(1, 2));
     let dg = Dynamics::derive(&general);

@@ -89,7 +89,8 @@
 //! # The attributes
 //!
 //! - `#[arm(gravity = G)]` on the struct (optional): gravity of magnitude `G` acts along -y;
-//!   the default is standard gravity 9.80665; `gravity = 0` is a horizontal arm. Also on the
+//!   the default is standard gravity 9.80665; `gravity = 0` is a horizontal arm;
+//!   `gravity = (gx, gy)` is gravity's acceleration in any direction of the plane. Also on the
 //!   struct: `payload = P` (kg), a body rigidly held at the tip of the last link, with optional
 //!   `payload_inertia = I` (kg m^2, about its own centre) and `payload_com = (x, y)` (m, its
 //!   centre from the tip in the last link's frame).

@@ -65,6 +65,10 @@ impl Payload {
 /// Everything the dynamics of a planar arm depend on: its links base first, gravity and a
 /// payload at the tip.
 ///
+/// Gravity is an acceleration in the base frame: [`Model::new`] takes a magnitude along -y,
+/// [`Model::with_gravity`] any direction (a model file's arm whose links point up at
+/// `q = 0` has its gravity along -x, say).
+///
 /// The functions of [`reference`](crate::reference) take a model. A derived arm's model, with
 /// its run-time parameters' current values, is [`PlanarArm::model`](crate::PlanarArm::model).
 ///
@@ -85,8 +89,8 @@ impl Payload {
 pub struct Model<const N: usize> {
     /// The links, base first.
     pub links: [Link; N],
-    /// Magnitude of gravity, which acts along -y, m/s^2.
-    pub gravity: f64,
+    /// Gravity's acceleration in the base frame, m/s^2: `(0, -9.81)` for gravity along -y.
+    pub gravity: Vector2<f64>,
     /// The body held at the tip ([`Payload::NONE`] for none).
     pub payload: Payload,
 }
@@ -98,18 +102,33 @@ impl<const N: usize> Model<N> {
     pub const fn new(links: [Link; N], gravity: f64) -> Self {
         Self {
             links,
-            gravity,
+            gravity: Vector2::new(0.0, -gravity),
             payload: Payload::NONE,
         }
     }
 
+    /// The same arm under gravity of acceleration `gravity` (m/s^2, in the base frame).
+    ///
+    /// ```
+    /// use planar_arm::{reference, Link, Model};
+    /// use planar_arm::nalgebra::{Vector1, Vector2};
+    ///
+    /// // A pendulum that hangs along -x at q = 0 under gravity along -x: no torque holds it.
+    /// let arm = Model::new([Link::rod(1.0, 1.0)], 0.0).with_gravity(Vector2::new(-9.81, 0.0));
+    /// let g = reference::gravity_torques(&arm, &Vector1::new(core::f64::consts::PI));
+    /// assert!(g[0].abs() < 1e-14);
+    /// ```
+    #[must_use]
+    pub const fn with_gravity(self, gravity: Vector2<f64>) -> Self {
+        Self { gravity, ..self }
+    }
+
     /// The same arm as a spatial arm in MuJoCo's x-y plane: each joint a URDF-style joint at the
     /// previous link's end (the base origin for the first), a hinge about `+z` or a slide
-    /// along the previous link's `x`; each link's centre of mass at `(x, y, 0)`; gravity
-    /// `(0, -g, 0)`; the tool at the last link's end; the payload as the tool's. A planar body
+    /// along the previous link's `x`; each link's centre of mass at `(x, y, 0)`; the tool at the last link's end; the payload as the tool's. A planar body
     /// has one moment of inertia, about `z`: the tensor's out-of-plane moments, which a planar
     /// motion never feels, are set equal to it, so that the tensor meets the triangle
-    /// inequality MuJoCo requires. Its dynamics are this arm's (`tests/models.rs` checks the
+    /// inequality MuJoCo requires. Gravity is `(gx, gy, 0)`. Its dynamics are this arm's (`tests/models.rs` checks the
     /// spatial reference against the planar arms).
     #[must_use]
     pub fn to_spatial(&self) -> crate::spatial::SpatialModel<N> {
@@ -147,7 +166,7 @@ impl<const N: usize> Model<N> {
         SpatialModel {
             joints,
             links: self.links.map(|l| body(l.mass, l.inertia, l.com)),
-            gravity: Vector3::new(0.0, -self.gravity, 0.0),
+            gravity: Vector3::new(self.gravity.x, self.gravity.y, 0.0),
             tool: Isometry3::translation(before, 0.0, 0.0),
             payload: (p.mass != 0.0 || p.inertia != 0.0).then(|| body(p.mass, p.inertia, p.com)),
         }
@@ -190,7 +209,7 @@ impl<const N: usize> Model<N> {
 
     /// Checks that the model is physical and its dynamics defined: every value finite, masses
     /// positive, lengths, inertias, armatures, damping, frictionloss, the payload's mass and
-    /// inertia and gravity not negative, a joint range finite with `lower < upper`, and the mass
+    /// inertia not negative, a joint range finite with `lower < upper`, and the mass
     /// matrix positive definite (at a generic configuration its `L D L^T` pivots exceed
     /// [`RELATIVE_PIVOT`] times their diagonal entries, which are normal `f64`s: no joint that
     /// moves no mass and turns no inertia). What the derive checks at compile time for literal
@@ -254,7 +273,8 @@ impl<const N: usize> Model<N> {
             ("payload inertia", p.inertia, false),
             ("payload com.x", p.com.x, true),
             ("payload com.y", p.com.y, true),
-            ("gravity", self.gravity, false),
+            ("gravity.x", self.gravity.x, true),
+            ("gravity.y", self.gravity.y, true),
         ] {
             if !value.is_finite() || (!signed && value < 0.0) {
                 return fail(what, None, value);

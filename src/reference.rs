@@ -24,7 +24,7 @@
 //! starts at the origin unless the first joint is prismatic. [`joint_positions`] are the
 //! `o_i` (for a prismatic joint the slid carriage, not the end of the link before it), the
 //! tip is `o_{N-1} + l_{N-1} u_{N-1}`, its orientation `phi_{N-1}` ([`tip_orientation`]).
-//! Gravity of magnitude `model.gravity` acts along -y. A link's centre of mass
+//! Gravity is the acceleration `model.gravity` (`(0, -g)` for the usual -y). A link's centre of mass
 //! `com = (cx, cy)` is in its own frame, at `o_i + cx u_i + cy perp(u_i)` in the world
 //! (`perp` turns by +90 degrees); the payload's is at `tip + R(phi_{N-1}) payload.com`.
 //!
@@ -63,8 +63,8 @@
 //!
 //! | function | algorithm | cost |
 //! |---|---|---|
-//! | [`inverse_dynamics`], [`bias_forces`], [`coriolis`] | recursive Newton-Euler (RNEA): outward pass for angular velocity/acceleration and frame-origin/COM linear accelerations (gravity as a base acceleration `+g` along +y), inward pass for the forces and moments at each frame origin, read as the moment (revolute) or the axial force (prismatic); armature and friction added per joint | O(N) |
-//! | [`gravity_torques`] | inward accumulation of composite mass and first moment (statics): `gravity` times the composite's horizontal first moment about `o_i` (revolute) or its mass times `u_i.y` (prismatic) | O(N) |
+//! | [`inverse_dynamics`], [`bias_forces`], [`coriolis`] | recursive Newton-Euler (RNEA): outward pass for angular velocity/acceleration and frame-origin/COM linear accelerations (gravity as the base accelerating at `-g`), inward pass for the forces and moments at each frame origin, read as the moment (revolute) or the axial force (prismatic); armature and friction added per joint | O(N) |
+//! | [`gravity_torques`] | inward accumulation of composite mass and first moment `F` (statics): `-g . perp(F)` about `o_i` (revolute), or `-g . u_i` times the composite's mass (prismatic) | O(N) |
 //! | [`friction`] | per joint | O(N) |
 //! | [`mass_matrix`] | composite rigid body algorithm (CRBA) with planar composite inertias (mass, first moment, rotational inertia about each frame origin): a unit rate of joint j gives the composite beyond it the momentum `(rot, perp(first))` (revolute) or `(first x u_j, mass u_j)` (prismatic), read at each joint before it as a moment or an axial component; armature on the diagonal | O(N^2) |
 //! | [`forward_dynamics`] | articulated body algorithm (ABA) with 3x3 planar spatial inertias `[angular; x; y]`, all expressed about the world origin so that no inter-link transforms are needed: the motion subspace is `S_i = [1, y_i, -x_i]` for a revolute joint at `o_i = (x_i, y_i)` and `S_i = [0, u_i]`, a translation along the axis, for a prismatic one; armature in the joint-space articulated inertia; never forms `M` | O(N) |

@@ -216,7 +216,7 @@ fn the_run_time_check_agrees_with_the_derive_s() {
         };
         let exact = weak_joint(&ArmSpec {
             links: specs,
-            gravity: Rational::from_integer(0.into()),
+            gravity: planar_arm_core::down(Rational::from_integer(0.into())),
             payload: p,
         });
         let numeric = match n {

@@ -82,7 +82,8 @@ fn drift<A: PlanarArm<N>, const N: usize>(
         seconds,
     );
     let model = arm.model();
-    let scale: f64 = model.links.iter().map(|l| l.mass * l.length).sum::<f64>() * model.gravity;
+    let scale: f64 =
+        model.links.iter().map(|l| l.mass * l.length).sum::<f64>() * model.gravity.norm();
     (worst, scale)
 }
 

@@ -60,7 +60,7 @@ fn arm(max_links: usize) -> impl Strategy<Value = ArmSpec> {
     )
         .prop_map(|(links, g, payload)| ArmSpec {
             links,
-            gravity: ratio(g, 100),
+            gravity: planar_arm_core::down(ratio(g, 100)),
             payload: payload.map(|(m, i, x, y)| PayloadSpec {
                 mass: ratio(m, 10),
                 inertia: ratio(i, 100),
@@ -94,7 +94,9 @@ fn numeric<const N: usize>(spec: &ArmSpec) -> Model<N> {
         inertia: f(&p.inertia),
         com: pair(&p.com),
     });
-    Model::new(links, f(&spec.gravity)).with_payload(payload)
+    Model::new(links, 0.0)
+        .with_gravity(pair(&spec.gravity))
+        .with_payload(payload)
 }
 
 /// The same arm with every value a run-time parameter `v0, v1, ...`, and their values: the

@@ -119,7 +119,7 @@ fn random_arm(rng: &mut Rng, n: usize) -> ArmSpec {
         .collect();
     ArmSpec {
         links,
-        gravity: ratio(980_665, 100_000),
+        gravity: planar_arm_core::down(ratio(980_665, 100_000)),
         payload: Some(PayloadSpec {
             mass: ratio(r(0, 9), 4),
             inertia: ratio(r(0, 9), 40),

@@ -25,12 +25,12 @@ fn expand(n: usize) -> String {
                     ..LinkSpec::rod(ratio(1, 2), ratio(3, 2))
                 },
             ],
-            gravity: ratio(981, 100),
+            gravity: planar_arm_core::down(ratio(981, 100)),
             payload: None,
         }
     } else {
         let mut arm = ArmSpec::paper(n);
-        arm.gravity = ratio(981, 100);
+        arm.gravity = planar_arm_core::down(ratio(981, 100));
         arm
     };
     let derived = Derived::new(&arm);

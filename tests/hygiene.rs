@@ -232,7 +232,7 @@ mod determinism {
                     ..LinkSpec::rod(ratio(9, 10), ratio(1, 1000))
                 },
             ],
-            gravity: ratio(981, 100),
+            gravity: planar_arm_core::down(ratio(981, 100)),
             payload: Some(PayloadSpec {
                 mass: ratio(1, 2),
                 inertia: ratio(1, 100),
@@ -241,7 +241,7 @@ mod determinism {
         });
         arms.push(ArmSpec {
             links: vec![LinkSpec::rod(ratio(1, 1000), int(1000)); 4],
-            gravity: ratio(980_665, 100_000),
+            gravity: planar_arm_core::down(ratio(980_665, 100_000)),
             payload: None,
         });
         arms

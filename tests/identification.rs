@@ -324,8 +324,8 @@ fn moving_along_a_grouping_leaves_the_torques_unchanged() {
     }
 }
 
-/// A model with random lengths, inertial parameters, 2-D centres of mass, armature, friction
-/// and payload.
+/// A model with random lengths, inertial parameters, 2-D centres of mass, armature, friction,
+/// payload and gravity.
 fn random_model<const N: usize>(rng: &mut Rng) -> planar_arm::Model<N> {
     let links = core::array::from_fn(|_| Link {
         length: rng.range(0.2, 1.5),
@@ -343,7 +343,8 @@ fn random_model<const N: usize>(rng: &mut Rng) -> planar_arm::Model<N> {
         .with_inertia(rng.range(0.0, 0.05));
     planar_arm::Model {
         links,
-        gravity: rng.range(0.0, 10.0),
+        // Any direction: the regressor's gravity columns must not assume -y.
+        gravity: planar_arm::nalgebra::Vector2::new(rng.range(-5.0, 5.0), rng.range(-10.0, 5.0)),
         payload,
     }
 }

@@ -42,6 +42,21 @@ struct Hopper;
 #[arm(mjcf = "models/reacher.xml")]
 struct ReacherPlanar;
 
+/// The acrobot, cart-pole and pendulum as planar arms: their hinges turn about y; the
+/// acrobot's links stand up its plane's x at `qpos = 0`, so its gravity points along -x of the
+/// plane; the cart-pole's plane has y = -z, so gravity points up its y.
+#[derive(PlanarArm)]
+#[arm(mjcf = "models/acrobot.xml")]
+struct AcrobotPlanar;
+
+#[derive(PlanarArm)]
+#[arm(mjcf = "models/cartpole.xml")]
+struct CartPolePlanar;
+
+#[derive(PlanarArm)]
+#[arm(mjcf = "models/pendulum.xml")]
+struct PendulumPlanar;
+
 #[derive(SpatialArm)]
 #[arm(mjcf = "models/swimmer6.xml")]
 struct Swimmer6;
@@ -168,6 +183,9 @@ fn control_suite_models_match_mujoco() {
         check(MODELS, &Pendulum, ["hinge"], "pendulum"),
         check(MODELS, &Reacher, ["shoulder", "wrist"], "reacher"),
         check(MODELS, &ReacherPlanar, ["shoulder", "wrist"], "reacher"),
+        check(MODELS, &AcrobotPlanar, ["shoulder", "elbow"], "acrobot"),
+        check(MODELS, &CartPolePlanar, ["slider", "hinge_1"], "cartpole"),
+        check(MODELS, &PendulumPlanar, ["hinge"], "pendulum"),
         check(
             MODELS,
             &Hopper,

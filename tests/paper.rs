@@ -276,7 +276,7 @@ fn rods(lengths: &[Rational], masses: &[Rational], gravity: Rational) -> ArmSpec
             .zip(masses)
             .map(|(l, m)| LinkSpec::rod(l.clone(), m.clone()))
             .collect(),
-        gravity,
+        gravity: planar_arm_core::down(gravity),
         payload: None,
     }
 }
@@ -657,7 +657,7 @@ fn two_link_gravity_general() {
 
     // m = l = 1 at P: the coefficients of g are (19/25, -7/50).
     let mut arm = ArmSpec::paper(2);
-    arm.gravity = ratio(981, 100);
+    arm.gravity = planar_arm_core::down(ratio(981, 100));
     let unit = Dynamics::derive(&arm);
     let values: Vec<Rational> = unit.gravity.iter().map(at_p0).collect();
     assert_eq!(values, rats(&[(18639, 2500), (-6867, 5000)]));
@@ -929,7 +929,7 @@ fn three_link_gravity_general() {
     }
     // m = l = 1 at P: coefficients of g (153/250, -111/125, -117/250).
     let mut arm = ArmSpec::paper(3);
-    arm.gravity = g.clone();
+    arm.gravity = planar_arm_core::down(g.clone());
     let unit = Dynamics::derive(&arm);
     same(
         &unit.gravity[0],
@@ -984,7 +984,7 @@ fn three_link_link3_com_speed_squared() {
     };
     let arm = ArmSpec {
         links: vec![point(0), point(0), point(2)],
-        gravity: int(0),
+        gravity: planar_arm_core::down(int(0)),
         payload: None,
     };
     let v2 = Dynamics::derive(&arm).kinetic_energy;
@@ -1011,7 +1011,7 @@ fn three_link_link3_com_speed_squared() {
     // Independently, from the kinematics of the arm cut at link 3's centre.
     let cut = Kinematics::derive(&ArmSpec {
         links: vec![point(1), point(1), LinkSpec::rod(ratio(1, 2), int(1))],
-        gravity: int(0),
+        gravity: planar_arm_core::down(int(0)),
         payload: None,
     });
     let rate = |row: usize| {
@@ -1027,7 +1027,7 @@ fn three_link_link3_com_speed_squared() {
     // Link 2's centre, as printed (correct).
     let arm2 = ArmSpec {
         links: vec![point(0), point(2)],
-        gravity: int(0),
+        gravity: planar_arm_core::down(int(0)),
         payload: None,
     };
     same(

@@ -34,10 +34,14 @@ fn random_arm(rng: &mut Rng, n: usize, gravity: bool, extras: bool) -> ArmSpec<P
         .collect();
     ArmSpec {
         links,
+        // Gravity tilted off -y: nothing may assume its direction.
         gravity: if gravity {
-            Poly::constant(ratio(981, 100))
+            (
+                Poly::constant(ratio(3, 2)),
+                Poly::constant(ratio(-981, 100)),
+            )
         } else {
-            zero()
+            (zero(), zero())
         },
         payload: extras.then(|| PayloadSpec {
             mass: r(0.1, 1.0),

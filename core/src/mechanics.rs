@@ -6,6 +6,6 @@ pub(crate) mod planar;
 pub mod spatial;
 
 pub use planar::{
-    standard_bodies, ArmSpec, Body, Dynamics, JointKind, Kinematics, LinkSpec, PayloadSpec,
+    down, standard_bodies, ArmSpec, Body, Dynamics, JointKind, Kinematics, LinkSpec, PayloadSpec,
     RateProducts,
 };

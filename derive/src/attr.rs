@@ -53,7 +53,7 @@ pub const FIELD_KEYS: &[&str] = &[
 /// Keys of `#[derive(SpatialArm)]`, which a planar arm writes otherwise.
 const SPATIAL_KEYS: &[&str] = &["dh", "mdh", "origin", "axis", "tool"];
 /// Keys whose value may be a pair `(x, y)`.
-const PAIR_KEYS: &[&str] = &[COM, PAYLOAD_COM];
+const PAIR_KEYS: &[&str] = &[COM, PAYLOAD_COM, GRAVITY];
 
 /// A parsed value with the tokens it came from.
 pub struct Value {
@@ -309,11 +309,20 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
         }
         syn::Expr::Tuple(t) if PAIR_KEYS.contains(&known) => Err(syn::Error::new_spanned(
             t,
-            format!("`{key}` takes one number (along the link) or a pair `(x, y)`"),
+            if known == GRAVITY {
+                "`gravity` takes one number, its magnitude along -y (`gravity = 9.81`), or its \
+                 acceleration as a pair `(gx, gy)` (`gravity = (0, -9.81)`)"
+                    .to_string()
+            } else {
+                format!("`{key}` takes one number (along the link) or a pair `(x, y)`")
+            },
         )),
         syn::Expr::Tuple(t) => Err(syn::Error::new_spanned(
             t,
-            format!("`{key}` takes one number; only `com` and `payload_com` take a pair `(x, y)`"),
+            format!(
+                "`{key}` takes one number; only `com`, `payload_com` and `gravity` take a pair \
+                 `(x, y)`"
+            ),
         )),
         _ => value::eval(&expr, &mut params).map(|x| (x, None)),
     };

@@ -7,7 +7,7 @@
 
 use num_traits::{Signed, Zero};
 use planar_arm_core::ring::{parse_decimal, ratio, to_f64, Rational};
-use planar_arm_core::{ArmSpec, JointKind, LinkSpec, PayloadSpec, Poly};
+use planar_arm_core::{down, ArmSpec, JointKind, LinkSpec, PayloadSpec, Poly};
 
 use crate::ast::{Arm, Link};
 use crate::attr::{
@@ -76,6 +76,31 @@ fn sign_check(cx: &Ctxt, v: &Value, positive: bool, message: &str) -> bool {
     }
 }
 
+/// `gravity = g` (a magnitude along -y, not negative) or `gravity = (gx, gy)` (an
+/// acceleration, any direction): representable, and a magnitude not negative.
+fn gravity_check(cx: &Ctxt, g: &Value) -> bool {
+    let mut ok = representable(cx, "gravity", g);
+    if g.y.is_none() {
+        // #[arm(gravity = -9.81)]
+        ok &= sign_check(
+            cx,
+            g,
+            false,
+            "gravity = <number> is a magnitude along -y and cannot be negative; use 0 for a \
+             horizontal arm, or give the acceleration as a pair `gravity = (gx, gy)`",
+        );
+    }
+    ok
+}
+
+/// The acceleration `(gx, gy)` a `gravity` key gives.
+fn gravity_of(g: &Value) -> (Poly, Poly) {
+    match &g.y {
+        Some(y) => (g.value.clone(), y.clone()),
+        None => down(g.value.clone()),
+    }
+}
+
 /// Validates the parsed arm; `None` after recording errors in `cx`.
 pub fn check(cx: &Ctxt, arm: &Arm<'_>) -> Option<ArmSpec<Poly>> {
     let mut ok = params_exist(cx, arm);
@@ -90,17 +115,10 @@ pub fn check(cx: &Ctxt, arm: &Arm<'_>) -> Option<ArmSpec<Poly>> {
     }
     let gravity = match arm.get(GRAVITY) {
         Some(g) => {
-            // #[arm(gravity = 9.81)]
-            ok &= sign_check(
-                cx,
-                g,
-                false,
-                "gravity is a magnitude along -y and cannot be negative; use 0 for a horizontal arm",
-            );
-            ok &= representable(cx, "gravity", g);
-            g.value.clone()
+            ok &= gravity_check(cx, g);
+            gravity_of(g)
         }
-        None => Poly::constant(standard_gravity()),
+        None => down(Poly::constant(standard_gravity())),
     };
     let payload = check_payload(cx, arm, &mut ok);
     let mut links = Vec::new();
@@ -143,15 +161,10 @@ pub fn check_file(
     };
     let gravity = match own {
         Some(g) => {
-            ok &= sign_check(
-                cx,
-                g,
-                false,
-                "gravity is a magnitude along -y and cannot be negative",
-            );
-            g.value.clone()
+            ok &= gravity_check(cx, g);
+            gravity_of(g)
         }
-        None => Poly::constant(file.planar.gravity.clone()),
+        None => file.planar.gravity.clone(),
     };
     let payload = check_payload(cx, arm, &mut ok);
     let spec = ArmSpec {
@@ -429,7 +442,7 @@ pub fn literal(spec: &ArmSpec<Poly>) -> Option<ArmSpec<Rational>> {
                 })
             })
             .collect::<Option<Vec<_>>>()?,
-        gravity: r(&spec.gravity)?,
+        gravity: pair(&spec.gravity)?,
         payload: match &spec.payload {
             None => None,
             Some(p) => Some(PayloadSpec {

@@ -20,7 +20,8 @@ use syn::{parse_macro_input, DeriveInput};
 
 /// Derives `planar_arm::PlanarArm<N>` for a struct whose `N` fields are links
 /// (`#[arm(length = L, mass = M, inertia = I, com = C)]`, type `planar_arm::Revolute`); an
-/// optional `#[arm(gravity = G)]` on the struct sets gravity along -y (default 9.80665).
+/// optional `#[arm(gravity = G)]` on the struct sets gravity along -y (default 9.80665), or
+/// `#[arm(gravity = (gx, gy))]` in any direction of the plane.
 /// See the `planar_arm` crate documentation.
 #[proc_macro_derive(PlanarArm, attributes(arm))]
 pub fn derive_planar_arm(input: TokenStream) -> TokenStream {

@@ -124,7 +124,7 @@ pub fn forward_dynamics<const N: usize>(
 
     // Pass 3 (outwards): accelerations.
     let mut qdd = SVector::zeros();
-    let mut a = Vector3::new(0.0, 0.0, model.gravity);
+    let mut a = Vector3::new(0.0, -model.gravity.x, -model.gravity.y);
     for i in 0..N {
         a += c[i];
         let qddi = (u_sc[i] - u_vec[i].dot(&a)) * d_inv[i];

@@ -4,7 +4,7 @@
 use nalgebra::{SMatrix, SVector, Vector2};
 
 use super::newton_euler::{friction, rnea_dirs};
-use super::{cross, in_world, last_direction, link_directions, reaches, slides};
+use super::{cross, in_world, last_direction, link_directions, perp, reaches, slides};
 use crate::Model;
 
 /// Composite rigid body algorithm on precomputed link directions.
@@ -90,9 +90,9 @@ pub fn mass_matrix<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) -> SMa
 /// The gravity torques (forces at prismatic joints) `g(q) = dV/dq`: what holds the arm still.
 ///
 /// O(N): joint i must support the weight of links i..N and the payload: a revolute joint its
-/// moment about link i's origin, `gravity` times the horizontal first moment of that composite
-/// body, a prismatic one its component along the axis, `gravity` times the composite's mass
-/// times `u_i.y`.
+/// moment about link i's origin, `-g . perp(F)` with `F` the first moment of that composite
+/// body about it, a prismatic one its component along the axis, `-g . u_i` times the
+/// composite's mass.
 #[inline]
 #[must_use]
 pub fn gravity_torques<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) -> SVector<f64, N> {
@@ -101,16 +101,17 @@ pub fn gravity_torques<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) ->
     let payload = &model.payload;
     let mut tau = SVector::zeros();
     let mut mass = payload.mass;
-    let mut first_x = payload.mass * in_world(last_direction(&dirs), payload.com).x;
+    let mut first = payload.mass * in_world(last_direction(&dirs), payload.com);
+    let g = model.gravity;
     for i in (0..N).rev() {
         let link = &model.links[i];
         let u = dirs[i];
-        first_x += link.mass * in_world(u, link.com).x + mass * reach[i] * u.x;
+        first += link.mass * in_world(u, link.com) + mass * reach[i] * u;
         mass += link.mass;
         tau[i] = if slides(link) {
-            model.gravity * mass * u.y
+            -mass * g.dot(&u)
         } else {
-            model.gravity * first_x
+            -g.dot(&perp(first))
         };
     }
     tau

@@ -41,22 +41,22 @@ pub fn kinetic_energy<const N: usize>(
     0.5 * energy
 }
 
-/// The gravitational potential energy `gravity * (sum(m_i y_com_i) + m_payload y_payload)`, J,
-/// zero at the base height (a prismatic joint raises its link's origin by `q_i u_i.y`).
+/// The gravitational potential energy `-g . (sum(m_i p_com_i) + m_payload p_payload)`, J,
+/// zero at the base origin (a prismatic joint moves its link's origin by `q_i u_i`).
 #[inline]
 #[must_use]
 pub fn potential_energy<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) -> f64 {
     let dirs = link_directions(&model.links, q);
-    let mut y_joint = 0.0;
-    let mut moment = 0.0;
+    let mut joint = Vector2::zeros();
+    let mut moment = Vector2::zeros();
     for ((link, &dir), &qi) in model.links.iter().zip(dirs.iter()).zip(q.iter()) {
         if slides(link) {
-            y_joint += qi * dir.y;
+            joint += qi * dir;
         }
-        moment += link.mass * (y_joint + in_world(dir, link.com).y);
-        y_joint += link.length * dir.y;
+        moment += link.mass * (joint + in_world(dir, link.com));
+        joint += link.length * dir;
     }
     let payload = &model.payload;
-    moment += payload.mass * (y_joint + in_world(last_direction(&dirs), payload.com).y);
-    model.gravity * moment
+    moment += payload.mass * (joint + in_world(last_direction(&dirs), payload.com));
+    -model.gravity.dot(&moment)
 }

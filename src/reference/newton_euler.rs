@@ -10,23 +10,23 @@ use super::{
 use crate::Model;
 
 /// Recursive Newton-Euler on precomputed link directions: `M(q) qdd + c(q, qd) + g(q)` for
-/// gravity of magnitude `gravity`, armature included, friction not.
+/// gravity's acceleration `gravity`, armature included, friction not.
 #[inline(always)]
 pub(super) fn rnea_dirs<const N: usize>(
     model: &Model<N>,
-    gravity: f64,
+    gravity: Vector2<f64>,
     dirs: &[Vector2<f64>; N],
     q: &SVector<f64, N>,
     qd: &SVector<f64, N>,
     qdd: &SVector<f64, N>,
 ) -> SVector<f64, N> {
     let links = &model.links;
-    // Outward pass. Gravity is modelled by accelerating the base upwards at `gravity`.
+    // Outward pass. Gravity is modelled by accelerating the base against it.
     // `a_joint` is the acceleration of link i's frame origin, then of its end.
     let mut alpha = [0.0; N];
     let mut r_com = [Vector2::zeros(); N];
     let mut a_com = [Vector2::zeros(); N];
-    let mut a_joint = Vector2::new(0.0, gravity);
+    let mut a_joint = -gravity;
     let mut omega = 0.0;
     let mut omega_dot = 0.0;
     for i in 0..N {
@@ -141,7 +141,7 @@ pub fn coriolis<const N: usize>(
     qd: &SVector<f64, N>,
 ) -> SVector<f64, N> {
     let dirs = link_directions(&model.links, q);
-    rnea_dirs(model, 0.0, &dirs, q, qd, &SVector::zeros())
+    rnea_dirs(model, Vector2::zeros(), &dirs, q, qd, &SVector::zeros())
 }
 
 /// The joint friction torques (forces at prismatic joints)

@@ -149,7 +149,7 @@ pub fn regressor<const N: usize>(
     let mut joints = [Axis::About(Vector2::zeros()); N];
     let mut out = Regressor::with_joint_columns(qd, qdd);
     let mut p = Vector2::zeros();
-    let mut a = Vector2::new(0.0, model.gravity);
+    let mut a = -model.gravity;
     let (mut omega, mut alpha) = (0.0, 0.0);
     // The payload is a body of the last link's frame about the last joint (the base's for an
     // arm of no links): the last block starts where its link's did.
@@ -204,7 +204,7 @@ pub fn regressor_local<const N: usize>(
     let mut out = Regressor::with_joint_columns(qd, qdd);
     // The acceleration of the end of link j-1 (the base's origin for j = 0) in its frame, then
     // of link j's origin in link j's frame.
-    let mut a = Vector2::new(0.0, model.gravity);
+    let mut a = -model.gravity;
     let (mut omega, mut alpha) = (0.0, 0.0);
     for j in 0..N {
         if let Some((s, c)) = rot[j] {

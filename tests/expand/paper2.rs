@@ -476,7 +476,7 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
                     range: ::core::option::Option::None,
                 },
             ],
-            gravity: (981.0 / 100.0),
+            gravity: ::planar_arm::nalgebra::Vector2::new(0.0, (-(981.0 / 100.0))),
             payload: ::planar_arm::Payload::NONE,
         }
     }

@@ -797,7 +797,7 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     range: ::core::option::Option::None,
                 },
             ],
-            gravity: (981.0 / 100.0),
+            gravity: ::planar_arm::nalgebra::Vector2::new(0.0, (-(981.0 / 100.0))),
             payload: ::planar_arm::Payload::NONE,
         }
     }

@@ -445,7 +445,7 @@ impl ::planar_arm::PlanarArm<2> for Polar {
                     range: ::core::option::Option::Some((0.0, (3.0 / 5.0))),
                 },
             ],
-            gravity: (981.0 / 100.0),
+            gravity: ::planar_arm::nalgebra::Vector2::new(0.0, (-(981.0 / 100.0))),
             payload: ::planar_arm::Payload::NONE,
         }
     }

@@ -176,7 +176,7 @@ pub fn summary<C: Emit>(d: &Derived<C>) -> String {
             l.frictionloss
         );
     }
-    let _ = writeln!(s, "gravity {}", d.arm.gravity);
+    let _ = writeln!(s, "gravity {} {}", d.arm.gravity.0, d.arm.gravity.1);
     s
 }
 

@@ -277,7 +277,7 @@ mod tests {
     fn matches_central_differences_of_both_programs() {
         for n in 1..=4 {
             let mut arm = ArmSpec::paper(n);
-            arm.gravity = ratio(981, 100);
+            arm.gravity = crate::down(ratio(981, 100));
             arm.links[0].damping = ratio(1, 10);
             arm.links[n - 1].frictionloss = ratio(1, 5);
             let d = Derived::new(&arm);
@@ -309,7 +309,7 @@ mod tests {
     fn forward_dynamics_derivatives_match_central_differences() {
         for n in 1..=4 {
             let mut arm = ArmSpec::paper(n);
-            arm.gravity = ratio(981, 100);
+            arm.gravity = crate::down(ratio(981, 100));
             arm.links[0].damping = ratio(1, 10);
             let d = Derived::new(&arm);
             let fd = d.forward_dynamics_method();
@@ -342,7 +342,7 @@ mod tests {
     fn print_parameterised_op_counts() {
         for n in [4, 6, 8, 9, 10] {
             let mut arm = ArmSpec::paper(n);
-            arm.gravity = ratio(981, 100);
+            arm.gravity = crate::down(ratio(981, 100));
             let (spec, _) = arm.parameterised();
             let d = Derived::new(&spec);
             let show = |m: Option<Method>| m.map_or("none".into(), |m| m.op_count().to_string());
@@ -359,7 +359,7 @@ mod tests {
     fn print_op_counts() {
         for n in 1..=10 {
             let mut arm = ArmSpec::paper(n);
-            arm.gravity = ratio(981, 100);
+            arm.gravity = crate::down(ratio(981, 100));
             let d = Derived::new(&arm);
             let start = std::time::Instant::now();
             let id = d.inverse_dynamics_derivatives_method();

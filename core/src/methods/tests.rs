@@ -28,7 +28,7 @@ fn arm(n: usize) -> ArmSpec {
                 range: None,
             })
             .collect(),
-        gravity: ratio(981, 100),
+        gravity: crate::down(ratio(981, 100)),
         payload: Some(crate::mechanics::PayloadSpec {
             mass: ratio(3, 4),
             inertia: ratio(1, 50),

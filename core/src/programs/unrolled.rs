@@ -199,14 +199,18 @@ fn newton_euler_of<C: Emit>(
 ) -> Vec<Id> {
     let n = arm.links.len();
     let zero = p.constant(Rational::zero());
-    let g = if terms.gravity {
-        p.coefficient(&arm.gravity)
+    // Gravity as the base accelerating against it.
+    let (gx, gy) = if terms.gravity {
+        (
+            p.coefficient(&-arm.gravity.0.clone()),
+            p.coefficient(&-arm.gravity.1.clone()),
+        )
     } else {
-        zero
+        (zero, zero)
     };
     let prismatic = |i: usize| arm.links[i].joint == JointKind::Prismatic;
     // Acceleration of the current joint in the previous link's frame.
-    let mut end: V2 = (zero, g);
+    let mut end: V2 = (gx, gy);
     let (mut w, mut al) = (zero, zero);
     // A revolute joint's rotation; `None` for a prismatic joint, which does not turn.
     let mut trig: Vec<Option<V2>> = Vec::with_capacity(n);

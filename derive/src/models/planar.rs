@@ -5,9 +5,9 @@
 //!
 //! The plane's frame: its origin at the first joint, `x` from the first joint toward the next
 //! (or along the first slide, or toward the tip), `y = n x x`. Offsets along `n` do not change a
-//! planar motion and are dropped; gravity must lie along `-y` (a part along `n` does no work
-//! and is dropped). What the planar derive cannot say yet (a joint turning the other way, a
-//! link bent at `q = 0`, gravity along the links, a spring) is an error naming the joint.
+//! planar motion and are dropped; so is gravity's part along `n`, which does no work. What the
+//! planar derive cannot say yet (a joint turning the other way, a link bent at `q = 0`, a
+//! spring) is an error naming the joint.
 
 use num_traits::{Signed, Zero};
 use planar_arm_core::ring::{int, to_f64, Rational};
@@ -66,8 +66,8 @@ fn small(x: &Rational, scale: f64) -> bool {
 /// What a planar derive takes from a file.
 pub struct Planar {
     pub links: Vec<LinkSpec<Poly>>,
-    /// Gravity's magnitude along the plane's `-y`.
-    pub gravity: Rational,
+    /// Gravity's acceleration `(gx, gy)` in the plane's frame.
+    pub gravity: (Poly, Poly),
     /// Notes for the docs: the plane chosen, what was dropped.
     pub notes: Vec<String>,
 }
@@ -245,28 +245,32 @@ pub fn planar(chain: &Chain, file: &str, g: Option<&Vec3>) -> Result<Planar, Fil
         show(&n),
         show(&x)
     )];
+    let zero = || Poly::constant(int(0));
     let Some(g) = g else {
         return Ok(Planar {
             links,
-            gravity: int(0),
+            gravity: (zero(), zero()),
             notes,
         });
     };
-    let (gx, gy) = (dot(g, &x), dot(g, &y));
+    // Gravity's parts in the plane: a part below rounding (a plane axis carried as decimals)
+    // is zero, so that gravity along an axis stays exact.
     let gscale = norm(g);
-    if !small(&gx, gscale) || gy.is_positive() {
-        return Err(FileError(format!(
-            "{file}: gravity {} has {} along the plane's x {} and {} along its y {}: a planar \
-             arm's gravity is along -y, with its links along x at q = 0; the planar derive's \
-             `gravity = (gx, gy)` will say this; give `gravity = <magnitude>` on the struct, or \
-             read the file with #[derive(SpatialArm)]",
-            show(g),
-            f(&gx),
-            show(&x),
-            f(&gy),
-            show(&y)
-        )));
-    }
+    let part = |axis: &Vec3| {
+        let r = dot(g, axis);
+        if small(&r, gscale) {
+            int(0)
+        } else {
+            r
+        }
+    };
+    let gravity = (part(&x), part(&y));
+    notes.push(format!(
+        "Gravity {} in the file is ({}, {}) in the plane's frame.",
+        show(g),
+        f(&gravity.0),
+        f(&gravity.1)
+    ));
     if !small(&dot(g, &n), gscale) {
         notes.push(format!(
             "Gravity's part along the hinges' axis, {}, does no work on a planar arm and is dropped.",
@@ -275,7 +279,7 @@ pub fn planar(chain: &Chain, file: &str, g: Option<&Vec3>) -> Result<Planar, Fil
     }
     Ok(Planar {
         links,
-        gravity: -gy,
+        gravity: (Poly::constant(gravity.0), Poly::constant(gravity.1)),
         notes,
     })
 }

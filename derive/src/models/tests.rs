@@ -1,6 +1,8 @@
 //! Bad model files: each error names the file, the line and what is wrong.
 
 use super::{import, Format};
+use planar_arm_core::ring::{int, ratio, Rational};
+use planar_arm_core::Poly;
 
 /// A file written for one test, by absolute path (which `import` takes as it is).
 fn file(name: &str, text: &str) -> String {
@@ -232,14 +234,41 @@ fn planar_error(path: &str) -> String {
     }
 }
 
+fn planar_gravity(path: &str) -> (Rational, Rational) {
+    let i = super::import_planar(Format::Mjcf, path, None, None, false).unwrap();
+    let (x, y) = &i.planar.gravity;
+    (x.as_rational().unwrap(), y.as_rational().unwrap())
+}
+
+#[test]
+fn gravity_keeps_its_direction_in_the_plane() {
+    let g = ratio(981, 100);
+    // The acrobot's links stand along z at qpos = 0, the plane's x: gravity points down it.
+    assert_eq!(
+        planar_gravity("../models/acrobot.xml"),
+        (-g.clone(), int(0))
+    );
+    // The cart-pole's plane has x along the slide and y = n x x = -z: gravity points up y.
+    assert_eq!(
+        planar_gravity("../models/cartpole.xml"),
+        (int(0), g.clone())
+    );
+    assert_eq!(planar_gravity("../models/pendulum.xml"), (int(0), g));
+}
+
 #[test]
 fn what_a_planar_arm_cannot_say_yet_is_named() {
-    // The acrobot's links stand along z at qpos = 0, with gravity along them.
-    let e = planar_error("../models/acrobot.xml");
-    assert!(e.contains("along the plane's x"), "{e}");
-    // The cart-pole's plane has y = -z: gravity points up it.
-    let e = planar_error("../models/cartpole.xml");
-    assert!(e.contains("gravity"), "{e}");
+    // A floating base of slides at right angles needs `offset`.
+    for (path, joint) in [
+        ("../models/hopper.xml", "rootx"),
+        ("../models/swimmer.xml", "rooty"),
+    ] {
+        let e = planar_error(path);
+        assert!(
+            e.contains(&format!("joint `{joint}`: the slide")) && e.contains("`offset`"),
+            "{e}"
+        );
+    }
     // The UR5 is not planar: its second axis leaves the first's plane by a right angle.
     let e = match super::import_planar(Format::Urdf, "../models/ur5.urdf", None, None, false) {
         Ok(_) => panic!("the UR5 read as planar"),
@@ -256,7 +285,10 @@ fn the_reacher_is_planar_in_its_own_plane() {
     let i = super::import_planar(Format::Mjcf, "../models/reacher.xml", None, None, false).unwrap();
     assert_eq!(i.names, ["shoulder", "wrist"]);
     // Gravity is normal to the plane: none acts.
-    assert_eq!(i.planar.gravity, planar_arm_core::ring::int(0));
+    assert_eq!(
+        i.planar.gravity,
+        (Poly::constant(int(0)), Poly::constant(int(0)))
+    );
     assert!(
         i.planar.notes[0].contains("normal (0, 0, 1)"),
         "{}",

@@ -15,7 +15,7 @@ fn cross_check<const N: usize>(rng: &mut Rng, model: &Model<N>, worst: &mut Wors
     // CRBA against columns of RNEA(qd = 0, g = 0, qdd = e_j); friction vanishes at rest.
     let m = mass_matrix(model, &q);
     let weightless = Model {
-        gravity: 0.0,
+        gravity: nalgebra::Vector2::zeros(),
         ..*model
     };
     let m_rnea = SMatrix::<f64, N, N>::from_fn(|i, j| {
@@ -112,7 +112,7 @@ fn cross_check<const N: usize>(rng: &mut Rng, model: &Model<N>, worst: &mut Wors
 
     // The payload handled inside each algorithm against the payload merged into the last
     // link by the parallel-axis theorem.
-    let merged = Model::new(model.rigid_links(), model.gravity);
+    let merged = Model::new(model.rigid_links(), 0.0).with_gravity(model.gravity);
     worst.close(&mass_matrix(&merged, &q), &m, tol, "merged M");
     worst.close(
         &inverse_dynamics(&merged, &q, &qd, &qdd),

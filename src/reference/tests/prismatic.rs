@@ -64,7 +64,9 @@ fn polar_closed_form(
 ) -> (Matrix2<f64>, V2<f64>, V2<f64>, V2<f64>, f64) {
     let [l1, l2] = model.links;
     let p = model.payload;
-    let gravity = model.gravity;
+    // The closed form is written for gravity along -y.
+    assert_eq!(model.gravity.x, 0.0);
+    let gravity = -model.gravity.y;
     let (s1, c1) = q[0].sin_cos();
     let (a1, b1) = (l1.com.x, l1.com.y);
     let bodies = [
@@ -205,7 +207,7 @@ fn cart_closed_form(
     qd: &Vector3<f64>,
 ) -> (Matrix3<f64>, Vector3<f64>, Vector3<f64>, Vector3<f64>, f64) {
     let [l1, l2, l3] = model.links;
-    let arm = Model::new([l2, l3], model.gravity);
+    let arm = Model::new([l2, l3], 0.0).with_gravity(model.gravity);
     let (m_arm, c_arm, g_arm, f_arm) =
         two_link_closed_form(&arm, &V2::new(q[1], q[2]), &V2::new(qd[1], qd[2]));
     let (a2, b2, a3, b3) = (l2.com.x, l2.com.y, l3.com.x, l3.com.y);
@@ -239,7 +241,7 @@ fn cart_closed_form(
         f_arm[0],
         f_arm[1],
     );
-    let v = model.gravity
+    let v = -model.gravity.y
         * (l1.mass * l1.com.y
             + l2.mass * (a2 * s2 + b2 * c2)
             + l3.mass * (l2.length * s2 + a3 * s23 + b3 * c23));
@@ -339,7 +341,7 @@ fn single_slider_matches_closed_form() {
         );
         worst.close_f(
             potential_energy(&model, &q),
-            model.gravity * (link.mass * link.com.y + p.mass * p.com.y),
+            -model.gravity.y * (link.mass * link.com.y + p.mass * p.com.y),
             tol,
             "V",
         );

@@ -64,7 +64,9 @@ pub(super) fn two_link_closed_form(
     let [l1, l2] = model.links;
     let (m1, m2, len1, c1, c2) = (l1.mass, l2.mass, l1.length, l1.com, l2.com);
     let (a, b) = (c2.x, c2.y);
-    let g = model.gravity;
+    // The closed form is written for gravity along -y.
+    assert_eq!(model.gravity.x, 0.0);
+    let g = -model.gravity.y;
     let (s2, cos2) = q[1].sin_cos();
     // Link 2's centre seen from joint 1 is `len1 e_x + R(q2) c2`: its dot product with
     // `len1 e_x` is `len1 (a cos q2 - b sin q2)`.

@@ -24,7 +24,7 @@ fn main() {
     };
     assert_eq!(arm.tag, "label");
     let model = arm.model();
-    assert_eq!(model.gravity, 9.81);
+    assert_eq!(model.gravity.y, -9.81);
     assert_eq!(model.links[0].com.x, 0.5);
     assert_eq!(model.payload.mass, 0.5);
     let q = SVector::<f64, 1>::new(0.3);

@@ -27,7 +27,7 @@ fn close(a: f64, b: f64) -> bool {
 fn main() {
     let arm = Pendulum { rod: Revolute };
     let (m, g, c, inertia) = (1.5, 9.81, 0.25, 1.5 * 0.25 / 12.0);
-    assert_eq!(arm.model().gravity, 9.81);
+    assert_eq!(arm.model().gravity.y, -9.81);
     assert_eq!(arm.links()[0].length, 0.5);
     assert!(close(arm.links()[0].inertia, inertia));
     for k in -20..=20 {
@@ -55,7 +55,7 @@ fn main() {
         a: Revolute,
         b: Revolute,
     };
-    assert!(close(forms.model().gravity, 9.81));
+    assert!(close(forms.model().gravity.y, -9.81));
     let [a, b] = forms.links();
     assert_eq!(
         (a.length, a.mass, a.inertia, a.com),

@@ -93,7 +93,7 @@ pub(super) fn model<C: Emit>(d: &Derived<C>) -> Result<TokenStream, EmitError> {
             }))
         })
         .collect::<Result<Vec<_>, EmitError>>()?;
-    let gravity = v(&d.arm.gravity)?;
+    let gravity = vec2(&d.arm.gravity)?;
     let payload = match &d.arm.payload {
         None => quote!(::planar_arm::Payload::NONE),
         Some(p) => {

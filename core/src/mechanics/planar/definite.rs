@@ -210,7 +210,7 @@ mod tests {
     fn arm(links: Vec<LinkSpec>) -> ArmSpec {
         ArmSpec {
             links,
-            gravity: int(0),
+            gravity: crate::down(int(0)),
             payload: None,
         }
     }

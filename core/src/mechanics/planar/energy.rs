@@ -9,19 +9,32 @@ use crate::expr::Expr;
 use crate::ring::{int, ratio, Coefficient};
 use crate::trig::Angle;
 
-/// The potential energy of the bodies: `g (m y_joint + m cx sin theta + m cy cos theta)` each.
+/// The potential energy of the bodies, `-m g . p` each with `p` the centre of mass:
+/// `m x_joint + m cx cos theta - m cy sin theta` across, `m y_joint + m cx sin theta +
+/// m cy cos theta` up (zero at the origin).
 pub(super) fn potential_energy<C: Coefficient>(arm: &ArmSpec<C>, bodies: &[Body<C>]) -> Expr<C> {
     let mut potential = Expr::zero();
     let zero = C::from_rational(int(0));
+    let (gx, gy) = &arm.gravity;
     for body in bodies {
         let i = body.link;
-        let (_, y_joint) = point_on_link(arm, i, &(zero.clone(), zero.clone()));
+        let (x_joint, y_joint) = point_on_link(arm, i, &(zero.clone(), zero.clone()));
         let (mx, my) = &body.first_moment;
-        let y = y_joint
-            .scale_by(&body.mass)
-            .add(&Expr::sin(mx.clone(), link_angle(arm, i)))
-            .add(&Expr::cos(my.clone(), link_angle(arm, i)));
-        potential.add_assign(&y.scale_by(&arm.gravity));
+        let angle = link_angle(arm, i);
+        if !gy.is_zero() {
+            let y = y_joint
+                .scale_by(&body.mass)
+                .add(&Expr::sin(mx.clone(), angle.clone()))
+                .add(&Expr::cos(my.clone(), angle.clone()));
+            potential.sub_assign(&y.scale_by(gy));
+        }
+        if !gx.is_zero() {
+            let x = x_joint
+                .scale_by(&body.mass)
+                .add(&Expr::cos(mx.clone(), angle.clone()))
+                .sub(&Expr::sin(my.clone(), angle));
+            potential.sub_assign(&x.scale_by(gx));
+        }
     }
     potential
 }

@@ -60,6 +60,12 @@ impl<C: Coefficient> LinkSpec<C> {
     }
 }
 
+/// Gravity of magnitude `g` along -y, as an acceleration `(0, -g)`.
+#[must_use]
+pub fn down<C: Coefficient>(g: C) -> (C, C) {
+    (C::from_rational(int(0)), -g)
+}
+
 /// A body rigidly held at the tip of the last link: a payload, a tool, a gripper.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct PayloadSpec<C = Rational> {
@@ -71,14 +77,15 @@ pub struct PayloadSpec<C = Rational> {
     pub com: (C, C),
 }
 
-/// A planar serial arm of revolute links, base first, with gravity of magnitude `gravity`
-/// along -y and perhaps a payload at the tip.
+/// A planar serial arm, base first, under gravity `gravity` and perhaps with a payload at the
+/// tip.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ArmSpec<C = Rational> {
     /// The links, base first.
     pub links: Vec<LinkSpec<C>>,
-    /// Magnitude of gravity, along -y.
-    pub gravity: C,
+    /// Gravity's acceleration `(gx, gy)` in the base frame: `(0, -g)` for gravity of
+    /// magnitude `g` along -y ([`down`]), the paper's and most arms'.
+    pub gravity: (C, C),
     /// The body held at the tip, if any.
     pub payload: Option<PayloadSpec<C>>,
 }
@@ -89,7 +96,7 @@ impl ArmSpec<Rational> {
     pub fn paper(n: usize) -> Self {
         Self {
             links: vec![LinkSpec::rod(int(1), int(1)); n],
-            gravity: int(0),
+            gravity: down(int(0)),
             payload: None,
         }
     }
@@ -98,7 +105,7 @@ impl ArmSpec<Rational> {
 impl ArmSpec<Rational> {
     /// The same arm with every value a run-time parameter, named `v0, v1, ...` in the order
     /// link by link (length, mass, inertia, com x, com y, armature, damping, frictionloss),
-    /// then gravity, then the payload's; and each parameter's value. The derivation over it,
+    /// then gravity (x, y), then the payload's; and each parameter's value. The derivation over it,
     /// evaluated at those values, must give the literal arm's numbers: a check of the
     /// polynomial path against the rational one.
     #[must_use]
@@ -115,7 +122,7 @@ impl ArmSpec<Rational> {
 
 impl<C> ArmSpec<C> {
     /// The same arm with every value mapped by `f`, in the order link by link (length, mass,
-    /// inertia, com x, com y, armature, damping, frictionloss), then gravity, then the
+    /// inertia, com x, com y, armature, damping, frictionloss), then gravity (x, y), then the
     /// payload's (mass, inertia, com x, com y).
     #[must_use]
     pub fn map<D>(&self, mut f: impl FnMut(&C) -> D) -> ArmSpec<D> {
@@ -134,7 +141,7 @@ impl<C> ArmSpec<C> {
                 range: l.range.clone(),
             })
             .collect();
-        let gravity = f(&self.gravity);
+        let gravity = (f(&self.gravity.0), f(&self.gravity.1));
         let payload = self.payload.as_ref().map(|p| PayloadSpec {
             mass: f(&p.mass),
             inertia: f(&p.inertia),
@@ -145,6 +152,16 @@ impl<C> ArmSpec<C> {
             gravity,
             payload,
         }
+    }
+
+    /// Gravity of magnitude `g` along -y, when gravity's x component is zero: what the
+    /// closed forms that assume it (the regressor's energy elimination) need.
+    #[must_use]
+    pub fn gravity_down(&self) -> Option<C>
+    where
+        C: Coefficient,
+    {
+        self.gravity.0.is_zero().then(|| -self.gravity.1.clone())
     }
 
     /// Whether every joint is revolute (the paper's arms).

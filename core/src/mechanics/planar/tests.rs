@@ -33,7 +33,7 @@ fn two_equal_links_mass_matrix() {
 fn mass_matrix_two_ways_agree_and_c_is_christoffel() {
     for (n, pattern) in (1..=4).flat_map(|n| (0..1u32 << n).map(move |p| (n, p))) {
         let mut arm = ArmSpec::paper(n);
-        arm.gravity = ratio(981, 100);
+        arm.gravity = crate::down(ratio(981, 100));
         for (i, l) in arm.links.iter_mut().enumerate() {
             *l = LinkSpec {
                 length: ratio(i as i64 + 2, 3),
@@ -191,7 +191,7 @@ fn polar_arm_by_hand() {
                 ..LinkSpec::rod(ratio(1, 2), m2.clone())
             },
         ],
-        gravity: g.clone(),
+        gravity: crate::down(g.clone()),
         payload: None,
     };
     let d = Dynamics::derive(&arm);

@@ -486,7 +486,7 @@ pub fn base_parameters_from_energies(
         .iter()
         .map(|l| l.length.as_rational())
         .collect::<Option<Vec<_>>>()
-        .zip(arm.gravity.as_rational());
+        .zip(arm.gravity.0.as_rational().zip(arm.gravity.1.as_rational()));
     let joints: Vec<JointKind> = arm.links.iter().map(|l| l.joint).collect();
     let base = match rational {
         Some((lengths, gravity)) => {
@@ -504,7 +504,7 @@ pub fn base_parameters_from_energies(
 fn energy_elimination<C: Emit>(
     lengths: &[C],
     joints: &[JointKind],
-    gravity: C,
+    gravity: (C, C),
     parameters: &[Standard],
 ) -> Option<BaseParameters<C>> {
     let n = lengths.len();
@@ -529,7 +529,7 @@ fn energy_elimination<C: Emit>(
     let mut rates = RateProducts::<C>::new();
     // A unit mass on link i: the energies of a point at joint i, the sum over the links
     // before it of S_a = 1/2 l_a^2 w_a^2 + sum_(b < a) l_a l_b cos(theta_a - theta_b) w_a w_b
-    // minus g l_a sin(theta_a). Built as prefix sums: each unit-mass energy from scratch cost
+    // plus g . (l_a cos(theta_a), l_a sin(theta_a)). Built as prefix sums: each unit-mass energy from scratch cost
     // the derive of a 30-link arm half a minute.
     let mut mass_columns: Vec<Expr<C>> = vec![Expr::zero()];
     let half = Rational::new(1.into(), 2.into());
@@ -546,10 +546,9 @@ fn energy_elimination<C: Emit>(
             let trig = Expr::cos(la.clone() * lb.clone(), Angle::range(b + 1, a + 1));
             step.add_assign(&rates.product(a, b).mul(&trig));
         }
-        step.sub_assign(&Expr::sin(
-            geometry.gravity.clone() * la.clone(),
-            Angle::range(0, a + 1),
-        ));
+        let (gx, gy) = &geometry.gravity;
+        step.add_assign(&Expr::cos(gx.clone() * la.clone(), Angle::range(0, a + 1)));
+        step.add_assign(&Expr::sin(gy.clone() * la.clone(), Angle::range(0, a + 1)));
         let next = mass_columns[a].add(&step);
         mass_columns.push(next);
     }

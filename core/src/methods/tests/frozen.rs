@@ -28,7 +28,7 @@ fn arm(n: usize) -> ArmSpec<Poly> {
                 range: None,
             })
             .collect(),
-        gravity: Poly::constant(ratio(981, 100)),
+        gravity: crate::down(Poly::constant(ratio(981, 100))),
         payload: None,
     }
 }

@@ -7,7 +7,7 @@ use crate::ring::{int, ratio};
 
 fn arm(n: usize, gravity: bool, armature: bool, payload: bool) -> ArmSpec {
     let mut a = ArmSpec::paper(n);
-    a.gravity = if gravity { ratio(981, 100) } else { int(0) };
+    a.gravity = crate::down(if gravity { ratio(981, 100) } else { int(0) });
     for (i, l) in a.links.iter_mut().enumerate() {
         let i = i64::try_from(i).unwrap_or(0);
         l.length = ratio(i + 3, 4);
@@ -163,7 +163,7 @@ fn run_time_lengths_give_the_rational_groupings_as_polynomials() {
     }
     // A run-time gravity: the first moments of link 1 would need dividing by it.
     let mut free = poly_arm(&arm(2, true, false, false));
-    free.gravity = param("g");
+    free.gravity = crate::down(param("g"));
     assert!(base_parameters_from_energies(&free).is_none());
 }
 
