@@ -269,6 +269,9 @@ fn spec<const N: usize>(model: &Model<N>) -> ArmSpec {
                     Joint::Prismatic => JointKind::Prismatic,
                 },
                 range: None,
+                // The benchmarked arms are plain.
+                offset: None,
+                reversed: false,
             })
             .collect(),
         gravity: (exact(model.gravity.x), exact(model.gravity.y)),

@@ -104,7 +104,10 @@
 //!   `damping = B` (viscous torque `B qd_i`), `frictionloss = F` (Coulomb torque
 //!   `F sign(qd_i)`, `sign(0) = 0`). `range = (lo, hi)` (optional, numbers) is the joint's
 //!   travel, radians or metres: the work-spaces and inverse kinematics respect it, the
-//!   dynamics never clamp to it.
+//!   dynamics never clamp to it. `offset = a` turns the joint: a hinge's link stands at angle
+//!   `a` to the previous link at `q = 0`, a slide moves at angle `a` to it (and its frame turns
+//!   with it); `reversed` makes the joint turn clockwise (slide backwards). A link's `mass`
+//!   may be 0 where later links keep the mass matrix definite (a floating base's slides).
 //! - Values are exact: integers, decimals (`0.35` is `7/20`, not an `f64`), fractions `a/b`
 //!   and `+ - * /` with parentheses. Nothing passes through a float before the final emission.
 //! - Any value may be a run-time parameter, `self.NAME`: an `f64` field of the struct read when

@@ -84,6 +84,16 @@ pub struct Link {
     /// The joint's range `(lower, upper)`, radians or metres, if it has one: used by the
     /// work-spaces, inverse kinematics and documentation, never to clamp the dynamics.
     pub range: Option<(f64, f64)>,
+    /// The joint's offset, radians: a hinge's link angle at `q_i = 0` relative to the
+    /// previous link, or the direction a slide moves in relative to the previous link (the
+    /// slide's frame turns with it, so the next link's angle is measured from it). Zero for
+    /// the paper's arms, whose links all lie along +x at `q = 0`.
+    pub offset: f64,
+    /// Whether the joint turns (slides) the other way: the link's angle relative to the
+    /// previous one is `offset - q_i` (the slide's displacement `-q_i`), and the joint's
+    /// generalised force is the torque (force) in that sense: a hinge about `-z` among `+z`
+    /// ones, as model files have them.
+    pub reversed: bool,
 }
 
 impl Link {
@@ -101,6 +111,23 @@ impl Link {
             frictionloss: 0.0,
             joint: Joint::Revolute,
             range: None,
+            offset: 0.0,
+            reversed: false,
+        }
+    }
+
+    /// The same link with its joint's [`offset`](Self::offset), radians.
+    #[must_use]
+    pub const fn with_offset(self, offset: f64) -> Self {
+        Self { offset, ..self }
+    }
+
+    /// The same link with its joint [`reversed`](Self::reversed).
+    #[must_use]
+    pub const fn reversed(self) -> Self {
+        Self {
+            reversed: true,
+            ..self
         }
     }
 

@@ -124,8 +124,8 @@ impl<const N: usize> Model<N> {
     }
 
     /// The same arm as a spatial arm in MuJoCo's x-y plane: each joint a URDF-style joint at the
-    /// previous link's end (the base origin for the first), a hinge about `+z` or a slide
-    /// along the previous link's `x`; each link's centre of mass at `(x, y, 0)`; the tool at the last link's end; the payload as the tool's. A planar body
+    /// previous link's end (the base origin for the first), turned about `z` by its offset, a
+    /// hinge about `+z` or a slide along its `x` (`-z`, `-x` reversed); each link's centre of mass at `(x, y, 0)`; the tool at the last link's end; the payload as the tool's. A planar body
     /// has one moment of inertia, about `z`: the tensor's out-of-plane moments, which a planar
     /// motion never feels, are set equal to it, so that the tensor meets the triangle
     /// inequality MuJoCo requires. Gravity is `(gx, gy, 0)`. Its dynamics are this arm's (`tests/models.rs` checks the
@@ -147,8 +147,8 @@ impl<const N: usize> Model<N> {
             };
             let geometry = JointGeometry::Urdf {
                 xyz: Vector3::new(before, 0.0, 0.0),
-                rpy: Vector3::zeros(),
-                axis,
+                rpy: Vector3::new(0.0, 0.0, l.offset),
+                axis: if l.reversed { -axis } else { axis },
             };
             before = l.length;
             SpatialJoint {
@@ -207,9 +207,9 @@ impl<const N: usize> Model<N> {
         links
     }
 
-    /// Checks that the model is physical and its dynamics defined: every value finite, masses
-    /// positive, lengths, inertias, armatures, damping, frictionloss, the payload's mass and
-    /// inertia not negative, a joint range finite with `lower < upper`, and the mass
+    /// Checks that the model is physical and its dynamics defined: every value finite, masses,
+    /// lengths, inertias, armatures, damping, frictionloss, the payload's mass and inertia not
+    /// negative (a massless link is fine where later links carry its joint's load), a joint range finite with `lower < upper`, and the mass
     /// matrix positive definite (at a generic configuration its `L D L^T` pivots exceed
     /// [`RELATIVE_PIVOT`] times their diagonal entries, which are normal `f64`s: no joint that
     /// moves no mass and turns no inertia). What the derive checks at compile time for literal
@@ -237,16 +237,17 @@ impl<const N: usize> Model<N> {
         for (i, l) in self.links.iter().enumerate() {
             let values = [
                 ("length", l.length, false),
-                ("mass", l.mass, true),
+                ("mass", l.mass, false),
                 ("inertia", l.inertia, false),
                 ("com.x", l.com.x, false),
                 ("com.y", l.com.y, false),
                 ("armature", l.armature, false),
                 ("damping", l.damping, false),
                 ("frictionloss", l.frictionloss, false),
+                ("offset", l.offset, false),
             ];
             for (what, value, positive) in values {
-                let signed = matches!(what, "com.x" | "com.y");
+                let signed = matches!(what, "com.x" | "com.y" | "offset");
                 if !value.is_finite()
                     || (positive && value <= 0.0)
                     || (!signed && !positive && value < 0.0)

@@ -4,7 +4,7 @@
 //! mechanics and Featherstone's spatial-vector algorithms specialised to the plane). It shares
 //! no code with the symbolic Lagrangian path of `#[derive(PlanarArm)]`, so the tests, the
 //! benchmarks and the `paper` example use it as the ground truth the generated code is checked
-//! and timed against. Every function takes the arm as a [`Model`](crate::Model): links,
+//! and timed against. Every function takes the arm as a [`Model`]: links,
 //! gravity, payload.
 //!
 //! # Conventions
@@ -20,7 +20,11 @@
 //!   `o_i = o_{i-1} + (l_{i-1} + q[i]) u_{i-1}`,
 //!
 //! where `o_{-1} + l_{-1} u_{-1}` is the base origin and `phi_{-1} = 0`: the first joint turns
-//! about the origin or slides along +x. So `phi_i` sums the revolute `q`s up to `i`, and a link
+//! about the origin or slides along +x. A joint's [`offset`](crate::Link::offset) adds to
+//! `phi_i` (a prismatic joint's too, so that it slides along `u_i`, turned from `u_{i-1}`, and
+//! `o_i = o_{i-1} + l_{i-1} u_{i-1} + q[i] u_i`); a [`reversed`](crate::Link::reversed) joint
+//! is the plain one at `-q[i]`, its generalised force negated, which is how every function
+//! here treats it. So `phi_i` sums the revolute `q`s up to `i`, and a link
 //! starts at the origin unless the first joint is prismatic. [`joint_positions`] are the
 //! `o_i` (for a prismatic joint the slid carriage, not the end of the link before it), the
 //! tip is `o_{N-1} + l_{N-1} u_{N-1}`, its orientation `phi_{N-1}` ([`tip_orientation`]).
@@ -78,7 +82,7 @@ use nalgebra::{SVector, Vector2};
 #[cfg(not(feature = "std"))]
 use num_traits::Float as _;
 
-use crate::{Joint, Link};
+use crate::{Joint, Link, Model};
 
 mod articulated;
 mod composite;
@@ -115,8 +119,11 @@ fn link_directions<const N: usize>(links: &[Link; N], q: &SVector<f64, N>) -> [V
     let mut phi = 0.0;
     let mut u = Vector2::x();
     for ((dir, &qi), link) in dirs.iter_mut().zip(q.iter()).zip(links.iter()) {
-        if !slides(link) {
-            phi += qi;
+        if !slides(link) || link.offset != 0.0 {
+            phi += link.offset;
+            if !slides(link) {
+                phi += qi;
+            }
             let (s, c) = phi.sin_cos();
             u = Vector2::new(c, s);
         }
@@ -125,12 +132,29 @@ fn link_directions<const N: usize>(links: &[Link; N], q: &SVector<f64, N>) -> [V
     dirs
 }
 
-/// Each link's absolute angle `phi_i`, the sum of the revolute joints' `q` up to `i`, for one
-/// batched `sin_cos`.
+/// `model` with its reversed joints turned the standard way, and the senses `s` (`-1` at a
+/// reversed joint, else `1`), if any joint is reversed: a reversed joint's `q_i` is the plain
+/// one's `-q_i`, so the model's quantities at `q` are the plain model's at `s q`, generalised
+/// forces (and rows) times `s`.
+fn unreversed<const N: usize>(model: &Model<N>) -> Option<(Model<N>, SVector<f64, N>)> {
+    if model.links.iter().all(|l| !l.reversed) {
+        return None;
+    }
+    let mut plain = *model;
+    let s = SVector::from_fn(|i, _| if model.links[i].reversed { -1.0 } else { 1.0 });
+    for l in &mut plain.links {
+        l.reversed = false;
+    }
+    Some((plain, s))
+}
+
+/// Each link's absolute angle `phi_i`, the offsets and the revolute joints' `q` up to `i`,
+/// for one batched `sin_cos`.
 #[inline(always)]
 fn absolute_angles<const N: usize>(links: &[Link; N], q: &SVector<f64, N>) -> [f64; N] {
     let mut phi = 0.0;
     core::array::from_fn(|i| {
+        phi += links[i].offset;
         if !slides(&links[i]) {
             phi += q[i];
         }
@@ -138,8 +162,9 @@ fn absolute_angles<const N: usize>(links: &[Link; N], q: &SVector<f64, N>) -> [f
     })
 }
 
-/// [`link_directions`] from the sines and cosines of [`absolute_angles`]: a prismatic joint's
-/// own entry is not read, its link keeps the previous direction, as there.
+/// [`link_directions`] from the sines and cosines of [`absolute_angles`]: the entry of a
+/// prismatic joint without an offset is not read, its link keeps the previous direction, as
+/// there.
 #[inline(always)]
 fn directions_from<const N: usize>(
     links: &[Link; N],
@@ -147,7 +172,7 @@ fn directions_from<const N: usize>(
 ) -> [Vector2<f64>; N] {
     let mut u = Vector2::x();
     core::array::from_fn(|i| {
-        if !slides(&links[i]) {
+        if !slides(&links[i]) || links[i].offset != 0.0 {
             let (s, c) = sin_cos[i];
             u = Vector2::new(c, s);
         }
@@ -155,14 +180,20 @@ fn directions_from<const N: usize>(
     })
 }
 
-/// `reach_i`, the distance along `u_i` from link i's frame origin to the next link's (to the
-/// tip for the last link): its length, plus the next joint's slide `q_{i+1}` if that joint is
-/// prismatic, so that `o_{i+1} = o_i + reach_i u_i`.
+/// `o_{i+1} - o_i`, from link i's frame origin to the next link's (to the tip for the last
+/// link): its length along `u_i`, plus the next joint's slide `q_{i+1} u_{i+1}` if that joint
+/// is prismatic.
 #[inline(always)]
-fn reaches<const N: usize>(links: &[Link; N], q: &SVector<f64, N>) -> [f64; N] {
+fn steps<const N: usize>(
+    links: &[Link; N],
+    dirs: &[Vector2<f64>; N],
+    q: &SVector<f64, N>,
+) -> [Vector2<f64>; N] {
     core::array::from_fn(|i| match (links.get(i + 1), q.get(i + 1)) {
-        (Some(next), Some(&slide)) if slides(next) => links[i].length + slide,
-        _ => links[i].length,
+        (Some(next), Some(&slide)) if slides(next) => {
+            dirs[i] * links[i].length + dirs[i + 1] * slide
+        }
+        _ => dirs[i] * links[i].length,
     })
 }
 

@@ -1,7 +1,8 @@
 //! The engine's straight-line programs (what the derive renders as Rust) against the numeric
 //! reference (recursive Newton-Euler, composite rigid body, articulated body), for arms of 1
-//! to 8 links with random rational parameters, random joint kinds (about a third prismatic)
-//! and random states.
+//! to 8 links with random rational parameters, random joint kinds (about a third prismatic),
+//! joint offsets (quarter turns, and angles with rational cosine and sine) and reversed
+//! joints, gravity in any direction, and random states.
 
 use planar_arm::nalgebra::{SVector, Vector2};
 use planar_arm::reference;
@@ -9,7 +10,8 @@ use planar_arm::symbolic::frozen::freeze;
 use planar_arm::symbolic::methods::{Derived, Method};
 use planar_arm::symbolic::ring::{ratio, to_f64, Rational};
 use planar_arm::symbolic::slp::{Emit, Input};
-use planar_arm::symbolic::{ArmSpec, JointKind, LinkSpec, PayloadSpec, Poly};
+use planar_arm::symbolic::spatial::FixedAngle;
+use planar_arm::symbolic::{ArmSpec, JointKind, LinkSpec, Offset, PayloadSpec, Poly};
 use planar_arm::{Link, Model, Payload};
 use proptest::prelude::*;
 
@@ -26,41 +28,69 @@ fn link() -> impl Strategy<Value = LinkSpec> {
         (-2i64..=12, 1i64..=10, -3i64..=3),
         (0i64..=4, 0i64..=4, 0i64..=4), // armature, damping, frictionloss in tenths
         proptest::bool::weighted(0.35),
+        (0usize..12, proptest::bool::weighted(0.3)),
     )
-        .prop_filter("positive length and mass", |(l, m, _, _, _, _)| {
+        .prop_filter("positive length and mass", |(l, m, _, _, _, _, _)| {
             l.0 > 0 && m.0 > 0
         })
-        .prop_map(|(l, m, i, (c, cd, cy), (a, b, f), prismatic)| {
-            let length = ratio(l.0, l.1);
-            LinkSpec {
-                // com may lie past either end of the link (a counterweight), and off its axis
-                com: (&length * ratio(c, cd * 10), ratio(cy, 10)),
-                length,
-                mass: ratio(m.0, m.1),
-                // keep the mass matrix positive definite even when com = 0
-                inertia: ratio(i.0 + 1, i.1),
-                armature: ratio(a, 10),
-                damping: ratio(b, 10),
-                frictionloss: ratio(f, 10),
-                joint: if prismatic {
-                    JointKind::Prismatic
-                } else {
-                    JointKind::Revolute
-                },
-                range: None,
-            }
-        })
+        .prop_map(
+            |(l, m, i, (c, cd, cy), (a, b, f), prismatic, (turn, reversed))| {
+                let length = ratio(l.0, l.1);
+                LinkSpec {
+                    // com may lie past either end of the link (a counterweight), and off its axis
+                    com: (&length * ratio(c, cd * 10), ratio(cy, 10)),
+                    length,
+                    mass: ratio(m.0, m.1),
+                    // keep the mass matrix positive definite even when com = 0
+                    inertia: ratio(i.0 + 1, i.1),
+                    armature: ratio(a, 10),
+                    damping: ratio(b, 10),
+                    frictionloss: ratio(f, 10),
+                    joint: if prismatic {
+                        JointKind::Prismatic
+                    } else {
+                        JointKind::Revolute
+                    },
+                    range: None,
+                    offset: offset(turn),
+                    reversed,
+                }
+            },
+        )
+}
+
+/// No offset half the time, else a quarter turn or an angle whose cosine and sine are
+/// rational (Pythagorean triples), either way round.
+fn offset(k: usize) -> Option<Offset> {
+    let (c, s, d): (i32, i32, i64) = match k {
+        0..=5 => return None,
+        6 => (0, 1, 1),
+        7 => (-1, 0, 1),
+        8 => (0, -1, 1),
+        9 => (3, 4, 5),
+        10 => (12, -5, 13),
+        _ => (-8, 15, 17),
+    };
+    let radians = f64::from(s).atan2(f64::from(c));
+    Some(Offset {
+        angle: FixedAngle {
+            radians: Rational::from_float(radians).expect("finite"),
+            pi_multiple: ratio(0, 1),
+        },
+        cos: ratio(c.into(), d),
+        sin: ratio(s.into(), d),
+    })
 }
 
 fn arm(max_links: usize) -> impl Strategy<Value = ArmSpec> {
     (
         proptest::collection::vec(link(), 1..=max_links),
-        0i64..=2000,
+        (0i64..=2000, -500i64..=500),
         proptest::option::of((0i64..=20, 0i64..=5, -3i64..=3, -3i64..=3)),
     )
-        .prop_map(|(links, g, payload)| ArmSpec {
+        .prop_map(|(links, (g, across), payload)| ArmSpec {
             links,
-            gravity: planar_arm_core::down(ratio(g, 100)),
+            gravity: (ratio(across, 100), ratio(-g, 100)),
             payload: payload.map(|(m, i, x, y)| PayloadSpec {
                 mass: ratio(m, 10),
                 inertia: ratio(i, 100),
@@ -87,6 +117,8 @@ fn numeric<const N: usize>(spec: &ArmSpec) -> Model<N> {
                 JointKind::Prismatic => planar_arm::Joint::Prismatic,
             },
             range: None,
+            offset: l.offset.as_ref().map_or(0.0, |o| o.angle.value()),
+            reversed: l.reversed,
         }
     });
     let payload = spec.payload.as_ref().map_or(Payload::NONE, |p| Payload {

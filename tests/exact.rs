@@ -115,6 +115,8 @@ fn random_arm(rng: &mut Rng, n: usize) -> ArmSpec {
                 JointKind::Revolute
             },
             range: None,
+            offset: None,
+            reversed: false,
         })
         .collect();
     ArmSpec {

@@ -337,6 +337,8 @@ fn random_model<const N: usize>(rng: &mut Rng) -> planar_arm::Model<N> {
         frictionloss: rng.range(0.0, 0.5),
         joint: planar_arm::Joint::Revolute,
         range: None,
+        offset: 0.0,
+        reversed: false,
     });
     let payload = Payload::point(rng.range(0.0, 2.0))
         .with_com(rng.range(-0.2, 0.2), rng.range(-0.2, 0.2))

@@ -57,6 +57,17 @@ struct CartPolePlanar;
 #[arm(mjcf = "models/pendulum.xml")]
 struct PendulumPlanar;
 
+/// The hopper and the six-link swimmer as planar arms: a floating base of two slides at right
+/// angles (an `offset` of a quarter turn) and a hinge, all at one point, then the legs or the
+/// body's links.
+#[derive(PlanarArm)]
+#[arm(mjcf = "models/hopper.xml")]
+struct HopperPlanar;
+
+#[derive(PlanarArm)]
+#[arm(mjcf = "models/swimmer6.xml")]
+struct Swimmer6Planar;
+
 #[derive(SpatialArm)]
 #[arm(mjcf = "models/swimmer6.xml")]
 struct Swimmer6;
@@ -186,6 +197,20 @@ fn control_suite_models_match_mujoco() {
         check(MODELS, &AcrobotPlanar, ["shoulder", "elbow"], "acrobot"),
         check(MODELS, &CartPolePlanar, ["slider", "hinge_1"], "cartpole"),
         check(MODELS, &PendulumPlanar, ["hinge"], "pendulum"),
+        check(
+            MODELS,
+            &HopperPlanar,
+            ["rootx", "rootz", "rooty", "waist", "hip", "knee", "ankle"],
+            "hopper",
+        ),
+        check(
+            MODELS,
+            &Swimmer6Planar,
+            [
+                "rootx", "rooty", "rootz", "joint_0", "joint_1", "joint_2", "joint_3", "joint_4",
+            ],
+            "swimmer6",
+        ),
         check(
             MODELS,
             &Hopper,

@@ -30,6 +30,8 @@ fn random_arm(rng: &mut Rng, n: usize, gravity: bool, extras: bool) -> ArmSpec<P
             frictionloss: zero(),
             joint: JointKind::Revolute,
             range: None,
+            offset: None,
+            reversed: false,
         })
         .collect();
     ArmSpec {

@@ -94,7 +94,9 @@ pub mod spatial {
 // Re-exports, not copies, in the docs: each item's page stays in its module.
 #[doc(no_inline)]
 pub use expr::{Expr, Monomial, Var};
-pub use mechanics::{down, ArmSpec, Body, Dynamics, JointKind, Kinematics, LinkSpec, PayloadSpec};
+pub use mechanics::{
+    down, ArmSpec, Body, Dynamics, JointKind, Kinematics, LinkSpec, Offset, PayloadSpec,
+};
 #[doc(no_inline)]
 pub use poly::{Param, Poly};
 #[doc(no_inline)]

@@ -6,6 +6,6 @@ pub(crate) mod planar;
 pub mod spatial;
 
 pub use planar::{
-    down, standard_bodies, ArmSpec, Body, Dynamics, JointKind, Kinematics, LinkSpec, PayloadSpec,
-    RateProducts,
+    down, standard_bodies, ArmSpec, Body, Dynamics, JointKind, Kinematics, LinkSpec, Offset,
+    PayloadSpec, RateProducts,
 };

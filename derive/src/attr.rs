@@ -24,6 +24,8 @@ pub const PAYLOAD_INERTIA: &str = "payload_inertia";
 pub const PAYLOAD_COM: &str = "payload_com";
 pub const CRATE: &str = "crate";
 pub const RANGE: &str = "range";
+pub const OFFSET: &str = "offset";
+pub const REVERSED: &str = "reversed";
 pub const URDF: &str = "urdf";
 pub const MJCF: &str = "mjcf";
 pub const BASE: &str = "base";
@@ -49,6 +51,8 @@ pub const FIELD_KEYS: &[&str] = &[
     DAMPING,
     FRICTIONLOSS,
     RANGE,
+    OFFSET,
+    REVERSED,
 ];
 /// Keys of `#[derive(SpatialArm)]`, which a planar arm writes otherwise.
 const SPATIAL_KEYS: &[&str] = &["dh", "mdh", "origin", "axis", "tool"];
@@ -98,6 +102,11 @@ pub struct Attrs {
     pub model: Option<(crate::models::Format, syn::LitStr)>,
     pub base: Option<syn::LitStr>,
     pub tip: Option<syn::LitStr>,
+    /// `#[arm(offset = pi/2)]` on a link: the joint's constant turn, exact where it is a
+    /// rational multiple of `pi` or a number of radians.
+    pub offset: Option<planar_arm_core::spatial::FixedAngle>,
+    /// `#[arm(reversed)]` on a link: the joint turns (slides) the other way.
+    pub reversed: bool,
 }
 
 impl Attrs {
@@ -199,6 +208,10 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
     }
     if [URDF, MJCF, BASE, TIP].contains(&key.as_str()) && place == Place::Struct {
         parse_model_key(cx, meta, &key, out);
+        return;
+    }
+    if [OFFSET, REVERSED].contains(&key.as_str()) && place == Place::Field {
+        parse_joint_turn(cx, meta, &key, out);
         return;
     }
     // #[arm(inertia(zz = 0.1))], before the value is skipped
@@ -384,6 +397,55 @@ fn parse_model_key(cx: &Ctxt, meta: &ParseNestedMeta<'_>, key: &str, out: &mut A
         BASE => out.base = Some(lit),
         TIP => out.tip = Some(lit),
         _ => out.malformed |= !crate::models::set_file(cx, &mut out.model, key, lit),
+    }
+}
+
+/// `offset = <angle>` (a number of radians or a multiple of `pi`) and the flag `reversed`.
+fn parse_joint_turn(cx: &Ctxt, meta: &ParseNestedMeta<'_>, key: &str, out: &mut Attrs) {
+    let known = if key == OFFSET { OFFSET } else { REVERSED };
+    let again = out.mentioned.contains(&known);
+    out.mentioned.push(known);
+    if known == REVERSED {
+        if meta.input.peek(Token![=]) {
+            // #[arm(reversed = true)]
+            let _ = meta.value().and_then(|v| v.parse::<syn::Expr>());
+            skip_to_comma(meta.input);
+            cx.error_spanned_by(
+                &meta.path,
+                "`reversed` is a flag and takes no value: write `reversed` for a joint that turns \
+                 (slides) the other way, and nothing for one that does not",
+            );
+        } else if again {
+            cx.error_spanned_by(&meta.path, "duplicate key `reversed`; give it once");
+        } else {
+            out.reversed = true;
+        }
+        return;
+    }
+    let angle = meta
+        .value()
+        .and_then(|v| v.parse::<syn::Expr>())
+        .and_then(|e| crate::spatial::angle::eval(&e));
+    match angle {
+        // #[arm(offset = pi/2)]
+        Ok(a) if !again => {
+            out.offset = Some(planar_arm_core::spatial::FixedAngle {
+                radians: a.radians,
+                pi_multiple: a.pi_multiple,
+            });
+        }
+        Ok(_) => cx.error_spanned_by(&meta.path, "duplicate key `offset`; give it once"),
+        Err(e) => {
+            skip_to_comma(meta.input);
+            // #[arm(offset = "90")]
+            cx.syn_error(syn::Error::new(
+                e.span(),
+                format!(
+                    "{e}; `offset` is the joint's angle at q = 0 relative to the previous link, \
+                     for example `offset = pi/2`"
+                ),
+            ));
+        }
     }
 }
 

@@ -7,7 +7,8 @@
 
 use num_traits::{Signed, Zero};
 use planar_arm_core::ring::{parse_decimal, ratio, to_f64, Rational};
-use planar_arm_core::{down, ArmSpec, JointKind, LinkSpec, PayloadSpec, Poly};
+use planar_arm_core::spatial::FixedAngle;
+use planar_arm_core::{down, ArmSpec, JointKind, LinkSpec, Offset, PayloadSpec, Poly};
 
 use crate::ast::{Arm, Link};
 use crate::attr::{
@@ -302,23 +303,10 @@ fn check_link(cx: &Ctxt, link: &Link<'_>) -> Option<LinkSpec<Poly>> {
         ),
     }
 
-    // #[arm(length = 0.5)], #[arm(mass = 2)]: positive.
-    let mut positive = |key: &str| -> Option<Poly> {
-        let v = a.get(key)?;
-        let mut good = representable(cx, key, v);
-        good &= sign_check(
-            cx,
-            v,
-            true,
-            &format!("link `{name}`: {key} must be positive, for example `{key} = 0.5`"),
-        );
-        ok &= good;
-        good.then(|| v.value.clone())
-    };
-    let mass = positive(MASS);
-
-    // #[arm(inertia = 0.02)], #[arm(armature = 0.01)], #[arm(damping = 0.1)],
-    // #[arm(frictionloss = 0.2)]: not negative.
+    // #[arm(mass = 2)], #[arm(inertia = 0.02)], #[arm(armature = 0.01)],
+    // #[arm(damping = 0.1)], #[arm(frictionloss = 0.2)]: not negative. A massless link (a
+    // floating base's slides, which carry the bodies after them) is an arm like any other
+    // where the mass matrix stays definite, which `definite` checks.
     let mut non_negative = |key: &str, message: String| -> Option<Poly> {
         let v = a.get(key)?;
         let mut good = representable(cx, key, v);
@@ -326,6 +314,10 @@ fn check_link(cx: &Ctxt, link: &Link<'_>) -> Option<LinkSpec<Poly>> {
         ok &= good;
         good.then(|| v.value.clone())
     };
+    let mass = non_negative(
+        MASS,
+        format!("link `{name}`: mass cannot be negative, for example `mass = 0.5`"),
+    );
     // #[arm(length = 0)]: a point cart, or joints that share an axis point.
     let length = non_negative(
         LENGTH,
@@ -375,6 +367,15 @@ fn check_link(cx: &Ctxt, link: &Link<'_>) -> Option<LinkSpec<Poly>> {
         frictionloss: frictionloss.unwrap_or_default(),
         joint: link.joint,
         range,
+        offset: a
+            .offset
+            .clone()
+            .filter(|o| *o != FixedAngle::zero())
+            .map(|angle| {
+                let (cos, sin) = angle.cos_sin();
+                Offset { angle, cos, sin }
+            }),
+        reversed: a.reversed,
     })
 }
 
@@ -439,6 +440,15 @@ pub fn literal(spec: &ArmSpec<Poly>) -> Option<ArmSpec<Rational>> {
                     frictionloss: r(&l.frictionloss)?,
                     joint: l.joint,
                     range: l.range.clone(),
+                    offset: match &l.offset {
+                        None => None,
+                        Some(o) => Some(Offset {
+                            angle: o.angle.clone(),
+                            cos: r(&o.cos)?,
+                            sin: r(&o.sin)?,
+                        }),
+                    },
+                    reversed: l.reversed,
                 })
             })
             .collect::<Option<Vec<_>>>()?,

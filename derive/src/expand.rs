@@ -423,7 +423,7 @@ fn fallback(input: &DeriveInput) -> TokenStream {
                 svec(3),
                 result(quote!([::planar_arm::nalgebra::SVector<#F64, 3>; 2])),
             );
-            let wrench = result(quote!((::planar_arm::nalgebra::Vector2<#F64>, #F64)));
+            let wrench = result(quote!(::planar_arm::kinematics::StaticWrench<3>));
             tokens.extend(quote! {
                 #[automatically_derived]
                 #[allow(clippy::nursery)] // straight-line arithmetic: no mul_add, whose rounding differs (suboptimal_flops)

@@ -177,7 +177,10 @@ impl Workspace {
     /// The work-space of an arm with these links, base first (a derived arm's
     /// [`links`](crate::PlanarArm::links)): their lengths, joint kinds and ranges. See the type's
     /// docs for the arms it describes exactly; for revolute links without ranges it equals
-    /// [`of_lengths`](Self::of_lengths) of their lengths.
+    /// [`of_lengths`](Self::of_lengths) of their lengths, offsets and reversed joints
+    /// notwithstanding (every angle is reached either way). Otherwise an arm with a joint
+    /// offset or reversed ([`Link::offset`], [`Link::reversed`]) gets the bounding annulus
+    /// `0 ..= sum of the links' lengths and slides`.
     ///
     /// NaN and infinite lengths are skipped, and a range holding NaN or with `lower > upper`
     /// counts as no range ([`Model::check`](crate::Model::check) refuses both).
@@ -189,6 +192,27 @@ impl Workspace {
             return Self::annulus(inner, outer);
         }
         let length = |l: &Link| if l.length.is_finite() { l.length } else { 0.0 };
+        if links.iter().any(|l| l.offset != 0.0 || l.reversed) {
+            // The exact regions and the grouped bounds are written for plain joints (a slide
+            // continuing its link's line, ranges in the links' own angles): a turned or
+            // reversed joint gets the annulus of the triangle inequality alone.
+            let outer = links
+                .iter()
+                .map(|l| {
+                    let slide = match (l.joint, valid(l.range)) {
+                        (Joint::Revolute, _) => 0.0,
+                        (Joint::Prismatic, Some((lo, hi))) => lo.abs().max(hi.abs()),
+                        (Joint::Prismatic, None) => f64::INFINITY,
+                    };
+                    length(l).abs() + slide
+                })
+                .sum();
+            return Self {
+                inner: 0.0,
+                outer,
+                region: Region::Bounds,
+            };
+        }
         let region = match links {
             [a, b] if revolute(a) && !revolute(b) => Region::Polar {
                 l1: length(a),

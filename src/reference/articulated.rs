@@ -63,6 +63,15 @@ pub fn forward_dynamics<const N: usize>(
     qd: &SVector<f64, N>,
     tau: &SVector<f64, N>,
 ) -> SVector<f64, N> {
+    // A reversed joint is a plain one at -q_i (see `unreversed`).
+    if let Some((m, s)) = super::unreversed(model) {
+        return s.component_mul(&forward_dynamics(
+            &m,
+            &s.component_mul(q),
+            &s.component_mul(qd),
+            &s.component_mul(tau),
+        ));
+    }
     let links = &model.links;
     let dirs = link_directions(links, q);
 

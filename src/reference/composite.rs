@@ -4,7 +4,7 @@
 use nalgebra::{SMatrix, SVector, Vector2};
 
 use super::newton_euler::{friction, rnea_dirs};
-use super::{cross, in_world, last_direction, link_directions, perp, reaches, slides};
+use super::{cross, in_world, last_direction, link_directions, perp, slides, steps};
 use crate::Model;
 
 /// Composite rigid body algorithm on precomputed link directions.
@@ -15,7 +15,7 @@ fn crba_dirs<const N: usize>(
     q: &SVector<f64, N>,
 ) -> SMatrix<f64, N, N> {
     let links = &model.links;
-    let reach = reaches(links, q);
+    let step = steps(links, dirs, q);
     let mut m = SMatrix::<f64, N, N>::zeros();
     // Composite body of links j..N and the payload about link j's frame origin: mass, first
     // moment (world frame, relative to the origin) and rotational inertia. It starts as the
@@ -27,16 +27,16 @@ fn crba_dirs<const N: usize>(
     for j in (0..N).rev() {
         let link = &links[j];
         let u = dirs[j];
-        // Shift the composite beyond link j+1's origin from there to link j's (offset
-        // d = reach_j u_j), then add link j itself.
-        let d = u * reach[j];
-        rot += link.inertia_about_joint() + 2.0 * d.dot(&first) + mass * reach[j] * reach[j];
+        // Shift the composite beyond link j+1's origin from there to link j's (by
+        // d = o_{j+1} - o_j), then add link j itself.
+        let d = step[j];
+        rot += link.inertia_about_joint() + 2.0 * d.dot(&first) + mass * d.norm_squared();
         first += in_world(u, link.com) * link.mass + d * mass;
         mass += link.mass;
 
         // A unit rate of joint j gives the composite a momentum; joint i < j reads its moment
         // about link i's origin if revolute, its component along `u_i` if prismatic. The moment
-        // moves inwards by `(o_{i+1} - o_i) x p = reach_i (u_i x p)` link by link. The rotor
+        // moves inwards by `(o_{i+1} - o_i) x p` link by link. The rotor
         // (or the slider's reflected mass) moves with joint j alone: its armature is on the
         // diagonal only.
         if slides(link) {
@@ -45,7 +45,7 @@ fn crba_dirs<const N: usize>(
             let mut moment = cross(first, u);
             m[(j, j)] = mass + link.armature;
             for i in (0..j).rev() {
-                moment += reach[i] * mass * cross(dirs[i], u);
+                moment += mass * cross(step[i], u);
                 let mij = if slides(&links[i]) {
                     mass * dirs[i].dot(&u)
                 } else {
@@ -56,11 +56,11 @@ fn crba_dirs<const N: usize>(
             }
         } else {
             // A unit turn: angular momentum `rot`, linear `p = perp(first)`, so that
-            // `u_i x p = u_i . first` and `u_i . p = first x u_i`.
+            // `d x p = d . first` and `u_i . p = first x u_i`.
             let mut moment = rot;
             m[(j, j)] = rot + link.armature;
             for i in (0..j).rev() {
-                moment += reach[i] * dirs[i].dot(&first);
+                moment += step[i].dot(&first);
                 let mij = if slides(&links[i]) {
                     cross(first, dirs[i])
                 } else {
@@ -84,6 +84,10 @@ fn crba_dirs<const N: usize>(
 #[inline]
 #[must_use]
 pub fn mass_matrix<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) -> SMatrix<f64, N, N> {
+    // A reversed joint is a plain one at -q_i (see `unreversed`).
+    if let Some((m, s)) = super::unreversed(model) {
+        return mass_matrix(&m, &s.component_mul(q)).component_mul(&(s * s.transpose()));
+    }
     crba_dirs(model, &link_directions(&model.links, q), q)
 }
 
@@ -96,8 +100,12 @@ pub fn mass_matrix<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) -> SMa
 #[inline]
 #[must_use]
 pub fn gravity_torques<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) -> SVector<f64, N> {
+    // A reversed joint is a plain one at -q_i (see `unreversed`).
+    if let Some((m, s)) = super::unreversed(model) {
+        return s.component_mul(&gravity_torques(&m, &s.component_mul(q)));
+    }
     let dirs = link_directions(&model.links, q);
-    let reach = reaches(&model.links, q);
+    let step = steps(&model.links, &dirs, q);
     let payload = &model.payload;
     let mut tau = SVector::zeros();
     let mut mass = payload.mass;
@@ -106,7 +114,7 @@ pub fn gravity_torques<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) ->
     for i in (0..N).rev() {
         let link = &model.links[i];
         let u = dirs[i];
-        first += link.mass * in_world(u, link.com) + mass * reach[i] * u;
+        first += link.mass * in_world(u, link.com) + mass * step[i];
         mass += link.mass;
         tau[i] = if slides(link) {
             -mass * g.dot(&u)
@@ -130,6 +138,15 @@ pub fn forward_dynamics_crba<const N: usize>(
     qd: &SVector<f64, N>,
     tau: &SVector<f64, N>,
 ) -> SVector<f64, N> {
+    // A reversed joint is a plain one at -q_i (see `unreversed`).
+    if let Some((m, s)) = super::unreversed(model) {
+        return s.component_mul(&forward_dynamics_crba(
+            &m,
+            &s.component_mul(q),
+            &s.component_mul(qd),
+            &s.component_mul(tau),
+        ));
+    }
     let dirs = link_directions(&model.links, q);
     let m = crba_dirs(model, &dirs, q);
     let bias = rnea_dirs(model, model.gravity, &dirs, q, qd, &SVector::zeros());

@@ -17,6 +17,10 @@ pub fn kinetic_energy<const N: usize>(
     q: &SVector<f64, N>,
     qd: &SVector<f64, N>,
 ) -> f64 {
+    // A reversed joint is a plain one at -q_i (see `unreversed`).
+    if let Some((m, s)) = super::unreversed(model) {
+        return kinetic_energy(&m, &s.component_mul(q), &s.component_mul(qd));
+    }
     let dirs = link_directions(&model.links, q);
     let mut v_joint = Vector2::zeros();
     let mut omega = 0.0;
@@ -46,6 +50,10 @@ pub fn kinetic_energy<const N: usize>(
 #[inline]
 #[must_use]
 pub fn potential_energy<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) -> f64 {
+    // A reversed joint is a plain one at -q_i (see `unreversed`).
+    if let Some((m, s)) = super::unreversed(model) {
+        return potential_energy(&m, &s.component_mul(q));
+    }
     let dirs = link_directions(&model.links, q);
     let mut joint = Vector2::zeros();
     let mut moment = Vector2::zeros();

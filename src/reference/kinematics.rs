@@ -9,6 +9,10 @@ use crate::Model;
 #[inline]
 #[must_use]
 pub fn tip_position<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) -> Point2<f64> {
+    // A reversed joint is a plain one at -q_i (see `unreversed`).
+    if let Some((m, s)) = super::unreversed(model) {
+        return tip_position(&m, &s.component_mul(q));
+    }
     let dirs = link_directions(&model.links, q);
     let mut tip = Point2::origin();
     for ((link, dir), &qi) in model.links.iter().zip(dirs.iter()).zip(q.iter()) {
@@ -39,8 +43,9 @@ pub fn tip_angle<const N: usize>(q: &SVector<f64, N>) -> f64 {
 pub fn tip_orientation<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) -> f64 {
     let mut phi = 0.0;
     for (link, &qi) in model.links.iter().zip(q.iter()) {
+        phi += link.offset;
         if !slides(link) {
-            phi += qi;
+            phi += if link.reversed { -qi } else { qi };
         }
     }
     phi
@@ -52,6 +57,10 @@ pub fn tip_orientation<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) ->
 #[inline]
 #[must_use]
 pub fn joint_positions<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) -> [Point2<f64>; N] {
+    // A reversed joint is a plain one at -q_i (see `unreversed`).
+    if let Some((m, s)) = super::unreversed(model) {
+        return joint_positions(&m, &s.component_mul(q));
+    }
     let dirs = link_directions(&model.links, q);
     let mut joints = [Point2::origin(); N];
     let mut p = Point2::origin();
@@ -79,6 +88,10 @@ pub fn joint_positions<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) ->
 #[inline]
 #[must_use]
 pub fn jacobian<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) -> SMatrix<f64, 3, N> {
+    // A reversed joint is a plain one at -q_i (see `unreversed`).
+    if let Some((m, s)) = super::unreversed(model) {
+        return jacobian(&m, &s.component_mul(q)) * SMatrix::from_diagonal(&s);
+    }
     let dirs = link_directions(&model.links, q);
     let mut jac = SMatrix::<f64, 3, N>::zeros();
     // Walk inwards accumulating the vector from link j's frame origin to the tip.

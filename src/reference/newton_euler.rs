@@ -4,8 +4,8 @@
 use nalgebra::{SVector, Vector2};
 
 use super::{
-    absolute_angles, cross, directions_from, in_world, last_direction, link_directions, perp,
-    reaches, sign, slides,
+    absolute_angles, cross, directions_from, in_world, last_direction, link_directions, perp, sign,
+    slides, steps,
 };
 use crate::Model;
 
@@ -58,15 +58,15 @@ pub(super) fn rnea_dirs<const N: usize>(
     let r = in_world(last_direction(dirs), payload.com);
     let mut force = (a_joint + perp(r) * omega_dot - r * (omega * omega)) * payload.mass;
     let mut moment = payload.inertia * omega_dot + cross(r, force);
-    let reach = reaches(links, q);
+    let step = steps(links, dirs, q);
     let mut tau = SVector::zeros();
     for i in (0..N).rev() {
         let link = &links[i];
         let u = dirs[i];
         let f_com = a_com[i] * link.mass;
         // Euler's equation about the origin (a point with its own acceleration, hence the COM
-        // term); the wrench beyond acts at `o_{i+1} = o_i + reach_i u`.
-        moment += link.inertia * alpha[i] + cross(r_com[i], f_com) + reach[i] * cross(u, force);
+        // term); the wrench beyond acts at `o_{i+1}`.
+        moment += link.inertia * alpha[i] + cross(r_com[i], f_com) + cross(step[i], force);
         force += f_com;
         // A revolute joint carries the moment, a prismatic one the force along its axis; the
         // constraint takes the rest. The rotor's (or the slider's reflected) inertia acts on
@@ -94,6 +94,15 @@ pub fn inverse_dynamics<const N: usize>(
     qd: &SVector<f64, N>,
     qdd: &SVector<f64, N>,
 ) -> SVector<f64, N> {
+    // A reversed joint is a plain one at -q_i (see `unreversed`).
+    if let Some((m, s)) = super::unreversed(model) {
+        return s.component_mul(&inverse_dynamics(
+            &m,
+            &s.component_mul(q),
+            &s.component_mul(qd),
+            &s.component_mul(qdd),
+        ));
+    }
     let dirs = link_directions(&model.links, q);
     rnea_dirs(model, model.gravity, &dirs, q, qd, qdd) + friction(model, qd)
 }
@@ -112,6 +121,15 @@ pub fn inverse_dynamics_batched_trig<const N: usize>(
     qd: &SVector<f64, N>,
     qdd: &SVector<f64, N>,
 ) -> SVector<f64, N> {
+    // A reversed joint is a plain one at -q_i (see `unreversed`).
+    if let Some((m, s)) = super::unreversed(model) {
+        return s.component_mul(&inverse_dynamics_batched_trig(
+            &m,
+            &s.component_mul(q),
+            &s.component_mul(qd),
+            &s.component_mul(qdd),
+        ));
+    }
     let sin_cos = crate::trig::sin_cos(absolute_angles(&model.links, q));
     let dirs = directions_from(&model.links, &sin_cos);
     rnea_dirs(model, model.gravity, &dirs, q, qd, qdd) + friction(model, qd)
@@ -127,6 +145,10 @@ pub fn bias_forces<const N: usize>(
     q: &SVector<f64, N>,
     qd: &SVector<f64, N>,
 ) -> SVector<f64, N> {
+    // A reversed joint is a plain one at -q_i (see `unreversed`).
+    if let Some((m, s)) = super::unreversed(model) {
+        return s.component_mul(&bias_forces(&m, &s.component_mul(q), &s.component_mul(qd)));
+    }
     let dirs = link_directions(&model.links, q);
     rnea_dirs(model, model.gravity, &dirs, q, qd, &SVector::zeros()) + friction(model, qd)
 }
@@ -140,6 +162,10 @@ pub fn coriolis<const N: usize>(
     q: &SVector<f64, N>,
     qd: &SVector<f64, N>,
 ) -> SVector<f64, N> {
+    // A reversed joint is a plain one at -q_i (see `unreversed`).
+    if let Some((m, s)) = super::unreversed(model) {
+        return s.component_mul(&coriolis(&m, &s.component_mul(q), &s.component_mul(qd)));
+    }
     let dirs = link_directions(&model.links, q);
     rnea_dirs(model, Vector2::zeros(), &dirs, q, qd, &SVector::zeros())
 }

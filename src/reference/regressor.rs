@@ -9,7 +9,7 @@ use nalgebra::{SMatrix, SVector, Vector2, Vector4};
 #[cfg(not(feature = "std"))]
 use num_traits::Float as _;
 
-use super::{cross, link_directions, perp, reaches, sign, slides};
+use super::{cross, link_directions, perp, sign, slides};
 use crate::{Link, Model, Payload};
 
 /// The regressor of the standard parameters at one state, in blocks.
@@ -42,6 +42,17 @@ pub struct Regressor<const N: usize> {
 }
 
 impl<const N: usize> Regressor<N> {
+    /// The regressor of a plain model at `s q` as that of the model with joints reversed where
+    /// `s` is `-1`: each row times `s`, the joints' own columns at the model's `qd`, `qdd`.
+    fn sensed(self, s: &SVector<f64, N>, qd: &SVector<f64, N>, qdd: &SVector<f64, N>) -> Self {
+        let rows = SMatrix::<f64, N, N>::from_diagonal(s);
+        Self {
+            links: self.links.map(|b| rows * b),
+            payload: rows * self.payload,
+            ..Self::with_joint_columns(qd, qdd)
+        }
+    }
+
     /// The joints' own columns at these rates and accelerations, the bodies' still zero.
     fn with_joint_columns(qd: &SVector<f64, N>, qdd: &SVector<f64, N>) -> Self {
         Self {
@@ -145,6 +156,16 @@ pub fn regressor<const N: usize>(
     qd: &SVector<f64, N>,
     qdd: &SVector<f64, N>,
 ) -> Regressor<N> {
+    // A reversed joint is a plain one at -q_i (see `unreversed`).
+    if let Some((m, s)) = super::unreversed(model) {
+        return regressor(
+            &m,
+            &s.component_mul(q),
+            &s.component_mul(qd),
+            &s.component_mul(qdd),
+        )
+        .sensed(&s, qd, qdd);
+    }
     let dirs = link_directions(&model.links, q);
     let mut joints = [Axis::About(Vector2::zeros()); N];
     let mut out = Regressor::with_joint_columns(qd, qdd);
@@ -196,11 +217,39 @@ pub fn regressor_local<const N: usize>(
     qd: &SVector<f64, N>,
     qdd: &SVector<f64, N>,
 ) -> Regressor<N> {
+    // A reversed joint is a plain one at -q_i (see `unreversed`).
+    if let Some((m, s)) = super::unreversed(model) {
+        return regressor_local(
+            &m,
+            &s.component_mul(q),
+            &s.component_mul(qd),
+            &s.component_mul(qdd),
+        )
+        .sensed(&s, qd, qdd);
+    }
     let links = &model.links;
-    // The rotation of each revolute joint; a prismatic joint's frame keeps the previous one's.
-    let rot: [Option<(f64, f64)>; N] =
-        core::array::from_fn(|i| (!slides(&links[i])).then(|| q[i].sin_cos()));
-    let reach = reaches(links, q);
+    // The rotation of each joint's frame from the previous one's: a revolute joint's angle and
+    // offset; a prismatic joint's offset, if any (without, its frame keeps the previous one's).
+    let rot: [Option<(f64, f64)>; N] = core::array::from_fn(|i| {
+        let l = &links[i];
+        match (slides(l), l.offset != 0.0) {
+            (false, _) => Some((q[i] + l.offset).sin_cos()),
+            (true, true) => Some(l.offset.sin_cos()),
+            (true, false) => None,
+        }
+    });
+    // Link i+1's origin in link i's frame: its length along x, then the next joint's slide
+    // along that joint's axis.
+    let step: [Vector2<f64>; N] = core::array::from_fn(|i| {
+        let along = Vector2::new(links[i].length, 0.0);
+        match (links.get(i + 1), q.get(i + 1)) {
+            (Some(next), Some(&slide)) if slides(next) => {
+                let (s, c) = next.offset.sin_cos();
+                along + Vector2::new(c, s) * slide
+            }
+            _ => along,
+        }
+    });
     let mut out = Regressor::with_joint_columns(qd, qdd);
     // The acceleration of the end of link j-1 (the base's origin for j = 0) in its frame, then
     // of link j's origin in link j's frame.
@@ -209,6 +258,8 @@ pub fn regressor_local<const N: usize>(
     for j in 0..N {
         if let Some((s, c)) = rot[j] {
             a = Vector2::new(c * a.x + s * a.y, c * a.y - s * a.x);
+        }
+        if !slides(&links[j]) {
             omega += qd[j];
             alpha += qdd[j];
         } else {
@@ -229,16 +280,16 @@ pub fn regressor_local<const N: usize>(
         let read = |i: usize| usize::from(slides(&links[i]));
         out.links[j].set_row(j, &body.row(read(j)));
         for i in (0..j).rev() {
-            // Into the frame of link i: rotate by joint i+1's angle (if it turns), shift the
-            // moment from link i+1's origin to link i's (offset reach_i along x).
-            let l = reach[i];
+            // Into the frame of link i: rotate by joint i+1's turn (if it turns), shift the
+            // moment from link i+1's origin to link i's (by `step_i`).
+            let d = step[i];
             for k in 0..4 {
                 let (fx, fy) = (body[(1, k)], body[(2, k)]);
                 let (gx, gy) = match rot[i + 1] {
                     Some((s, c)) => (c * fx - s * fy, s * fx + c * fy),
                     None => (fx, fy),
                 };
-                body[(0, k)] += l * gy;
+                body[(0, k)] += d.x * gy - d.y * gx;
                 body[(1, k)] = gx;
                 body[(2, k)] = gy;
             }

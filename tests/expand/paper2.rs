@@ -463,6 +463,8 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
                     frictionloss: 0.0,
                     joint: ::planar_arm::Joint::Revolute,
                     range: ::core::option::Option::None,
+                    offset: 0.0,
+                    reversed: false,
                 },
                 ::planar_arm::Link {
                     length: 1.0,
@@ -474,6 +476,8 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
                     frictionloss: 0.0,
                     joint: ::planar_arm::Joint::Revolute,
                     range: ::core::option::Option::None,
+                    offset: 0.0,
+                    reversed: false,
                 },
             ],
             gravity: ::planar_arm::nalgebra::Vector2::new(0.0, (-(981.0 / 100.0))),

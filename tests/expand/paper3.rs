@@ -773,6 +773,8 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     frictionloss: 0.0,
                     joint: ::planar_arm::Joint::Revolute,
                     range: ::core::option::Option::None,
+                    offset: 0.0,
+                    reversed: false,
                 },
                 ::planar_arm::Link {
                     length: 1.0,
@@ -784,6 +786,8 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     frictionloss: 0.0,
                     joint: ::planar_arm::Joint::Revolute,
                     range: ::core::option::Option::None,
+                    offset: 0.0,
+                    reversed: false,
                 },
                 ::planar_arm::Link {
                     length: 1.0,
@@ -795,6 +799,8 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     frictionloss: 0.0,
                     joint: ::planar_arm::Joint::Revolute,
                     range: ::core::option::Option::None,
+                    offset: 0.0,
+                    reversed: false,
                 },
             ],
             gravity: ::planar_arm::nalgebra::Vector2::new(0.0, (-(981.0 / 100.0))),

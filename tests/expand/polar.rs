@@ -432,6 +432,8 @@ impl ::planar_arm::PlanarArm<2> for Polar {
                     frictionloss: 0.0,
                     joint: ::planar_arm::Joint::Revolute,
                     range: ::core::option::Option::None,
+                    offset: 0.0,
+                    reversed: false,
                 },
                 ::planar_arm::Link {
                     length: (1.0 / 2.0),
@@ -443,6 +445,8 @@ impl ::planar_arm::PlanarArm<2> for Polar {
                     frictionloss: 0.0,
                     joint: ::planar_arm::Joint::Prismatic,
                     range: ::core::option::Option::Some((0.0, (3.0 / 5.0))),
+                    offset: 0.0,
+                    reversed: false,
                 },
             ],
             gravity: ::planar_arm::nalgebra::Vector2::new(0.0, (-(981.0 / 100.0))),

@@ -2,7 +2,9 @@
 //! branches, within the joints' ranges) and inverse statics, as impls of the `kinematics`
 //! traits that call the run-time solvers with the arm's constant lengths inlined. Arms with a
 //! prismatic joint get the polar (RP), slider-link (PR) and slider-two-link (PRR) solvers and
-//! their statics by the generated Jacobian.
+//! their statics by the generated Jacobian; arms with offsets or reversed joints get the
+//! statics by the Jacobian and no closed-form inverse kinematics (the paper's solutions are
+//! written for plain joints).
 
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
@@ -32,7 +34,7 @@ pub fn closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
         .collect();
     let target = local("target");
     let (q, tau) = (local("q"), local("tau"));
-    if !d.arm.all_revolute() {
+    if !d.arm.all_revolute() || !d.arm.plain() {
         return mixed_closed_forms(d, header);
     }
     let ranged = d.arm.links.iter().any(|l| l.range.is_some());
@@ -176,6 +178,7 @@ fn mixed_closed_forms<C: Emit>(d: &Derived<C>, header: &Header) -> TokenStream {
     let ranges = range_tokens(d);
     let kinds: Vec<JointKind> = d.arm.links.iter().map(|l| l.joint).collect();
     let ik = match (kinds.as_slice(), lengths.as_slice(), ranges.as_slice()) {
+        _ if !d.arm.plain() => TokenStream::new(),
         ([JointKind::Revolute, JointKind::Prismatic], [l1, l2], [r1, r2]) => ik_impl(
             header,
             2,

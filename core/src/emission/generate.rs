@@ -175,6 +175,12 @@ pub fn summary<C: Emit>(d: &Derived<C>) -> String {
             l.damping,
             l.frictionloss
         );
+        if let Some(o) = &l.offset {
+            let _ = writeln!(s, "  offset {}", o.angle);
+        }
+        if l.reversed {
+            let _ = writeln!(s, "  reversed");
+        }
     }
     let _ = writeln!(s, "gravity {} {}", d.arm.gravity.0, d.arm.gravity.1);
     s

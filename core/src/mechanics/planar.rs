@@ -21,4 +21,4 @@ pub use bodies::{standard_bodies, Body};
 pub use dynamics::Dynamics;
 pub use kinematics::Kinematics;
 pub use rates::RateProducts;
-pub use spec::{down, ArmSpec, JointKind, LinkSpec, PayloadSpec};
+pub use spec::{down, ArmSpec, JointKind, LinkSpec, Offset, PayloadSpec};

@@ -3,6 +3,7 @@
 
 use super::{Derived, Method};
 use crate::programs::method::two;
+use crate::programs::unrolled::turn;
 use crate::slp::{Emit, Input, Program};
 
 impl<C: Emit> Derived<C> {
@@ -13,7 +14,8 @@ impl<C: Emit> Derived<C> {
         let (x, y) = &self.kinematics.points[self.n()];
         let x = p.expr(x);
         let y = p.expr(y);
-        let (c, s) = p.trig_pair(&self.kinematics.tip_angle);
+        let angle = p.trig_pair(&self.kinematics.tip_angle);
+        let (c, s) = turn(&mut p, angle, &self.kinematics.tip_turn);
         Method::new(
             p,
             vec![

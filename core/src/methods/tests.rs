@@ -26,6 +26,8 @@ fn arm(n: usize) -> ArmSpec {
                 frictionloss: ratio(k(i % 2), 3),
                 joint: JointKind::Revolute,
                 range: None,
+                offset: None,
+                reversed: false,
             })
             .collect(),
         gravity: crate::down(ratio(981, 100)),

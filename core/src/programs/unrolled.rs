@@ -51,6 +51,17 @@ fn joint_trig(p: &mut Program, j: usize) -> V2 {
     p.trig_pair(&Angle::range(j, j + 1))
 }
 
+/// `(cos, sin)` of `angle + o`, from those of `angle` and `turn = (cos o, sin o)`: folds to
+/// `angle`'s own nodes when `o = 0`.
+pub(crate) fn turn<C: Emit>(p: &mut Program, angle: (Id, Id), turn: &(C, C)) -> (Id, Id) {
+    let (c, s) = angle;
+    let (tc, ts) = (p.coefficient(&turn.0), p.coefficient(&turn.1));
+    let (a, b) = (p.mul(c, tc), p.mul(s, ts));
+    let cos = p.sub(a, b);
+    let (a, b) = (p.mul(s, tc), p.mul(c, ts));
+    (cos, p.add(a, b))
+}
+
 /// `R(q) v`: a vector of link `j`'s frame in link `j - 1`'s frame (`cs = (cos q_j, sin q_j)`).
 fn rotate(p: &mut Program, cs: V2, v: V2) -> V2 {
     let (c, s) = cs;
@@ -209,25 +220,47 @@ fn newton_euler_of<C: Emit>(
         (zero, zero)
     };
     let prismatic = |i: usize| arm.links[i].joint == JointKind::Prismatic;
+    // A reversed joint's coordinate enters negated.
+    let sensed = |p: &mut Program, i: usize, x: Id| {
+        if arm.links[i].reversed {
+            p.neg(x)
+        } else {
+            x
+        }
+    };
+    // The constant turn of joint `i`'s frame from the previous link's, if any.
+    let offset = |p: &mut Program, i: usize| {
+        arm.links[i]
+            .offset
+            .as_ref()
+            .map(|o| (p.coefficient(&o.cos), p.coefficient(&o.sin)))
+    };
     // Acceleration of the current joint in the previous link's frame.
     let mut end: V2 = (gx, gy);
     let (mut w, mut al) = (zero, zero);
-    // A revolute joint's rotation; `None` for a prismatic joint, which does not turn.
+    // The rotation from the previous link's frame; `None` for a prismatic joint without an
+    // offset, whose frame does not turn.
     let mut trig: Vec<Option<V2>> = Vec::with_capacity(n);
     let mut force = Vec::with_capacity(n);
     let mut alpha = Vec::with_capacity(n);
     let mut accel = Vec::with_capacity(n);
     for (i, (link, body)) in arm.links.iter().zip(bodies).enumerate() {
         let (cs, a) = if prismatic(i) {
-            // The joint slides along the previous link's axis, which turns at w: its origin
-            // accelerates by (qdd - q w^2, 2 qd w + q al) there, in a frame of the same
-            // orientation.
+            // The joint slides along its frame's x (the previous link's axis turned by the
+            // offset), which turns at w: its origin accelerates by (qdd - q w^2, 2 qd w + q al)
+            // there.
+            let cs = offset(p, i);
             let q = p.input(Input::Q(i));
-            let mut a = end;
+            let q = sensed(p, i, q);
+            let mut a = match cs {
+                Some(cs) => rotate_back(p, cs, end),
+                None => end,
+            };
             if terms.rates {
                 let w2 = p.mul(w, w);
                 let qw2 = p.mul(q, w2);
                 let qd = p.input(Input::Qd(i));
+                let qd = sensed(p, i, qd);
                 let qdw = p.mul(qd, w);
                 let two = p.constant(Rational::from_integer(2.into()));
                 let coriolis = p.mul(two, qdw);
@@ -235,19 +268,29 @@ fn newton_euler_of<C: Emit>(
             }
             if terms.accelerations {
                 let qal = p.mul(q, al);
-                a = (p.add(a.0, qdd[i]), p.add(a.1, qal));
+                let qdd = sensed(p, i, qdd[i]);
+                a = (p.add(a.0, qdd), p.add(a.1, qal));
             }
-            (None, a)
+            (cs, a)
         } else {
-            let cs = joint_trig(p, i);
+            let mut cs = if link.reversed {
+                p.trig_pair(&Angle::new((0..=i).map(|k| -i32::from(k == i)).collect()))
+            } else {
+                joint_trig(p, i)
+            };
+            if let Some(o) = &link.offset {
+                cs = turn(p, cs, &(o.cos.clone(), o.sin.clone()));
+            }
             let a = rotate_back(p, cs, end);
             if terms.rates {
                 let qd = p.input(Input::Qd(i));
+                let qd = sensed(p, i, qd);
                 w = p.add(w, qd);
                 p.set_name(w, format!("w{}", i + 1));
             }
             if terms.accelerations {
-                al = p.add(al, qdd[i]);
+                let qdd = sensed(p, i, qdd[i]);
+                al = p.add(al, qdd);
                 p.set_name(al, format!("al{}", i + 1));
             }
             (Some(cs), a)
@@ -303,12 +346,26 @@ fn newton_euler_of<C: Emit>(
                 None => child,
             };
             let mut l = p.coefficient(&link.length);
+            let mut across = None;
             if prismatic(i + 1) {
+                // Slid by q along the child's axis: (cos o, sin o) in this frame.
                 let q = p.input(Input::Q(i + 1));
-                l = p.add(l, q);
+                let q = sensed(p, i + 1, q);
+                match offset(p, i + 1) {
+                    None => l = p.add(l, q),
+                    Some((c, s)) => {
+                        let along = p.mul(q, c);
+                        l = p.add(l, along);
+                        across = Some(p.mul(q, s));
+                    }
+                }
             }
             let lever = p.mul(l, r.1);
             here = p.add(here, lever);
+            if let Some(y) = across {
+                let lever = p.mul(y, r.0);
+                here = p.sub(here, lever);
+            }
             f = (p.add(f.0, r.0), p.add(f.1, r.1));
         }
         p.set_name(f.0, format!("fx{}", i + 1));
@@ -316,6 +373,7 @@ fn newton_euler_of<C: Emit>(
         moment = p.add(moment, here);
         // A revolute joint carries the moment about it, a prismatic one the force along it.
         tau[i] = if prismatic(i) { f.0 } else { moment };
+        tau[i] = sensed(p, i, tau[i]);
         if terms.accelerations {
             // The rotor turns with the joint's own rate: its torque is not transmitted inwards.
             let armature = match armature {
@@ -335,7 +393,7 @@ fn newton_euler_of<C: Emit>(
 /// rotational inertia about joint `j` (`M_jj`, plus the joint's armature);
 /// `M_ij = M_(i+1)j + l_i (h in link i's frame).x`.
 pub(crate) fn composite_mass_matrix<C: Emit>(p: &mut Program, arm: &ArmSpec<C>) -> Vec<Vec<Id>> {
-    if !arm.all_revolute() {
+    if !arm.all_revolute() || !arm.plain() {
         return unit_acceleration_mass_matrix(p, arm);
     }
     let n = arm.links.len();

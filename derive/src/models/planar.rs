@@ -1,18 +1,19 @@
-//! A model file's chain as a planar arm: every hinge about one axis `n` (the plane's normal),
-//! every slide in the plane, and at `q = 0` the joints in a line, the plane's `x`, so that each
-//! link starts where the one before it ends and points the same way (the planar derive's
-//! convention: a link's length along its own `x`, a slide along the link before it).
+//! A model file's chain as a planar arm: every hinge about one axis `n` or its opposite (the
+//! plane's normal; a hinge about `-n` is `reversed`), every slide in the plane.
 //!
-//! The plane's frame: its origin at the first joint, `x` from the first joint toward the next
-//! (or along the first slide, or toward the tip), `y = n x x`. Offsets along `n` do not change a
-//! planar motion and are dropped; so is gravity's part along `n`, which does no work. What the
-//! planar derive cannot say yet (a joint turning the other way, a link bent at `q = 0`, a
-//! spring) is an error naming the joint.
+//! The plane's frame: its origin at the first joint, `x` along it if it slides, else from it
+//! toward the next joint (or along a slide, or toward the tip), `y = n x x`. Each link's own `x` at `q = 0`
+//! points toward the next joint (or the tool; a slide's along the slide), and its joint's
+//! `offset` is the turn from the previous link's `x` (a quarter turn exactly when the file's
+//! axes are aligned). Offsets along `n` do not change a planar motion and are dropped; so is
+//! gravity's part along `n`, which does no work. What the planar derive cannot say yet (a
+//! spring, a slide whose next joint lies off its line) is an error naming the joint.
 
 use num_traits::{Signed, Zero};
 use planar_arm_core::ring::{int, to_f64, Rational};
+use planar_arm_core::spatial::FixedAngle;
 use planar_arm_core::Poly;
-use planar_arm_core::{JointKind, LinkSpec};
+use planar_arm_core::{JointKind, LinkSpec, Offset};
 
 use super::chain::Chain;
 use super::frame::{decimal, Pose, Vec3};
@@ -72,6 +73,23 @@ pub struct Planar {
     pub notes: Vec<String>,
 }
 
+/// The angle from `a` to `b` (unit vectors of the plane with normal `n`), counter-clockwise
+/// about `n`; `None` when it is zero. A multiple of `pi/2` to rounding is that multiple
+/// exactly, so that axis-aligned models stay exact.
+fn offset_between(a: &Vec3, b: &Vec3, n: &Vec3) -> Option<FixedAngle> {
+    let (c, s) = (f(&dot(a, b)), f(&dot(&cross(a, b), n)));
+    let angle = s.atan2(c);
+    let quarters = (angle / core::f64::consts::FRAC_PI_2).round();
+    if (angle - quarters * core::f64::consts::FRAC_PI_2).abs() <= 1e-12 {
+        let k = quarters as i64;
+        return (k != 0).then(|| FixedAngle::pi(Rational::new(k.into(), 2.into())));
+    }
+    Some(FixedAngle {
+        radians: decimal(angle),
+        pi_multiple: int(0),
+    })
+}
+
 fn show(v: &Vec3) -> String {
     let parts: Vec<String> = v.iter().map(|x| format!("{}", f(x))).collect();
     format!("({})", parts.join(", "))
@@ -121,14 +139,6 @@ pub fn planar(chain: &Chain, file: &str, g: Option<&Vec3>) -> Result<Planar, Fil
                     ),
                 ));
             }
-            if dot(a, &n).is_negative() {
-                return Err(fail(
-                    name(i),
-                    "it turns the other way from the first hinge (about -n), which the planar \
-                     derive's `reversed` will say; read the file with #[derive(SpatialArm)] for now"
-                        .to_string(),
-                ));
-            }
         } else if !small(&dot(a, &n), scale) {
             return Err(fail(
                 name(i),
@@ -151,8 +161,12 @@ pub fn planar(chain: &Chain, file: &str, g: Option<&Vec3>) -> Result<Planar, Fil
         .chain(core::iter::once(&tool.xyz))
         .map(norm)
         .fold(1e-3_f64, f64::max);
-    let direction = (1..anchors.len())
-        .map(|i| in_plane(&sub(&anchors[i], &anchors[i - 1])))
+    // The plane's x: the first link's own, so that the first joint has no offset (a first
+    // slide's axis), else the first step between joints, any slide, the step to the tool.
+    let first_slide = (!hinge(0)).then(|| in_plane(&axes[0]));
+    let direction = first_slide
+        .into_iter()
+        .chain((1..anchors.len()).map(|i| in_plane(&sub(&anchors[i], &anchors[i - 1]))))
         .chain(
             (0..axes.len())
                 .filter(|&i| !hinge(i))
@@ -174,35 +188,41 @@ pub fn planar(chain: &Chain, file: &str, g: Option<&Vec3>) -> Result<Planar, Fil
         }
     };
     let y = cross(&n, &x);
+    // Each link's x at q = 0: toward the next joint (or the tool), along the slide for a
+    // slide, else the previous link's; its joint's offset the turn from the previous link's.
+    let mut before = x.clone();
+    let mut turned = Vec::new();
     let mut links = Vec::new();
     for (i, j) in chain.joints.iter().enumerate() {
         let end = anchors.get(i + 1).unwrap_or(&tool.xyz);
-        let step = sub(end, &anchors[i]);
-        if !small(&dot(&step, &y), size) {
-            return Err(fail(
-                name(i),
-                format!(
-                    "its link is bent at q = 0 (the next joint is {} off the line of the joints), \
-                     which the planar derive's `offset` will say; read the file with \
-                     #[derive(SpatialArm)] for now",
-                    f(&dot(&step, &y))
-                ),
-            ));
-        }
-        if !hinge(i) {
-            let a = &axes[i];
-            if !negligible(&cross(a, &x), norm(a)) || dot(a, &x).is_negative() {
+        let step = in_plane(&sub(end, &anchors[i]));
+        let u = if hinge(i) {
+            if negligible(&step, size) {
+                before.clone()
+            } else {
+                unit(&step)
+            }
+        } else {
+            let a = unit(&in_plane(&axes[i]));
+            if !negligible(&cross(&step, &a), size) {
                 return Err(fail(
                     name(i),
                     format!(
-                        "the slide {} is not along the link before it, {}, which the planar \
-                         derive's `offset` will say",
-                        show(a),
-                        show(&x)
+                        "the next joint is {} off the slide's line {}: a planar link's next \
+                         joint lies along its slide",
+                        norm(&cross(&step, &a)),
+                        show(&a)
                     ),
                 ));
             }
+            a
+        };
+        let v = cross(&n, &u);
+        let offset = offset_between(&before, &u, &n);
+        if let Some(o) = &offset {
+            turned.push(format!("`{}` by {o}", name(i)));
         }
+        let reversed = hinge(i) && dot(&axes[i], &n).is_negative();
         if !j.joint.stiffness.is_zero() {
             return Err(fail(
                 name(i),
@@ -227,24 +247,47 @@ pub fn planar(chain: &Chain, file: &str, g: Option<&Vec3>) -> Result<Planar, Fil
             .map(|(a, b)| &n[a] * &tensor[a][b] * &n[b])
             .sum();
         links.push(LinkSpec {
-            length: Poly::constant(dot(&step, &x)),
+            length: Poly::constant(dot(&step, &u)),
             mass: Poly::constant(body.mass.clone()),
             inertia: Poly::constant(about_n),
-            com: (Poly::constant(dot(&c, &x)), Poly::constant(dot(&c, &y))),
+            com: (Poly::constant(dot(&c, &u)), Poly::constant(dot(&c, &v))),
             armature: Poly::constant(j.joint.armature.clone()),
             damping: Poly::constant(j.joint.damping.clone()),
             frictionloss: Poly::constant(j.joint.frictionloss.clone()),
             joint: j.joint.kind,
             range: j.joint.range.clone(),
+            offset: offset.map(|angle| {
+                let (cos, sin) = angle.cos_sin();
+                Offset { angle, cos, sin }
+            }),
+            reversed,
         });
+        before = u;
     }
     let mut notes = vec![format!(
-        "Read as a planar arm in the plane through the first joint with normal {} (the hinges' \
-         axis), x along {} (the line of the joints at q = 0) and y = n x x: a joint's angle is \
-         its qpos, its link's length the distance to the next joint along x.",
+        "Read as a planar arm in the plane through the first joint with normal {} (the first \
+         hinge's axis), x along {} and y = n x x: a joint's angle is its qpos, each link's x \
+         points toward the next joint at qpos = 0 (a slide's along the slide), its length the \
+         distance to it.",
         show(&n),
         show(&x)
     )];
+    if !turned.is_empty() {
+        notes.push(format!(
+            "Joints whose link turns from the previous one's at qpos = 0 (`offset`): {}.",
+            turned.join(", ")
+        ));
+    }
+    let reversed: Vec<&str> = (0..links.len())
+        .filter(|&i| links[i].reversed)
+        .map(name)
+        .collect();
+    if !reversed.is_empty() {
+        notes.push(format!(
+            "Hinges about -n, `reversed`: {}.",
+            reversed.join(", ")
+        ));
+    }
     let zero = || Poly::constant(int(0));
     let Some(g) = g else {
         return Ok(Planar {

@@ -1,6 +1,6 @@
 //! `#[derive(SpatialArm)]`: parse, check, expand, as for planar arms.
 
-mod angle;
+pub(crate) mod angle;
 mod ast;
 mod attr;
 mod check;

@@ -136,15 +136,19 @@ fn cross_check<const N: usize>(rng: &mut Rng, model: &Model<N>, worst: &mut Wors
         "merged V",
     );
 
-    // Joint 1 at the origin, or slid along +x; the last link runs from the last joint to the
-    // tip along the tip orientation, which is the tip angle when no joint slides.
+    // Joint 1 at the origin, or slid along +x turned by its offset; the last link runs from
+    // the last joint to the tip along the tip orientation, which is the tip angle when no
+    // joint slides and none is turned.
     let joints = joint_positions(model, &q);
-    let first = if slides(&model.links[0]) {
-        Point2::new(q[0], 0.0)
+    let l0 = &model.links[0];
+    let first = if slides(l0) {
+        let (s, c) = l0.offset.sin_cos();
+        let q0 = if l0.reversed { -q[0] } else { q[0] };
+        Point2::new(c * q0, s * q0)
     } else {
         Point2::origin()
     };
-    assert_eq!(joints[0], first);
+    worst.close(&joints[0].coords, &first.coords, 1e-15, "joint 1");
     let last_link = tip_position(model, &q) - joints[N - 1];
     let (s, c) = tip_orientation(model, &q).sin_cos();
     worst.close(
@@ -153,9 +157,90 @@ fn cross_check<const N: usize>(rng: &mut Rng, model: &Model<N>, worst: &mut Wors
         1e-12,
         "last link",
     );
-    if !model.links.iter().any(slides) {
+    if !model
+        .links
+        .iter()
+        .any(|l| slides(l) || l.offset != 0.0 || l.reversed)
+    {
         assert_eq!(tip_orientation(model, &q), tip_angle(&q));
     }
+}
+
+/// The arm as a spatial arm in the plane (`to_spatial`: offsets as turns about z, reversed
+/// joints about -z or along -x): the spatial reference's Newton-Euler recursion, composite
+/// bodies, gravity and kinematics, which share no code with the planar ones.
+fn spatial_check<const N: usize>(rng: &mut Rng, model: &Model<N>, worst: &mut Worst) {
+    use crate::reference::spatial as sp;
+    let spatial = model.to_spatial();
+    let q = rng.configuration(model, std::f64::consts::PI);
+    let (qd, qdd) = (rng.vector::<N>(3.0), rng.vector::<N>(5.0));
+    let tol = 1e-10;
+    worst.close(
+        &mass_matrix(model, &q),
+        &sp::mass_matrix(&spatial, &q),
+        tol,
+        "M vs spatial",
+    );
+    worst.close(
+        &inverse_dynamics(model, &q, &qd, &qdd),
+        &sp::inverse_dynamics(&spatial, &q, &qd, &qdd),
+        tol,
+        "tau vs spatial",
+    );
+    worst.close(
+        &gravity_torques(model, &q),
+        &sp::gravity(&spatial, &q),
+        tol,
+        "g vs spatial",
+    );
+    let tip = sp::tip_pose(&spatial, &q);
+    worst.close(
+        &tip_position(model, &q).coords,
+        &tip.translation.vector.xy(),
+        tol,
+        "tip vs spatial",
+    );
+    let (s, c) = tip_orientation(model, &q).sin_cos();
+    let x = tip.rotation * Vector3::x();
+    worst.close(&V2::new(c, s), &x.xy(), tol, "tip orientation vs spatial");
+}
+
+/// [`Rng::model`] with every joint's kind, offset (none a third of the time) and sense
+/// random, and gravity in any direction.
+fn turned_model<const N: usize>(rng: &mut Rng) -> Model<N> {
+    let mut model: Model<N> = rng.mixed_model();
+    for link in &mut model.links {
+        link.offset = if rng.uniform(0.0, 1.0) < 0.33 {
+            0.0
+        } else {
+            rng.uniform(-3.2, 3.2)
+        };
+        link.reversed = rng.uniform(0.0, 1.0) < 0.4;
+    }
+    let g = V2::new(rng.uniform(-10.0, 10.0), rng.uniform(-10.0, 10.0));
+    model.with_gravity(g)
+}
+
+#[test]
+fn turned_and_reversed_joints_cross_check_n1_to_n8() {
+    fn one<const N: usize>(rng: &mut Rng, worst: &mut Worst) {
+        let model = turned_model::<N>(rng);
+        cross_check(rng, &model, worst);
+        spatial_check(rng, &model, worst);
+    }
+    let mut rng = Rng(29);
+    let mut worst = Worst::default();
+    for _ in 0..100 {
+        one::<1>(&mut rng, &mut worst);
+        one::<2>(&mut rng, &mut worst);
+        one::<3>(&mut rng, &mut worst);
+        one::<4>(&mut rng, &mut worst);
+        one::<5>(&mut rng, &mut worst);
+        one::<6>(&mut rng, &mut worst);
+        one::<7>(&mut rng, &mut worst);
+        one::<8>(&mut rng, &mut worst);
+    }
+    worst.print("turned_and_reversed_joints_cross_check_n1_to_n8");
 }
 
 /// One random arm of `N` links, all revolute or of mixed joints, for [`cross_check`].

@@ -60,6 +60,8 @@ impl Rng {
                 frictionloss: self.often(|r| r.uniform(0.0, 1.0)),
                 joint: Joint::Revolute,
                 range: None,
+                offset: 0.0,
+                reversed: false,
             }
         })
     }

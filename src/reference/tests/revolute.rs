@@ -16,6 +16,8 @@ fn pendulum_by_hand() {
         frictionloss: 0.4,
         joint: crate::Joint::Revolute,
         range: None,
+        offset: 0.0,
+        reversed: false,
     };
     let model = Model::new([link], 9.81);
     let (cx, cy) = (0.55, -0.2);

@@ -4,7 +4,7 @@
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
-use crate::emit::{coefficient_tokens, f64_tokens, local, EmitError};
+use crate::emit::{coefficient_tokens, f64_tokens, f64_value_tokens, local, EmitError};
 use crate::expr::Expr;
 use crate::mechanics::JointKind;
 use crate::methods::Derived;
@@ -86,10 +86,12 @@ pub(super) fn model<C: Emit>(d: &Derived<C>) -> Result<TokenStream, EmitError> {
                     quote!(::core::option::Option::Some((#lo, #hi)))
                 }
             };
+            let offset = f64_value_tokens(l.offset.as_ref().map_or(0.0, |o| o.angle.value()))?;
+            let reversed = l.reversed;
             Ok(quote!(::planar_arm::Link {
                 length: #length, mass: #mass, inertia: #inertia, com: #com,
                 armature: #armature, damping: #damping, frictionloss: #frictionloss,
-                joint: #joint, range: #range,
+                joint: #joint, range: #range, offset: #offset, reversed: #reversed,
             }))
         })
         .collect::<Result<Vec<_>, EmitError>>()?;

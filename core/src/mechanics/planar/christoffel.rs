@@ -38,7 +38,7 @@ pub fn expanded<C: Coefficient>(m: &[Vec<Expr<C>>]) -> Vec<Vec<Expr<C>>> {
 }
 
 /// `D_ab = dMt_ab/dphi_b` for `a > b` (`D[a][b]`, the strict lower triangle; `D_ba = -D_ab`),
-/// or `None` unless every joint is revolute.
+/// or `None` unless every joint is revolute and plain ([`ArmSpec::plain`]).
 ///
 /// `Mt_ab = M_ab - M_(a+1)b - M_a(b+1) + M_(a+1)(b+1)` (entries past the last joint are
 /// zero) inverts `M_ij = sum_(a >= i, b >= j) Mt_ab`. For `a > b`, `Mt_ab` depends on the
@@ -49,7 +49,7 @@ pub fn absolute_derivatives<C: Coefficient>(
     arm: &ArmSpec<C>,
     m: &[Vec<Expr<C>>],
 ) -> Option<Vec<Vec<Expr<C>>>> {
-    if !arm.all_revolute() {
+    if !arm.all_revolute() || !arm.plain() {
         return None;
     }
     let n = m.len();

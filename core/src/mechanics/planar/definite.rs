@@ -98,12 +98,20 @@ pub fn generic_mass_matrix(arm: &ArmSpec<Rational>) -> Vec<Vec<Rational>> {
     let mut bodies = Vec::with_capacity(n + 1);
     for (k, link) in arm.links.iter().enumerate() {
         let (c, s, d) = &config[k];
+        // The previous link's end, then this joint's offset turns the frame.
+        origin = origin.add(&V(direction.0.clone(), direction.1.clone()).scale(&previous));
+        if let Some(o) = &link.offset {
+            direction = (
+                &o.cos * &direction.0 - &o.sin * &direction.1,
+                &o.sin * &direction.0 + &o.cos * &direction.1,
+            );
+        }
+        // A reversed joint's unit rate turns (slides) the other way: its Jacobian column
+        // changes sign, which leaves M's pivots unchanged; the generic values stay as they are.
         let along = V(direction.0.clone(), direction.1.clone());
-        let advance = match link.joint {
-            JointKind::Revolute => previous.clone(),
-            JointKind::Prismatic => &previous + d,
-        };
-        origin = origin.add(&along.scale(&advance));
+        if link.joint == JointKind::Prismatic {
+            origin = origin.add(&along.scale(d));
+        }
         axes.push((link.joint, origin.clone(), along));
         if link.joint == JointKind::Revolute {
             direction = (

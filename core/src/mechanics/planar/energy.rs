@@ -19,7 +19,7 @@ pub(super) fn potential_energy<C: Coefficient>(arm: &ArmSpec<C>, bodies: &[Body<
     for body in bodies {
         let i = body.link;
         let (x_joint, y_joint) = point_on_link(arm, i, &(zero.clone(), zero.clone()));
-        let (mx, my) = &body.first_moment;
+        let (mx, my) = &arm.turned(i, &body.first_moment);
         let angle = link_angle(arm, i);
         if !gy.is_zero() {
             let y = y_joint
@@ -49,7 +49,7 @@ pub(super) fn kinetic_energy<C: Coefficient>(
     bodies: &[Body<C>],
     rates: &mut RateProducts<C>,
 ) -> Expr<C> {
-    if !arm.all_revolute() {
+    if !arm.all_revolute() || !arm.plain() {
         return kinetic_energy_of_velocities(arm, bodies);
     }
     let n = arm.links.len();
@@ -84,7 +84,7 @@ pub(super) fn kinetic_energy<C: Coefficient>(
 /// position), for any mix of joints: `m |v|^2 / 2 + omega v . perp(R h) + J omega^2 / 2` per
 /// body, with `h` its first moment and `J` its inertia about the frame origin, so it stays
 /// linear in the standard parameters; plus the rotors. The pairwise form of the revolute arms
-/// rests on every link length being constant.
+/// rests on every link length being constant and every joint plain ([`ArmSpec::plain`]).
 pub(super) fn kinetic_energy_of_velocities<C: Coefficient>(
     arm: &ArmSpec<C>,
     bodies: &[Body<C>],
@@ -101,7 +101,12 @@ pub(super) fn kinetic_energy_of_velocities<C: Coefficient>(
         let mut omega = Expr::zero();
         for (j, link) in arm.links.iter().enumerate().take(i + 1) {
             if link.joint == JointKind::Revolute {
-                omega.add_assign(&Expr::var(rate(j)));
+                let w = Expr::var(rate(j));
+                if link.reversed {
+                    omega.sub_assign(&w);
+                } else {
+                    omega.add_assign(&w);
+                }
             }
         }
         let angle = link_angle(arm, i);
@@ -115,7 +120,8 @@ pub(super) fn kinetic_energy_of_velocities<C: Coefficient>(
             let v2 = vx.mul(&vx).add(&vy.mul(&vy));
             kinetic.add_assign(&v2.scale_by(&body.mass).scale(&half));
         }
-        let (hx, hy) = &body.first_moment;
+        // The first moment turned by the link's offsets, at the angle its joints' `q` give.
+        let (hx, hy) = &arm.turned(i, &body.first_moment);
         // v . perp(R h) = hx v . perp(u) - hy v . u
         if !hx.is_zero() {
             let across = vy.mul(&cu).sub(&vx.mul(&su));

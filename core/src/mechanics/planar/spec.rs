@@ -1,6 +1,7 @@
 //! The planar arm as the derive reads it: links and their joints, gravity, a payload, with
 //! exact values or polynomials in run-time parameters.
 
+use crate::mechanics::spatial::FixedAngle;
 use crate::poly::{Param, Poly};
 use crate::ring::{int, ratio, Coefficient, Rational};
 
@@ -10,9 +11,23 @@ pub enum JointKind {
     /// A hinge: `q_i` is the link's angle relative to the previous link.
     #[default]
     Revolute,
-    /// A slider along the previous link's direction (for the first link, +x of the base):
-    /// `q_i` is the displacement; the link does not turn.
+    /// A slider along the previous link's direction (for the first link, +x of the base),
+    /// turned by the joint's offset: `q_i` is the displacement; the link does not turn with
+    /// `q_i`.
     Prismatic,
+}
+
+/// A joint's constant turn: a hinge's link angle at `q_i = 0` relative to the previous link,
+/// or the direction a slide moves in relative to the previous link (its frame turns with it).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Offset<C = Rational> {
+    /// The angle.
+    pub angle: FixedAngle,
+    /// Its cosine: exact at the quarter turns (and the rational values of `pi/3`, `pi/6`),
+    /// a named constant otherwise.
+    pub cos: C,
+    /// Its sine, likewise.
+    pub sin: C,
 }
 
 /// One link and its joint: exact parameters (or polynomials in run-time parameters).
@@ -38,6 +53,12 @@ pub struct LinkSpec<C = Rational> {
     pub joint: JointKind,
     /// The joint's range `(lower, upper)`, if given: kinematics only, never the dynamics.
     pub range: Option<(Rational, Rational)>,
+    /// The joint's offset (`None`: zero), see [`Offset`].
+    pub offset: Option<Offset<C>>,
+    /// Whether the joint turns (slides) the other way: the link's angle (the slide's
+    /// displacement) is `-q_i`, and its generalised force is the torque (force) along `-z`
+    /// (`-x` of its frame).
+    pub reversed: bool,
 }
 
 impl<C: Coefficient> LinkSpec<C> {
@@ -56,6 +77,8 @@ impl<C: Coefficient> LinkSpec<C> {
             frictionloss: zero,
             joint: JointKind::Revolute,
             range: None,
+            offset: None,
+            reversed: false,
         }
     }
 }
@@ -102,6 +125,46 @@ impl ArmSpec<Rational> {
     }
 }
 
+impl<C: Coefficient> ArmSpec<C> {
+    /// `1` or `-1`: the sense joint `i` turns (slides) in.
+    #[must_use]
+    pub fn sense(&self, i: usize) -> i32 {
+        if self.links[i].reversed {
+            -1
+        } else {
+            1
+        }
+    }
+
+    /// `(cos, sin)` of the offsets of joints `0..=i` together: link `i`'s frame turned from
+    /// the angle its joints' `q` give it.
+    #[must_use]
+    pub fn turn(&self, i: usize) -> (C, C) {
+        let mut t = (C::from_rational(int(1)), C::from_rational(int(0)));
+        for o in self.links[..=i].iter().filter_map(|l| l.offset.as_ref()) {
+            t = (
+                t.0.clone() * o.cos.clone() - t.1.clone() * o.sin.clone(),
+                t.1 * o.cos.clone() + t.0 * o.sin.clone(),
+            );
+        }
+        t
+    }
+
+    /// `v`, given in link `i`'s frame, in the frame whose angle is the one link `i`'s joints'
+    /// `q` give (`R(turn) v`).
+    #[must_use]
+    pub fn turned(&self, i: usize, v: &(C, C)) -> (C, C) {
+        if self.links[..=i].iter().all(|l| l.offset.is_none()) {
+            return v.clone();
+        }
+        let (c, s) = self.turn(i);
+        (
+            c.clone() * v.0.clone() - s.clone() * v.1.clone(),
+            s * v.0.clone() + c * v.1.clone(),
+        )
+    }
+}
+
 impl ArmSpec<Rational> {
     /// The same arm with every value a run-time parameter, named `v0, v1, ...` in the order
     /// link by link (length, mass, inertia, com x, com y, armature, damping, frictionloss),
@@ -139,6 +202,12 @@ impl<C> ArmSpec<C> {
                 frictionloss: f(&l.frictionloss),
                 joint: l.joint,
                 range: l.range.clone(),
+                offset: l.offset.as_ref().map(|o| Offset {
+                    angle: o.angle.clone(),
+                    cos: f(&o.cos),
+                    sin: f(&o.sin),
+                }),
+                reversed: l.reversed,
             })
             .collect();
         let gravity = (f(&self.gravity.0), f(&self.gravity.1));
@@ -162,6 +231,13 @@ impl<C> ArmSpec<C> {
         C: Coefficient,
     {
         self.gravity.0.is_zero().then(|| -self.gravity.1.clone())
+    }
+
+    /// Whether every joint turns (slides) the standard way with no offset: the convention the
+    /// pairwise metric, the composite bodies and the closed forms are written in.
+    #[must_use]
+    pub fn plain(&self) -> bool {
+        self.links.iter().all(|l| l.offset.is_none() && !l.reversed)
     }
 
     /// Whether every joint is revolute (the paper's arms).

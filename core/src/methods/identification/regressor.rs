@@ -19,7 +19,7 @@ use std::collections::BTreeMap;
 use num_traits::{One, Zero};
 
 use crate::expr::{Expr, Monomial};
-use crate::mechanics::{ArmSpec, Body, Dynamics, JointKind, LinkSpec, RateProducts};
+use crate::mechanics::{ArmSpec, Body, Dynamics, LinkSpec, RateProducts};
 use crate::poly::{Param, ParamMonomial, Poly};
 use crate::ring::{Coefficient, Rational};
 use crate::slp::Emit;
@@ -479,49 +479,52 @@ pub fn base_parameters_from_energies(
     arm: &ArmSpec<Poly>,
 ) -> Option<(Vec<Standard>, BaseParameters<Poly>)> {
     let (parameters, _, _) = symbolic(arm);
-    // The geometry over the rationals when its lengths and gravity are numbers: the common
-    // case, and several times faster than over polynomials.
-    let rational = arm
-        .links
-        .iter()
-        .map(|l| l.length.as_rational())
-        .collect::<Option<Vec<_>>>()
-        .zip(arm.gravity.0.as_rational().zip(arm.gravity.1.as_rational()));
-    let joints: Vec<JointKind> = arm.links.iter().map(|l| l.joint).collect();
-    let base = match rational {
-        Some((lengths, gravity)) => {
-            energy_elimination(&lengths, &joints, gravity, &parameters)?.into_poly()
-        }
-        None => {
-            let lengths: Vec<Poly> = arm.links.iter().map(|l| l.length.clone()).collect();
-            energy_elimination(&lengths, &joints, arm.gravity.clone(), &parameters)?
-        }
+    // The geometry (lengths, joints, offsets, gravity) carrying unit rods: its energies with
+    // one body at a time are the columns. Over the rationals when its values are numbers: the
+    // common case, and several times faster than over polynomials.
+    let geometry = ArmSpec {
+        links: arm
+            .links
+            .iter()
+            .map(|l| LinkSpec {
+                length: l.length.clone(),
+                joint: l.joint,
+                offset: l.offset.clone(),
+                reversed: l.reversed,
+                ..LinkSpec::rod(
+                    Poly::constant(Rational::one()),
+                    Poly::constant(Rational::one()),
+                )
+            })
+            .collect(),
+        gravity: arm.gravity.clone(),
+        payload: None,
+    };
+    let rational = geometry.map(Poly::as_rational);
+    let numbers = rational.links.iter().all(|l| {
+        l.length.is_some()
+            && l.offset
+                .as_ref()
+                .is_none_or(|o| o.cos.is_some() && o.sin.is_some())
+    }) && rational.gravity.0.is_some()
+        && rational.gravity.1.is_some();
+    let base = if numbers {
+        let geometry = rational.map(|c| c.clone().unwrap_or_default());
+        energy_elimination(geometry, &parameters)?.into_poly()
+    } else {
+        energy_elimination(geometry, &parameters)?
     };
     Some((parameters, base))
 }
 
-/// [`base_parameters_from_energies`] for an arm of these lengths and gravity.
+/// [`base_parameters_from_energies`] for an arm of this geometry (unit rods on its lengths,
+/// joints, offsets and gravity).
 fn energy_elimination<C: Emit>(
-    lengths: &[C],
-    joints: &[JointKind],
-    gravity: (C, C),
+    geometry: ArmSpec<C>,
     parameters: &[Standard],
 ) -> Option<BaseParameters<C>> {
-    let n = lengths.len();
+    let n = geometry.links.len();
     let num = |r: Rational| C::from_rational(r);
-    let geometry = ArmSpec {
-        links: lengths
-            .iter()
-            .zip(joints)
-            .map(|(l, &joint)| LinkSpec {
-                length: l.clone(),
-                joint,
-                ..LinkSpec::rod(num(Rational::one()), num(Rational::one()))
-            })
-            .collect(),
-        gravity,
-        payload: None,
-    };
     // Each column of L = T - V directly: the energies of the geometry carrying one body whose
     // parameters are all zero but that one (or one rotor).
     let mut vectors = Vec::new();
@@ -529,13 +532,13 @@ fn energy_elimination<C: Emit>(
     let mut rates = RateProducts::<C>::new();
     // A unit mass on link i: the energies of a point at joint i, the sum over the links
     // before it of S_a = 1/2 l_a^2 w_a^2 + sum_(b < a) l_a l_b cos(theta_a - theta_b) w_a w_b
-    // plus g . (l_a cos(theta_a), l_a sin(theta_a)). Built as prefix sums: each unit-mass energy from scratch cost
-    // the derive of a 30-link arm half a minute.
+    // plus g . (l_a cos(theta_a), l_a sin(theta_a)). Built as prefix sums: each unit-mass
+    // energy from scratch cost the derive of a 30-link arm half a minute.
     let mut mass_columns: Vec<Expr<C>> = vec![Expr::zero()];
     let half = Rational::new(1.into(), 2.into());
-    // With prismatic joints the lengths vary: each unit mass's energies come from the general
-    // route below instead.
-    let revolute = geometry.all_revolute();
+    // With prismatic joints the lengths vary, and offsets and reversed joints change the
+    // angles: each unit mass's energies come from the general route below instead.
+    let revolute = geometry.all_revolute() && geometry.plain();
     for a in (0..n).filter(|_| revolute) {
         let la = &geometry.links[a].length;
         let mut step = rates

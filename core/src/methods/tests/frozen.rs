@@ -26,6 +26,8 @@ fn arm(n: usize) -> ArmSpec<Poly> {
                 frictionloss: Poly::constant(ratio(0, 1)),
                 joint: JointKind::Revolute,
                 range: None,
+                offset: None,
+                reversed: false,
             })
             .collect(),
         gravity: crate::down(Poly::constant(ratio(981, 100))),
