@@ -264,6 +264,8 @@ fn spec<const N: usize>(model: &Model<N>) -> ArmSpec {
                 armature: exact(l.armature),
                 damping: exact(l.damping),
                 frictionloss: exact(l.frictionloss),
+                stiffness: exact(l.stiffness),
+                springref: exact(l.springref),
                 joint: match l.joint {
                     Joint::Revolute => JointKind::Revolute,
                     Joint::Prismatic => JointKind::Prismatic,

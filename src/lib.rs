@@ -106,7 +106,9 @@
 //!   travel, radians or metres: the work-spaces and inverse kinematics respect it, the
 //!   dynamics never clamp to it. `offset = a` turns the joint: a hinge's link stands at angle
 //!   `a` to the previous link at `q = 0`, a slide moves at angle `a` to it (and its frame turns
-//!   with it); `reversed` makes the joint turn clockwise (slide backwards). A link's `mass`
+//!   with it); `reversed` makes the joint turn clockwise (slide backwards);
+//!   `stiffness = K, springref = R` is a joint spring of energy `K (q_i - R)^2 / 2`, part of
+//!   the potential (so of `gravity` and `bias`), as MuJoCo's. A link's `mass`
 //!   may be 0 where later links keep the mass matrix definite (a floating base's slides).
 //! - Values are exact: integers, decimals (`0.35` is `7/20`, not an `f64`), fractions `a/b`
 //!   and `+ - * /` with parentheses. Nothing passes through a float before the final emission.

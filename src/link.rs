@@ -94,6 +94,13 @@ pub struct Link {
     /// generalised force is the torque (force) in that sense: a hinge about `-z` among `+z`
     /// ones, as model files have them.
     pub reversed: bool,
+    /// MuJoCo's `stiffness`: a joint spring pulling toward [`springref`](Self::springref)
+    /// with the torque `stiffness (q_i - springref)`, N m/rad (N/m for a slide). Its energy
+    /// `stiffness (q_i - springref)^2 / 2` is part of the potential energy, so the torque is
+    /// part of `gravity` (`g = dV/dq`), `bias` and the equations of motion.
+    pub stiffness: f64,
+    /// MuJoCo's `springref`: the joint value at which the spring is slack, rad or m.
+    pub springref: f64,
 }
 
 impl Link {
@@ -113,6 +120,18 @@ impl Link {
             range: None,
             offset: 0.0,
             reversed: false,
+            stiffness: 0.0,
+            springref: 0.0,
+        }
+    }
+
+    /// The same link with a joint spring of this stiffness, slack at `springref`.
+    #[must_use]
+    pub const fn with_spring(self, stiffness: f64, springref: f64) -> Self {
+        Self {
+            stiffness,
+            springref,
+            ..self
         }
     }
 

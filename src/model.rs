@@ -158,8 +158,8 @@ impl<const N: usize> Model<N> {
                 armature: l.armature,
                 damping: l.damping,
                 frictionloss: l.frictionloss,
-                stiffness: 0.0,
-                springref: 0.0,
+                stiffness: l.stiffness,
+                springref: l.springref,
             }
         });
         let p = &self.payload;
@@ -208,7 +208,7 @@ impl<const N: usize> Model<N> {
     }
 
     /// Checks that the model is physical and its dynamics defined: every value finite, masses,
-    /// lengths, inertias, armatures, damping, frictionloss, the payload's mass and inertia not
+    /// lengths, inertias, armatures, damping, frictionloss, stiffness, the payload's mass and inertia not
     /// negative (a massless link is fine where later links carry its joint's load), a joint range finite with `lower < upper`, and the mass
     /// matrix positive definite (at a generic configuration its `L D L^T` pivots exceed
     /// [`RELATIVE_PIVOT`] times their diagonal entries, which are normal `f64`s: no joint that
@@ -245,9 +245,11 @@ impl<const N: usize> Model<N> {
                 ("damping", l.damping, false),
                 ("frictionloss", l.frictionloss, false),
                 ("offset", l.offset, false),
+                ("stiffness", l.stiffness, false),
+                ("springref", l.springref, false),
             ];
             for (what, value, positive) in values {
-                let signed = matches!(what, "com.x" | "com.y" | "offset");
+                let signed = matches!(what, "com.x" | "com.y" | "offset" | "springref");
                 if !value.is_finite()
                     || (positive && value <= 0.0)
                     || (!signed && !positive && value < 0.0)

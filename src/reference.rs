@@ -97,7 +97,7 @@ pub use composite::{forward_dynamics_crba, gravity_torques, mass_matrix};
 pub use energy::{kinetic_energy, potential_energy};
 pub use kinematics::{jacobian, joint_positions, tip_angle, tip_orientation, tip_position};
 pub use newton_euler::{
-    bias_forces, coriolis, friction, inverse_dynamics, inverse_dynamics_batched_trig,
+    bias_forces, coriolis, friction, inverse_dynamics, inverse_dynamics_batched_trig, springs,
 };
 pub use regressor::{link_parameters, payload_parameters, regressor, regressor_local, Regressor};
 
@@ -143,6 +143,10 @@ fn unreversed<const N: usize>(model: &Model<N>) -> Option<(Model<N>, SVector<f64
     let mut plain = *model;
     let s = SVector::from_fn(|i, _| if model.links[i].reversed { -1.0 } else { 1.0 });
     for l in &mut plain.links {
+        if l.reversed {
+            // Its spring is slack where the plain joint is at -springref.
+            l.springref = -l.springref;
+        }
         l.reversed = false;
     }
     Some((plain, s))

@@ -1,8 +1,8 @@
 //! The engine's straight-line programs (what the derive renders as Rust) against the numeric
 //! reference (recursive Newton-Euler, composite rigid body, articulated body), for arms of 1
 //! to 8 links with random rational parameters, random joint kinds (about a third prismatic),
-//! joint offsets (quarter turns, and angles with rational cosine and sine) and reversed
-//! joints, gravity in any direction, and random states.
+//! joint offsets (quarter turns, and angles with rational cosine and sine), reversed joints
+//! and joint springs, gravity in any direction, and random states.
 
 use planar_arm::nalgebra::{SVector, Vector2};
 use planar_arm::reference;
@@ -29,12 +29,13 @@ fn link() -> impl Strategy<Value = LinkSpec> {
         (0i64..=4, 0i64..=4, 0i64..=4), // armature, damping, frictionloss in tenths
         proptest::bool::weighted(0.35),
         (0usize..12, proptest::bool::weighted(0.3)),
+        (-6i64..=6, -10i64..=10), // spring stiffness (none below 1), springref in tenths
     )
-        .prop_filter("positive length and mass", |(l, m, _, _, _, _, _)| {
+        .prop_filter("positive length and mass", |(l, m, _, _, _, _, _, _)| {
             l.0 > 0 && m.0 > 0
         })
         .prop_map(
-            |(l, m, i, (c, cd, cy), (a, b, f), prismatic, (turn, reversed))| {
+            |(l, m, i, (c, cd, cy), (a, b, f), prismatic, (turn, reversed), (k, r))| {
                 let length = ratio(l.0, l.1);
                 LinkSpec {
                     // com may lie past either end of the link (a counterweight), and off its axis
@@ -46,6 +47,8 @@ fn link() -> impl Strategy<Value = LinkSpec> {
                     armature: ratio(a, 10),
                     damping: ratio(b, 10),
                     frictionloss: ratio(f, 10),
+                    stiffness: ratio(k.max(0), 1),
+                    springref: ratio(r, 10),
                     joint: if prismatic {
                         JointKind::Prismatic
                     } else {
@@ -111,6 +114,8 @@ fn numeric<const N: usize>(spec: &ArmSpec) -> Model<N> {
             com: pair(&l.com),
             armature: f(&l.armature),
             damping: f(&l.damping),
+            stiffness: f(&l.stiffness),
+            springref: f(&l.springref),
             frictionloss: f(&l.frictionloss),
             joint: match l.joint {
                 JointKind::Revolute => planar_arm::Joint::Revolute,

@@ -108,6 +108,8 @@ fn random_arm(rng: &mut Rng, n: usize) -> ArmSpec {
             armature: ratio(r(0, 3), 10),
             damping: ratio(0, 1),
             frictionloss: ratio(0, 1),
+            stiffness: Default::default(),
+            springref: Default::default(),
             // About a third prismatic: their displacements are the third kind of variable.
             joint: if r(0, 2) == 0 {
                 JointKind::Prismatic

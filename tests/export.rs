@@ -8,7 +8,7 @@ mod export_arms;
 #[path = "../examples/support/puma_arm.rs"]
 mod puma_arm;
 
-use export_arms::{DhArm, MdhArm, OriginArm, PlanarExact, PlanarMix};
+use export_arms::{DhArm, MdhArm, OriginArm, PlanarExact, PlanarMix, PlanarTurned};
 use planar_arm::prelude::*;
 use puma_arm::Puma560;
 
@@ -44,6 +44,7 @@ fn exports_are_the_checked_in_files() {
     same_as_checked_in("planar_mix.xml", &PlanarMix::default().to_mjcf());
     same_as_checked_in("planar_mix.urdf", &PlanarMix::default().to_urdf());
     same_as_checked_in("planar_exact.xml", &PlanarExact::default().to_mjcf());
+    same_as_checked_in("planar_turned.xml", &PlanarTurned::default().to_mjcf());
 }
 
 #[test]

@@ -7,7 +7,7 @@
 #[path = "common/export_arms.rs"]
 mod export_arms;
 
-use export_arms::{DhArm, MdhArm, OriginArm, PlanarMix};
+use export_arms::{DhArm, MdhArm, OriginArm, PlanarMix, PlanarTurned};
 use planar_arm::nalgebra::SVector;
 use planar_arm::prelude::*;
 
@@ -39,6 +39,16 @@ struct PlanarMjcfBack;
 #[derive(SpatialArm)]
 #[arm(urdf = "tests/data/export/planar_mix.urdf", tip = "tool", gravity = (0, -9.81, 0))]
 struct PlanarUrdfBack;
+
+/// A planar arm with an offset slide, a reversed hinge, springs and tilted gravity, back as a
+/// planar arm and as a spatial one.
+#[derive(PlanarArm)]
+#[arm(mjcf = "tests/data/export/planar_turned.xml", tip = "tool")]
+struct PlanarTurnedBack;
+
+#[derive(SpatialArm)]
+#[arm(mjcf = "tests/data/export/planar_turned.xml", tip = "tool")]
+struct PlanarTurnedSpatialBack;
 
 #[derive(SpatialArm)]
 #[arm(mjcf = "tests/data/export/ur5.xml", tip = "tool")]
@@ -153,6 +163,26 @@ fn planar_exports_read_back_as_spatial_arms_of_the_same_dynamics() {
             ours.as_slice(),
             back.inverse_dynamics(&q, &qd, &qdd).as_slice(),
             "planar via urdf",
+        );
+    }
+}
+
+#[test]
+fn turned_planar_exports_read_back_as_planar_and_spatial_arms() {
+    let arm = PlanarTurned::default();
+    same_planar(
+        &arm,
+        &PlanarTurnedSpatialBack,
+        "turned planar via mjcf, spatial",
+    );
+    assert_eq!(PlanarTurned::JOINT_NAMES, PlanarTurnedBack::JOINT_NAMES);
+    same_dynamics(&arm, &PlanarTurnedBack, "turned planar via mjcf, planar");
+    for [q, ..] in states::<3>() {
+        let (a, b) = (arm.tip_pose(&q), PlanarTurnedBack.tip_pose(&q));
+        close(
+            a.translation.vector.as_slice(),
+            b.translation.vector.as_slice(),
+            "turned planar tip",
         );
     }
 }

@@ -335,6 +335,8 @@ fn random_model<const N: usize>(rng: &mut Rng) -> planar_arm::Model<N> {
         armature: rng.range(0.0, 0.1),
         damping: rng.range(0.0, 0.5),
         frictionloss: rng.range(0.0, 0.5),
+        stiffness: 0.0,
+        springref: 0.0,
         joint: planar_arm::Joint::Revolute,
         range: None,
         offset: 0.0,

@@ -239,7 +239,7 @@ fn industrial_urdfs_match_pinocchio() {
 
 #[test]
 fn exported_files_load_in_mujoco_and_pinocchio_as_the_arms_that_wrote_them() {
-    use export_arms::{DhArm, MdhArm, OriginArm, PlanarExact, PlanarMix};
+    use export_arms::{DhArm, MdhArm, OriginArm, PlanarExact, PlanarMix, PlanarTurned};
     let worst = [
         check(EXPORTS, &DhArm::default(), DhArm::JOINT_NAMES, "dh_arm.xml"),
         check(
@@ -275,6 +275,13 @@ fn exported_files_load_in_mujoco_and_pinocchio_as_the_arms_that_wrote_them() {
             PlanarExact::JOINT_NAMES,
             "planar_exact.xml",
         ),
+        // Offsets as turned bodies, a hinge about -z, springs and gravity off -y.
+        check(
+            EXPORTS,
+            &PlanarTurned::default(),
+            PlanarTurned::JOINT_NAMES,
+            "planar_turned.xml",
+        ),
     ];
     eprintln!("worst relative difference of the exports: {worst:?}");
     // The DH arm's URDF has no armature: Pinocchio's M misses exactly the 0.05 of `fore`.
@@ -295,22 +302,27 @@ fn exported_files_load_in_mujoco_and_pinocchio_as_the_arms_that_wrote_them() {
 #[arm(mjcf = "tests/data/springs.xml")]
 struct Springs;
 
+/// The same kind of arm in a plane (`tests/data/planar_springs.xml`): a hinge about -y among
+/// +y ones (reversed), a slide across the link before it (an offset), an anchored hinge.
+#[derive(PlanarArm)]
+#[arm(mjcf = "tests/data/planar_springs.xml")]
+struct PlanarSprings;
+
 /// MuJoCo puts the springs in `qfrc_passive`; here they are part of the potential, so
 /// `gravity` and `bias` hold them: `bias = qfrc_bias - qfrc_passive` (damping included), and
 /// the inverse dynamics is `mj_inverse`'s. The potential energy's derivative is the static
 /// torque, springs and all (central differences).
-#[test]
-fn joint_springs_match_mujoco() {
-    let text = include_str!("data/springs_peers.txt");
+fn springs_against_mujoco<A: Dynamics<3>>(arm: &A, names: [&str; 3], text: &str) -> f64 {
     let mut lines: Vec<(&str, Vec<f64>)> = Vec::new();
     for line in text.lines().filter(|l| !l.starts_with('#')) {
         let (key, rest) = line.split_once(' ').unwrap();
         if key == "joints" {
-            assert_eq!(rest.split(' ').collect::<Vec<_>>(), Springs::JOINT_NAMES);
+            assert_eq!(rest.split(' ').collect::<Vec<_>>(), names);
             continue;
         }
         lines.push((key, rest.split(' ').map(|x| x.parse().unwrap()).collect()));
     }
+    assert_eq!(lines.len(), 21, "three states of seven lines");
     let mut worst = 0.0_f64;
     for state in lines.chunks(7) {
         let v = |k: usize| SVector::<f64, 3>::from_column_slice(&state[k].1);
@@ -320,17 +332,17 @@ fn joint_springs_match_mujoco() {
         for (what, ours, theirs) in [
             (
                 "M",
-                Springs.mass_matrix(&q).as_slice().to_vec(),
+                arm.mass_matrix(&q).as_slice().to_vec(),
                 m.as_slice().to_vec(),
             ),
             (
                 "bias",
-                Springs.bias(&q, &qd).as_slice().to_vec(),
+                arm.bias(&q, &qd).as_slice().to_vec(),
                 (bias - passive).as_slice().to_vec(),
             ),
             (
                 "tau",
-                Springs.inverse_dynamics(&q, &qd, &qdd).as_slice().to_vec(),
+                arm.inverse_dynamics(&q, &qd, &qdd).as_slice().to_vec(),
                 tau.as_slice().to_vec(),
             ),
         ] {
@@ -344,15 +356,30 @@ fn joint_springs_match_mujoco() {
         let h = 1e-6;
         for i in 0..3 {
             let step = SVector::<f64, 3>::from_fn(|k, _| if k == i { h } else { 0.0 });
-            let dv = (Springs.potential_energy(&(q + step))
-                - Springs.potential_energy(&(q - step)))
-                / (2.0 * h);
-            let g = Springs.gravity(&q)[i];
+            let dv =
+                (arm.potential_energy(&(q + step)) - arm.potential_energy(&(q - step))) / (2.0 * h);
+            let g = arm.gravity(&q)[i];
             assert!(
                 (dv - g).abs() < 1e-6 * g.abs().max(1.0),
                 "dV/dq{i} {dv} against g {g}"
             );
         }
     }
-    eprintln!("springs against MuJoCo: {worst:e}");
+    worst
+}
+
+#[test]
+fn joint_springs_match_mujoco() {
+    let spatial = springs_against_mujoco(
+        &Springs,
+        Springs::JOINT_NAMES,
+        include_str!("data/springs_peers.txt"),
+    );
+    let planar = springs_against_mujoco(
+        &PlanarSprings,
+        PlanarSprings::JOINT_NAMES,
+        include_str!("data/planar_springs_peers.txt"),
+    );
+    assert_eq!(PlanarSprings::JOINT_NAMES, ["hinge1", "slide", "hinge2"]);
+    eprintln!("springs against MuJoCo: spatial {spatial:e}, planar {planar:e}");
 }

@@ -28,6 +28,8 @@ fn random_arm(rng: &mut Rng, n: usize, gravity: bool, extras: bool) -> ArmSpec<P
             armature: if extras { r(0.05, 0.2) } else { zero() },
             damping: if extras { r(0.05, 1.0) } else { zero() },
             frictionloss: zero(),
+            stiffness: Default::default(),
+            springref: Default::default(),
             joint: JointKind::Revolute,
             range: None,
             offset: None,

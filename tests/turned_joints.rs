@@ -1,5 +1,5 @@
 //! Joints that do not start along the previous link or turn the other way: `offset = angle`
-//! and `reversed` on a link, as model files have them (a cart-pole whose pole stands up at
+//! and `reversed` on a link, as model files have them, and joint springs (a cart-pole whose pole stands up at
 //! `q = 0`, a floating base of slides at right angles, a hinge about -y among +y ones).
 //!
 //! Each arm's generated methods against the numeric reference on its `model()` (which treats
@@ -37,17 +37,26 @@ struct PlainCartPole {
 
 /// A planar floating base (slide x, slide at a right angle, hinge, all at one point and
 /// massless) carrying a two-link leg: the hopper's chain. The second hinge is reversed, the
-/// last is bent by an angle whose cosine is not rational (a named constant).
+/// last is bent by an angle whose cosine is not rational (a named constant); a slide and a
+/// hinge have springs.
 #[derive(PlanarArm, Default)]
 #[arm(gravity = (0, -9.81), payload = 0.2, payload_com = (0.05, 0.02))]
 struct Floating {
-    #[arm(length = 0, mass = 0, inertia = 0, armature = 0.01)]
+    #[arm(length = 0, mass = 0, inertia = 0, armature = 0.01, stiffness = 40, springref = -0.1)]
     x: Prismatic,
     #[arm(length = 0, mass = 0, inertia = 0, offset = pi/2, reversed, damping = 0.2)]
     z: Prismatic,
     #[arm(length = 0.4, mass = 3.5, inertia = 0.05, com = (0.2, 0.01), offset = -pi/2)]
     torso: Revolute,
-    #[arm(length = 0.45, mass = 2, com = 0.2, reversed, frictionloss = 0.3)]
+    #[arm(
+        length = 0.45,
+        mass = 2,
+        com = 0.2,
+        reversed,
+        frictionloss = 0.3,
+        stiffness = 5,
+        springref = 0.2
+    )]
     thigh: Revolute,
     #[arm(length = 0.5, mass = 1, com = (0.25, -0.02), offset = 0.3, armature = 0.02)]
     leg: Revolute,

@@ -1,7 +1,11 @@
-"""MuJoCo's dynamics of tests/data/springs.xml, a test arm for joint springs, for
-tests/models_peers.rs. Run by hand (CI installs no MuJoCo):
+"""MuJoCo's dynamics of tests/data/springs.xml (or the model named on the command line), a
+test arm for joint springs, for tests/models_peers.rs. Run by hand (CI installs no MuJoCo):
 
     python3 bench/models/springs.py > tests/data/springs_peers.txt
+    python3 bench/models/springs.py tests/data/planar_springs.xml \
+        > tests/data/planar_springs_peers.txt
+
+The second joint of each model is its slide, sampled in [-0.1, 0.2).
 
 Written with Python 3.11.7, mujoco 4.0.1, numpy 2.4.6. Constraints and contacts are off, so
 that qfrc_passive holds the springs and the damping alone.
@@ -21,14 +25,15 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def main():
-    m = mujoco.MjModel.from_xml_path(str(ROOT / "tests/data/springs.xml"))
+    model = sys.argv[1] if len(sys.argv) > 1 else "tests/data/springs.xml"
+    m = mujoco.MjModel.from_xml_path(str(ROOT / model))
     m.opt.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_CONSTRAINT)
     m.opt.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_CONTACT)
     d = mujoco.MjData(m)
     rng = np.random.default_rng(20261205)
     names = [mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_JOINT, j) for j in range(m.njnt)]
     out = [
-        f"# Written by bench/models/springs.py with Python {platform.python_version()}, "
+        f"# {model}, written by bench/models/springs.py with Python {platform.python_version()}, "
         f"mujoco {mujoco.__version__}, numpy {np.__version__}.",
         "# Per state: q qd qdd; M (mj_fullM, row-major); bias (qfrc_bias: Coriolis, centrifugal,",
         "# gravity); passive (qfrc_passive: -stiffness (q - springref) - damping qd); tau",

@@ -25,6 +25,8 @@ pub const PAYLOAD_COM: &str = "payload_com";
 pub const CRATE: &str = "crate";
 pub const RANGE: &str = "range";
 pub const OFFSET: &str = "offset";
+pub const STIFFNESS: &str = "stiffness";
+pub const SPRINGREF: &str = "springref";
 pub const REVERSED: &str = "reversed";
 pub const URDF: &str = "urdf";
 pub const MJCF: &str = "mjcf";
@@ -53,6 +55,8 @@ pub const FIELD_KEYS: &[&str] = &[
     RANGE,
     OFFSET,
     REVERSED,
+    STIFFNESS,
+    SPRINGREF,
 ];
 /// Keys of `#[derive(SpatialArm)]`, which a planar arm writes otherwise.
 const SPATIAL_KEYS: &[&str] = &["dh", "mdh", "origin", "axis", "tool"];

@@ -13,7 +13,7 @@ use planar_arm_core::{down, ArmSpec, JointKind, LinkSpec, Offset, PayloadSpec, P
 use crate::ast::{Arm, Link};
 use crate::attr::{
     Value, ARMATURE, COM, DAMPING, FRICTIONLOSS, GRAVITY, INERTIA, LENGTH, MASS, PAYLOAD,
-    PAYLOAD_COM, PAYLOAD_INERTIA, RANGE,
+    PAYLOAD_COM, PAYLOAD_INERTIA, RANGE, SPRINGREF, STIFFNESS,
 };
 use crate::ctxt::Ctxt;
 
@@ -339,6 +339,16 @@ fn check_link(cx: &Ctxt, link: &Link<'_>) -> Option<LinkSpec<Poly>> {
         FRICTIONLOSS,
         format!("link `{name}`: frictionloss cannot be negative (it would feed energy in)"),
     );
+    // #[arm(stiffness = 2, springref = -0.3)]: a spring that pushes away is not one.
+    let stiffness = non_negative(
+        STIFFNESS,
+        format!("link `{name}`: stiffness cannot be negative (the spring would push away from springref)"),
+    );
+    let springref = a.get(SPRINGREF).and_then(|v| {
+        let good = representable(cx, SPRINGREF, v);
+        ok &= good;
+        good.then(|| v.value.clone())
+    });
     // #[arm(com = 0.25)] or #[arm(com = (0.11, 0.005))]: any sign (a counterweight lies behind
     // the joint).
     let com = a.get(COM).and_then(|c| {
@@ -365,6 +375,8 @@ fn check_link(cx: &Ctxt, link: &Link<'_>) -> Option<LinkSpec<Poly>> {
         armature: armature.unwrap_or_default(),
         damping: damping.unwrap_or_default(),
         frictionloss: frictionloss.unwrap_or_default(),
+        stiffness: stiffness.unwrap_or_default(),
+        springref: springref.unwrap_or_default(),
         joint: link.joint,
         range,
         offset: a
@@ -438,6 +450,8 @@ pub fn literal(spec: &ArmSpec<Poly>) -> Option<ArmSpec<Rational>> {
                     armature: r(&l.armature)?,
                     damping: r(&l.damping)?,
                     frictionloss: r(&l.frictionloss)?,
+                    stiffness: r(&l.stiffness)?,
+                    springref: r(&l.springref)?,
                     joint: l.joint,
                     range: l.range.clone(),
                     offset: match &l.offset {

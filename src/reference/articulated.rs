@@ -2,7 +2,7 @@
 
 use nalgebra::{Matrix3, SVector, Vector2, Vector3};
 
-use super::newton_euler::friction;
+use super::newton_euler::{friction, springs};
 use super::{in_world, last_direction, link_directions, slides};
 use crate::Model;
 
@@ -111,7 +111,8 @@ pub fn forward_dynamics<const N: usize>(
     }
 
     // Pass 2 (inwards): articulated-body inertias and bias forces.
-    let f = friction(model, qd);
+    // Friction and the springs are known torques at the joints.
+    let f = friction(model, qd) + springs(model, q);
     let mut u_vec = [Vector3::zeros(); N];
     let mut d_inv = [0.0; N];
     let mut u_sc = [0.0; N];

@@ -3,7 +3,7 @@
 
 use nalgebra::{SMatrix, SVector, Vector2};
 
-use super::newton_euler::{friction, rnea_dirs};
+use super::newton_euler::{friction, rnea_dirs, springs};
 use super::{cross, in_world, last_direction, link_directions, perp, slides, steps};
 use crate::Model;
 
@@ -91,7 +91,8 @@ pub fn mass_matrix<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) -> SMa
     crba_dirs(model, &link_directions(&model.links, q), q)
 }
 
-/// The gravity torques (forces at prismatic joints) `g(q) = dV/dq`: what holds the arm still.
+/// The gravity torques (forces at prismatic joints) `g(q) = dV/dq`: what holds the arm still,
+/// the joint springs' torques ([`springs`](super::springs)) included.
 ///
 /// O(N): joint i must support the weight of links i..N and the payload: a revolute joint its
 /// moment about link i's origin, `-g . perp(F)` with `F` the first moment of that composite
@@ -122,7 +123,7 @@ pub fn gravity_torques<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) ->
             -g.dot(&perp(first))
         };
     }
-    tau
+    tau + springs(model, q)
 }
 
 /// Joint accelerations `qdd = M^-1 (tau - c - g - f)` by CRBA, RNEA and a Cholesky solve.
@@ -150,7 +151,7 @@ pub fn forward_dynamics_crba<const N: usize>(
     let dirs = link_directions(&model.links, q);
     let m = crba_dirs(model, &dirs, q);
     let bias = rnea_dirs(model, model.gravity, &dirs, q, qd, &SVector::zeros());
-    let rhs = tau - bias - friction(model, qd);
+    let rhs = tau - bias - friction(model, qd) - springs(model, q);
     match m.cholesky() {
         Some(cholesky) => cholesky.solve(&rhs),
         None => SVector::repeat(f64::NAN),

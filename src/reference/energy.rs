@@ -45,8 +45,9 @@ pub fn kinetic_energy<const N: usize>(
     0.5 * energy
 }
 
-/// The gravitational potential energy `-g . (sum(m_i p_com_i) + m_payload p_payload)`, J,
-/// zero at the base origin (a prismatic joint moves its link's origin by `q_i u_i`).
+/// The potential energy, J: gravity's `-g . (sum(m_i p_com_i) + m_payload p_payload)`, zero
+/// at the base origin (a prismatic joint moves its link's origin by `q_i u_i`), and the joint
+/// springs' `sum stiffness_i (q_i - springref_i)^2 / 2`.
 #[inline]
 #[must_use]
 pub fn potential_energy<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) -> f64 {
@@ -66,5 +67,12 @@ pub fn potential_energy<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) -
     }
     let payload = &model.payload;
     moment += payload.mass * (joint + in_world(last_direction(&dirs), payload.com));
-    -model.gravity.dot(&moment)
+    let springs: f64 = model
+        .links
+        .iter()
+        .zip(q.iter())
+        .filter(|(l, _)| l.stiffness != 0.0)
+        .map(|(l, &qi)| l.stiffness * (qi - l.springref) * (qi - l.springref) / 2.0)
+        .sum();
+    -model.gravity.dot(&moment) + springs
 }

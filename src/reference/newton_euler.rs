@@ -104,7 +104,7 @@ pub fn inverse_dynamics<const N: usize>(
         ));
     }
     let dirs = link_directions(&model.links, q);
-    rnea_dirs(model, model.gravity, &dirs, q, qd, qdd) + friction(model, qd)
+    rnea_dirs(model, model.gravity, &dirs, q, qd, qdd) + friction(model, qd) + springs(model, q)
 }
 
 /// [`inverse_dynamics`] with the absolute link angles' sines and cosines from
@@ -132,7 +132,7 @@ pub fn inverse_dynamics_batched_trig<const N: usize>(
     }
     let sin_cos = crate::trig::sin_cos(absolute_angles(&model.links, q));
     let dirs = directions_from(&model.links, &sin_cos);
-    rnea_dirs(model, model.gravity, &dirs, q, qd, qdd) + friction(model, qd)
+    rnea_dirs(model, model.gravity, &dirs, q, qd, qdd) + friction(model, qd) + springs(model, q)
 }
 
 /// The bias forces `c(q, qd) + g(q) + f(qd)`: [`inverse_dynamics`] with `qdd = 0`.
@@ -150,7 +150,9 @@ pub fn bias_forces<const N: usize>(
         return s.component_mul(&bias_forces(&m, &s.component_mul(q), &s.component_mul(qd)));
     }
     let dirs = link_directions(&model.links, q);
-    rnea_dirs(model, model.gravity, &dirs, q, qd, &SVector::zeros()) + friction(model, qd)
+    rnea_dirs(model, model.gravity, &dirs, q, qd, &SVector::zeros())
+        + friction(model, qd)
+        + springs(model, q)
 }
 
 /// The velocity-product (Coriolis and centrifugal) terms `c(q, qd)`, torques and forces: the
@@ -168,6 +170,23 @@ pub fn coriolis<const N: usize>(
     }
     let dirs = link_directions(&model.links, q);
     rnea_dirs(model, Vector2::zeros(), &dirs, q, qd, &SVector::zeros())
+}
+
+/// The joint springs' torques (forces at prismatic joints) `stiffness_i (q_i - springref_i)`:
+/// part of `g = dV/dq` ([`gravity_torques`](super::gravity_torques)), of the bias and of the
+/// inverse dynamics; zero for a joint without a spring.
+#[inline]
+#[must_use]
+pub fn springs<const N: usize>(model: &Model<N>, q: &SVector<f64, N>) -> SVector<f64, N> {
+    SVector::from_fn(|i, _| {
+        let l = &model.links[i];
+        // Zero without a spring even where `q` is infinite.
+        if l.stiffness == 0.0 {
+            0.0
+        } else {
+            l.stiffness * (q[i] - l.springref)
+        }
+    })
 }
 
 /// The joint friction torques (forces at prismatic joints)

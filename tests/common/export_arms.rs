@@ -71,3 +71,19 @@ pub struct PlanarExact {
     #[arm(length = 0.2, mass = 0.5, inertia = 0.002, com = (0.1, -0.01), frictionloss = 0.05)]
     pub wrist: Revolute,
 }
+
+/// A planar arm with what model files have and the paper's arms do not: gravity off -y, a
+/// slide across the link before it (an offset), a reversed hinge turned back, joint springs.
+#[derive(PlanarArm, Default)]
+#[arm(gravity = (2, -9), payload = 0.2, payload_com = (0.03, 0))]
+pub struct PlanarTurned {
+    #[arm(length = 0.4, mass = 1.5, inertia = 0.03, com = (0.2, 0.01), damping = 0.1,
+          stiffness = 4, springref = 0.3)]
+    pub shoulder: Revolute,
+    #[arm(length = 0.2, mass = 0.8, inertia = 0.01, offset = pi/2, range = (-0.2, 0.3),
+          stiffness = 30, springref = 0.05)]
+    pub lift: Prismatic,
+    #[arm(length = 0.3, mass = 0.5, inertia = 0.004, com = (0.15, 0.02), offset = -pi/2,
+          reversed, armature = 0.02)]
+    pub wrist: Revolute,
+}

@@ -465,6 +465,8 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
                     range: ::core::option::Option::None,
                     offset: 0.0,
                     reversed: false,
+                    stiffness: 0.0,
+                    springref: 0.0,
                 },
                 ::planar_arm::Link {
                     length: 1.0,
@@ -478,6 +480,8 @@ impl ::planar_arm::PlanarArm<2> for Paper2 {
                     range: ::core::option::Option::None,
                     offset: 0.0,
                     reversed: false,
+                    stiffness: 0.0,
+                    springref: 0.0,
                 },
             ],
             gravity: ::planar_arm::nalgebra::Vector2::new(0.0, (-(981.0 / 100.0))),

@@ -775,6 +775,8 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     range: ::core::option::Option::None,
                     offset: 0.0,
                     reversed: false,
+                    stiffness: 0.0,
+                    springref: 0.0,
                 },
                 ::planar_arm::Link {
                     length: 1.0,
@@ -788,6 +790,8 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     range: ::core::option::Option::None,
                     offset: 0.0,
                     reversed: false,
+                    stiffness: 0.0,
+                    springref: 0.0,
                 },
                 ::planar_arm::Link {
                     length: 1.0,
@@ -801,6 +805,8 @@ impl ::planar_arm::PlanarArm<3> for Paper3 {
                     range: ::core::option::Option::None,
                     offset: 0.0,
                     reversed: false,
+                    stiffness: 0.0,
+                    springref: 0.0,
                 },
             ],
             gravity: ::planar_arm::nalgebra::Vector2::new(0.0, (-(981.0 / 100.0))),

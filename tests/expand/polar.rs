@@ -434,6 +434,8 @@ impl ::planar_arm::PlanarArm<2> for Polar {
                     range: ::core::option::Option::None,
                     offset: 0.0,
                     reversed: false,
+                    stiffness: 0.0,
+                    springref: 0.0,
                 },
                 ::planar_arm::Link {
                     length: (1.0 / 2.0),
@@ -447,6 +449,8 @@ impl ::planar_arm::PlanarArm<2> for Polar {
                     range: ::core::option::Option::Some((0.0, (3.0 / 5.0))),
                     offset: 0.0,
                     reversed: false,
+                    stiffness: 0.0,
+                    springref: 0.0,
                 },
             ],
             gravity: ::planar_arm::nalgebra::Vector2::new(0.0, (-(981.0 / 100.0))),

@@ -181,6 +181,9 @@ pub fn summary<C: Emit>(d: &Derived<C>) -> String {
         if l.reversed {
             let _ = writeln!(s, "  reversed");
         }
+        if !l.stiffness.is_zero() {
+            let _ = writeln!(s, "  spring {} toward {}", l.stiffness, l.springref);
+        }
     }
     let _ = writeln!(s, "gravity {} {}", d.arm.gravity.0, d.arm.gravity.1);
     s

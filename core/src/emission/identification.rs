@@ -23,13 +23,15 @@ pub const MAX_LINKS: usize = 30;
 
 /// `impl ::planar_arm::Identification<N, P, B>` for the arm, or nothing when its lengths or
 /// gravity are such that the groupings are not polynomials (see
-/// [`base_parameters_from_energies`](crate::regressor::base_parameters_from_energies)) or it
-/// has more than [`MAX_LINKS`] links.
+/// [`base_parameters_from_energies`](crate::regressor::base_parameters_from_energies)), it
+/// has a joint spring or more than [`MAX_LINKS`] links.
 ///
 /// # Errors
 /// If a constant does not fit in `f64`.
 pub fn identification<C: Emit>(d: &Derived<C>, header: &Header) -> Result<TokenStream, EmitError> {
-    if d.arm.links.len() > MAX_LINKS {
+    // A spring's torque is known, not a parameter the torques are linear in: `Y theta` would
+    // not be the inverse dynamics (as for spatial arms).
+    if d.arm.links.len() > MAX_LINKS || d.arm.links.iter().any(|l| !l.stiffness.is_zero()) {
         return Ok(TokenStream::new());
     }
     let Some(id) = d.identification() else {

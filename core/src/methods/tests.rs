@@ -24,6 +24,8 @@ fn arm(n: usize) -> ArmSpec {
                 armature: ratio(k(i), 7),
                 damping: ratio(1, k(i) + 2),
                 frictionloss: ratio(k(i % 2), 3),
+                stiffness: Default::default(),
+                springref: Default::default(),
                 joint: JointKind::Revolute,
                 range: None,
                 offset: None,

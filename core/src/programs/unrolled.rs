@@ -374,6 +374,15 @@ fn newton_euler_of<C: Emit>(
         // A revolute joint carries the moment about it, a prismatic one the force along it.
         tau[i] = if prismatic(i) { f.0 } else { moment };
         tau[i] = sensed(p, i, tau[i]);
+        if terms.gravity && !link.stiffness.is_zero() {
+            // The joint's spring, with the static terms: stiffness (q - springref).
+            let q = p.input(Input::Q(i));
+            let rest = p.coefficient(&link.springref);
+            let stretch = p.sub(q, rest);
+            let k = p.coefficient(&link.stiffness);
+            let spring = p.mul(k, stretch);
+            tau[i] = p.add(tau[i], spring);
+        }
         if terms.accelerations {
             // The rotor turns with the joint's own rate: its torque is not transmitted inwards.
             let armature = match armature {

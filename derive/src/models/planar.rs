@@ -6,8 +6,8 @@
 //! points toward the next joint (or the tool; a slide's along the slide), and its joint's
 //! `offset` is the turn from the previous link's `x` (a quarter turn exactly when the file's
 //! axes are aligned). Offsets along `n` do not change a planar motion and are dropped; so is
-//! gravity's part along `n`, which does no work. What the planar derive cannot say yet (a
-//! spring, a slide whose next joint lies off its line) is an error naming the joint.
+//! gravity's part along `n`, which does no work. A slide whose next joint lies off its line,
+//! which a planar link cannot say, is an error naming the joint.
 
 use num_traits::{Signed, Zero};
 use planar_arm_core::ring::{int, to_f64, Rational};
@@ -223,14 +223,6 @@ pub fn planar(chain: &Chain, file: &str, g: Option<&Vec3>) -> Result<Planar, Fil
             turned.push(format!("`{}` by {o}", name(i)));
         }
         let reversed = hinge(i) && dot(&axes[i], &n).is_negative();
-        if !j.joint.stiffness.is_zero() {
-            return Err(fail(
-                name(i),
-                "a spring, which planar arms do not have yet; read the file with \
-                 #[derive(SpatialArm)]"
-                    .to_string(),
-            ));
-        }
         let body = j.body.moved(&Pose {
             xyz: Default::default(),
             rpy: frames[i].rpy.clone(),
@@ -254,6 +246,8 @@ pub fn planar(chain: &Chain, file: &str, g: Option<&Vec3>) -> Result<Planar, Fil
             armature: Poly::constant(j.joint.armature.clone()),
             damping: Poly::constant(j.joint.damping.clone()),
             frictionloss: Poly::constant(j.joint.frictionloss.clone()),
+            stiffness: Poly::constant(j.joint.stiffness.clone()),
+            springref: Poly::constant(j.joint.springref.clone()),
             joint: j.joint.kind,
             range: j.joint.range.clone(),
             offset: offset.map(|angle| {

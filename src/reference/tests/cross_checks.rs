@@ -14,8 +14,13 @@ fn cross_check<const N: usize>(rng: &mut Rng, model: &Model<N>, worst: &mut Wors
 
     // CRBA against columns of RNEA(qd = 0, g = 0, qdd = e_j); friction vanishes at rest.
     let m = mass_matrix(model, &q);
+    // No gravity and no springs: no static torques.
     let weightless = Model {
         gravity: nalgebra::Vector2::zeros(),
+        links: model.links.map(|l| Link {
+            stiffness: 0.0,
+            ..l
+        }),
         ..*model
     };
     let m_rnea = SMatrix::<f64, N, N>::from_fn(|i, j| {
@@ -205,8 +210,8 @@ fn spatial_check<const N: usize>(rng: &mut Rng, model: &Model<N>, worst: &mut Wo
     worst.close(&V2::new(c, s), &x.xy(), tol, "tip orientation vs spatial");
 }
 
-/// [`Rng::model`] with every joint's kind, offset (none a third of the time) and sense
-/// random, and gravity in any direction.
+/// [`Rng::model`] with every joint's kind, offset (none a third of the time), sense and
+/// spring (half of them) random, and gravity in any direction.
 fn turned_model<const N: usize>(rng: &mut Rng) -> Model<N> {
     let mut model: Model<N> = rng.mixed_model();
     for link in &mut model.links {
@@ -216,6 +221,10 @@ fn turned_model<const N: usize>(rng: &mut Rng) -> Model<N> {
             rng.uniform(-3.2, 3.2)
         };
         link.reversed = rng.uniform(0.0, 1.0) < 0.4;
+        if rng.uniform(0.0, 1.0) < 0.5 {
+            link.stiffness = rng.uniform(0.0, 20.0);
+            link.springref = rng.uniform(-1.0, 1.0);
+        }
     }
     let g = V2::new(rng.uniform(-10.0, 10.0), rng.uniform(-10.0, 10.0));
     model.with_gravity(g)

@@ -58,6 +58,8 @@ impl Rng {
                 armature: self.often(|r| r.uniform(0.0, 0.5)),
                 damping: self.often(|r| r.uniform(0.0, 2.0)),
                 frictionloss: self.often(|r| r.uniform(0.0, 1.0)),
+                stiffness: 0.0,
+                springref: 0.0,
                 joint: Joint::Revolute,
                 range: None,
                 offset: 0.0,

@@ -14,6 +14,8 @@ fn pendulum_by_hand() {
         armature: 0.05,
         damping: 0.3,
         frictionloss: 0.4,
+        stiffness: 0.0,
+        springref: 0.0,
         joint: crate::Joint::Revolute,
         range: None,
         offset: 0.0,

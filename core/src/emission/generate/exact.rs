@@ -75,6 +75,7 @@ pub(super) fn model<C: Emit>(d: &Derived<C>) -> Result<TokenStream, EmitError> {
                 (v(&l.length)?, v(&l.mass)?, v(&l.inertia)?, vec2(&l.com)?);
             let (armature, damping, frictionloss) =
                 (v(&l.armature)?, v(&l.damping)?, v(&l.frictionloss)?);
+            let (stiffness, springref) = (v(&l.stiffness)?, v(&l.springref)?);
             let joint = match l.joint {
                 JointKind::Revolute => quote!(::planar_arm::Joint::Revolute),
                 JointKind::Prismatic => quote!(::planar_arm::Joint::Prismatic),
@@ -92,6 +93,7 @@ pub(super) fn model<C: Emit>(d: &Derived<C>) -> Result<TokenStream, EmitError> {
                 length: #length, mass: #mass, inertia: #inertia, com: #com,
                 armature: #armature, damping: #damping, frictionloss: #frictionloss,
                 joint: #joint, range: #range, offset: #offset, reversed: #reversed,
+                stiffness: #stiffness, springref: #springref,
             }))
         })
         .collect::<Result<Vec<_>, EmitError>>()?;

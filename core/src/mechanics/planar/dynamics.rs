@@ -4,7 +4,7 @@
 use std::fmt;
 
 use super::bodies::{standard_bodies, Body};
-use super::energy::{kinetic_energy, potential_energy};
+use super::energy::{kinetic_energy, potential_energy, spring_energy};
 use super::rates::{rate, RateProducts};
 use super::spec::ArmSpec;
 use super::{christoffel, metric};
@@ -20,7 +20,7 @@ pub struct Dynamics<C = Rational> {
     pub n: usize,
     /// Kinetic energy T(q, qd).
     pub kinetic_energy: Expr<C>,
-    /// Potential energy V(q), zero at y = 0.
+    /// Potential energy V(q): gravity's, zero at the base origin, and the joint springs'.
     pub potential_energy: Expr<C>,
     /// The mass matrix, row-major.
     pub mass_matrix: Vec<Vec<Expr<C>>>,
@@ -59,7 +59,8 @@ impl<C: Coefficient> Dynamics<C> {
         let n = arm.links.len();
         let mut rates = RateProducts::new();
         let kinetic = kinetic_energy(arm, bodies, &mut rates);
-        let potential = potential_energy(arm, bodies);
+        // Gravity's and the joint springs'.
+        let potential = potential_energy(arm, bodies).add(&spring_energy(arm));
         // M as the Hessian of T in the rates, g = dV/dq, and the velocity terms from the
         // momenta p = dT/dqd: the same exact functions Lagrange's equation gives (checked
         // against it by `lagrange_torques`), without expanding d/dt dL/dqd, the costliest step.

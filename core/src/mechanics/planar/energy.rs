@@ -5,7 +5,7 @@ use super::kinematics::{link_angle, point_on_link};
 use super::metric;
 use super::rates::{rate, RateProducts};
 use super::spec::{ArmSpec, JointKind};
-use crate::expr::Expr;
+use crate::expr::{Expr, Var};
 use crate::ring::{int, ratio, Coefficient};
 use crate::trig::Angle;
 
@@ -37,6 +37,25 @@ pub(super) fn potential_energy<C: Coefficient>(arm: &ArmSpec<C>, bodies: &[Body<
         }
     }
     potential
+}
+
+/// The joints' springs' energy, `sum stiffness (q_i - springref)^2 / 2`: not the bodies', so
+/// not in the energies the regressor's columns are built from.
+pub(super) fn spring_energy<C: Coefficient>(arm: &ArmSpec<C>) -> Expr<C> {
+    let mut energy = Expr::zero();
+    for (i, link) in arm.links.iter().enumerate() {
+        if link.stiffness.is_zero() {
+            continue;
+        }
+        let stretch = Expr::var(Var::Q(i)).sub(&Expr::constant(link.springref.clone()));
+        energy.add_assign(
+            &stretch
+                .mul(&stretch)
+                .scale_by(&link.stiffness)
+                .scale(&ratio(1, 2)),
+        );
+    }
+    energy
 }
 
 /// The kinetic energy, built in its pairwise form: a sum over pairs of links `a >= b` of

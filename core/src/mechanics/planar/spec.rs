@@ -49,6 +49,13 @@ pub struct LinkSpec<C = Rational> {
     pub damping: C,
     /// Coulomb friction at this link's joint: torque `frictionloss sign(qd_i)`.
     pub frictionloss: C,
+    /// The joint spring's stiffness (MuJoCo's `stiffness`): energy
+    /// `stiffness (q_i - springref)^2 / 2`, part of the potential, so a torque
+    /// `stiffness (q_i - springref)` in `g`.
+    pub stiffness: C,
+    /// The joint's angle (or displacement) at which its spring is slack (MuJoCo's
+    /// `springref`).
+    pub springref: C,
     /// The joint's kind.
     pub joint: JointKind,
     /// The joint's range `(lower, upper)`, if given: kinematics only, never the dynamics.
@@ -74,7 +81,9 @@ impl<C: Coefficient> LinkSpec<C> {
             mass,
             armature: zero.clone(),
             damping: zero.clone(),
-            frictionloss: zero,
+            frictionloss: zero.clone(),
+            stiffness: zero.clone(),
+            springref: zero,
             joint: JointKind::Revolute,
             range: None,
             offset: None,
@@ -200,6 +209,8 @@ impl<C> ArmSpec<C> {
                 armature: f(&l.armature),
                 damping: f(&l.damping),
                 frictionloss: f(&l.frictionloss),
+                stiffness: f(&l.stiffness),
+                springref: f(&l.springref),
                 joint: l.joint,
                 range: l.range.clone(),
                 offset: l.offset.as_ref().map(|o| Offset {

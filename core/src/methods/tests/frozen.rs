@@ -24,6 +24,8 @@ fn arm(n: usize) -> ArmSpec<Poly> {
                 armature: Poly::constant(ratio(0, 1)),
                 damping: p("d", i),
                 frictionloss: Poly::constant(ratio(0, 1)),
+                stiffness: Default::default(),
+                springref: Default::default(),
                 joint: JointKind::Revolute,
                 range: None,
                 offset: None,
