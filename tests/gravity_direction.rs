@@ -10,6 +10,9 @@
 //! Newton-Euler recursion on `to_spatial` (which shares no code with the planar path) and the
 //! planar reference.
 
+mod common;
+
+use common::assert_matrix_close as close;
 use planar_arm::nalgebra::{SVector, Vector2};
 use planar_arm::prelude::*;
 use planar_arm::reference;
@@ -66,23 +69,7 @@ struct Slope {
 }
 
 fn states<const N: usize>() -> Vec<[SVector<f64, N>; 3]> {
-    let mut x = 0.37_f64;
-    let mut next = move || {
-        x = (x * 9301.0 + 49297.0) % 233_280.0;
-        2.0 * x / 233_280.0 - 1.0
-    };
-    (0..8)
-        .map(|_| core::array::from_fn(|_| SVector::from_fn(|_, _| 2.0 * next())))
-        .collect()
-}
-
-fn close<const R: usize, const C: usize>(
-    a: &planar_arm::nalgebra::SMatrix<f64, R, C>,
-    b: &planar_arm::nalgebra::SMatrix<f64, R, C>,
-    what: &str,
-) {
-    let scale = a.amax().max(b.amax()).max(1.0);
-    assert!((a - b).amax() <= 1e-12 * scale, "{what}: {a} vs {b}");
+    common::states(&mut common::Rng(37), 8, 2.0)
 }
 
 #[test]

@@ -9,6 +9,9 @@
 //! an offset is also the same arm as one written without, turned: its pole's angle is the
 //! plain arm's less a quarter turn.
 
+mod common;
+
+use common::assert_matrix_close as close;
 use planar_arm::nalgebra::{SMatrix, SVector};
 use planar_arm::prelude::*;
 use planar_arm::reference;
@@ -63,23 +66,7 @@ struct Floating {
 }
 
 fn states<const N: usize>() -> Vec<[SVector<f64, N>; 3]> {
-    let mut x = 0.61_f64;
-    let mut next = move || {
-        x = (x * 9301.0 + 49297.0) % 233_280.0;
-        2.0 * x / 233_280.0 - 1.0
-    };
-    (0..8)
-        .map(|_| core::array::from_fn(|_| SVector::from_fn(|_, _| 1.5 * next())))
-        .collect()
-}
-
-fn close<const R: usize, const C: usize>(
-    a: &SMatrix<f64, R, C>,
-    b: &SMatrix<f64, R, C>,
-    what: &str,
-) {
-    let scale = a.amax().max(b.amax()).max(1.0);
-    assert!((a - b).amax() <= 1e-12 * scale, "{what}: {a} vs {b}");
+    common::states(&mut common::Rng(61), 8, 1.5)
 }
 
 /// Every dynamics and kinematics method against both references.

@@ -34,6 +34,23 @@ impl Rng {
     }
 }
 
+/// `count` states `[q, qd, qdd]`, each entry uniform in `[-r, r)`.
+pub fn states<const N: usize>(rng: &mut Rng, count: usize, r: f64) -> Vec<[SVector<f64, N>; 3]> {
+    (0..count)
+        .map(|_| [rng.vector(r), rng.vector(r), rng.vector(r)])
+        .collect()
+}
+
+/// Asserts `a` and `b` agree to `1e-12` of the larger's largest entry (or of 1).
+pub fn assert_matrix_close<const R: usize, const C: usize>(
+    a: &SMatrix<f64, R, C>,
+    b: &SMatrix<f64, R, C>,
+    what: &str,
+) {
+    let scale = a.amax().max(b.amax()).max(1.0);
+    assert!((a - b).amax() <= 1e-12 * scale, "{what}: {a} vs {b}");
+}
+
 /// Relative closeness: `|a - b| <= tol * max(1, scale)`.
 pub fn close(a: f64, b: f64, tol: f64, scale: f64) -> bool {
     (a - b).abs() <= tol * scale.max(1.0)
