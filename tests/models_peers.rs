@@ -124,8 +124,9 @@ fn relative(a: &[f64], b: &[f64]) -> f64 {
         / scale
 }
 
-/// Every state of the fixture to 1e-12 relative (of the quantity's largest entry); returns the
-/// worst difference. The engines' bias holds no friction and their inverse dynamics only the
+/// Every state of the fixture to 1e-12 relative (of the quantity's largest entry): M, bias,
+/// gravity, inverse dynamics, and forward dynamics of the engine's torques; returns the worst
+/// difference. The engines' bias holds no friction and their inverse dynamics only the
 /// viscous part (MuJoCo's frictionloss is a constraint, off in the fixtures): the arm's Coulomb
 /// friction is taken out before comparing.
 fn check<const N: usize, A: Dynamics<N>>(
@@ -172,6 +173,15 @@ fn check<const N: usize, A: Dynamics<N>>(
                     .as_slice()
                     .to_vec(),
                 v("tau", 7).as_slice().to_vec(),
+            ),
+            // Forward dynamics: the engine's torques (with the Coulomb part MuJoCo leaves to
+            // its constraints put back) give back the accelerations it was asked for.
+            (
+                "qdd",
+                arm.forward_dynamics(&q, &qd, &(v("tau", 7) + coulomb))
+                    .as_slice()
+                    .to_vec(),
+                qdd.as_slice().to_vec(),
             ),
         ];
         for (what, ours, theirs) in pairs {

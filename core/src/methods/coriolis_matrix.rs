@@ -44,7 +44,8 @@ impl<C: Emit> Derived<C> {
     fn coriolis_matrix_absolute_method(&self, d: &[Vec<Expr<C>>]) -> Method {
         let n = self.n();
         let mut p = Program::new();
-        let c = absolute_program(&mut p, d);
+        let senses: Vec<i32> = (0..n).map(|i| self.arm.sense(i)).collect();
+        let c = absolute_program(&mut p, d, &senses);
         let outputs = (0..n * n)
             .map(|k| (format!("cm{}", two(k / n, k % n)), c[k]))
             .collect();

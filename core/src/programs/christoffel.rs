@@ -21,16 +21,23 @@ use crate::slp::{Emit, Id, Input, Program};
 pub use crate::mechanics::planar::christoffel::{absolute_derivatives, expanded};
 
 /// The program of `C = J^T Ct J` from [`absolute_derivatives`]: `n^2` output nodes,
-/// row-major. `C_ij = sum_(a >= i) R_aj` with the row suffixes `R_aj = sum_(b >= j) Ct_ab`
-/// and `Ct_ab = D_ab w_b` (`-D_ba w_b` above the diagonal, zero on it): `n (n - 1)`
+/// row-major. `C_ij = s_i s_j sum_(a >= i) R_aj` with the row suffixes
+/// `R_aj = sum_(b >= j) Ct_ab` and `Ct_ab = D_ab w_b` (`-D_ba w_b` above the diagonal, zero on
+/// it), `s` the joints' senses (`-1` reversed; `J_ak = s_k` for `k <= a`): `n (n - 1)`
 /// products and `2 n^2` additions at most.
-pub fn absolute_program<C: Emit>(p: &mut Program, d: &[Vec<Expr<C>>]) -> Vec<Id> {
+pub fn absolute_program<C: Emit>(p: &mut Program, d: &[Vec<Expr<C>>], senses: &[i32]) -> Vec<Id> {
     let n = d.len();
     let zero = p.constant(crate::ring::int(0));
-    let mut w = Vec::with_capacity(n);
+    let mut w: Vec<Id> = Vec::with_capacity(n);
     for k in 0..n {
         let qd = p.input(Input::Qd(k));
-        let wk = if k == 0 { qd } else { p.add(w[k - 1], qd) };
+        let reversed = senses.get(k) == Some(&-1);
+        let wk = match (k, reversed) {
+            (0, false) => qd,
+            (0, true) => p.neg(qd),
+            (_, false) => p.add(w[k - 1], qd),
+            (_, true) => p.sub(w[k - 1], qd),
+        };
         w.push(wk);
     }
     let dn: Vec<Vec<Id>> = d
@@ -61,7 +68,8 @@ pub fn absolute_program<C: Emit>(p: &mut Program, d: &[Vec<Expr<C>>]) -> Vec<Id>
         let mut acc = zero;
         for i in (0..n).rev() {
             acc = p.add(r[i][j], acc);
-            c[i * n + j] = acc;
+            let sign = senses.get(i).unwrap_or(&1) * senses.get(j).unwrap_or(&1);
+            c[i * n + j] = if sign < 0 { p.neg(acc) } else { acc };
         }
     }
     c
@@ -70,18 +78,22 @@ pub fn absolute_program<C: Emit>(p: &mut Program, d: &[Vec<Expr<C>>]) -> Vec<Id>
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::mechanics::planar::tests::uneven_arm;
+    use crate::mechanics::planar::tests::{turned_arm, uneven_arm};
     use crate::mechanics::Dynamics;
 
-    /// The program evaluates what the expanded entries evaluate.
+    /// The program evaluates what the expanded entries evaluate: plain arms of 1 to 6 links,
+    /// and arms of 1 to 4 with offsets and every pattern of reversed joints.
     #[test]
     fn the_program_is_the_expanded_matrix() {
-        for n in 1..=6 {
-            let arm = uneven_arm(n);
+        let plain = (1..=6).map(uneven_arm);
+        let turned = (1..=4).flat_map(|n| (0..1u32 << n).map(move |r| turned_arm(n, r)));
+        for arm in plain.chain(turned) {
+            let n = arm.links.len();
             let dy = Dynamics::derive(&arm);
             let d = absolute_derivatives(&arm, &dy.mass_matrix).expect("all revolute");
             let mut p = Program::new();
-            let out = absolute_program(&mut p, &d);
+            let senses: Vec<i32> = (0..n).map(|i| arm.sense(i)).collect();
+            let out = absolute_program(&mut p, &d, &senses);
             #[allow(clippy::cast_precision_loss)]
             let q: Vec<f64> = (0..n).map(|k| 0.3 + 0.7 * k as f64).collect();
             #[allow(clippy::cast_precision_loss)]

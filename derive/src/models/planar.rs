@@ -262,7 +262,7 @@ pub fn planar(chain: &Chain, file: &str, g: Option<&Vec3>) -> Result<Planar, Fil
         "Read as a planar arm in the plane through the first joint with normal {} (the first \
          hinge's axis), x along {} and y = n x x: a joint's angle is its qpos, each link's x \
          points toward the next joint at qpos = 0 (a slide's along the slide), its length the \
-         distance to it.",
+         distance to it; the tip (the end of the last link) is the tip body's frame origin.",
         show(&n),
         show(&x)
     )];

@@ -38,21 +38,40 @@ pub fn expanded<C: Coefficient>(m: &[Vec<Expr<C>>]) -> Vec<Vec<Expr<C>>> {
 }
 
 /// `D_ab = dMt_ab/dphi_b` for `a > b` (`D[a][b]`, the strict lower triangle; `D_ba = -D_ab`),
-/// or `None` unless every joint is revolute and plain ([`ArmSpec::plain`]).
+/// or `None` unless every joint is revolute.
 ///
-/// `Mt_ab = M_ab - M_(a+1)b - M_a(b+1) + M_(a+1)(b+1)` (entries past the last joint are
-/// zero) inverts `M_ij = sum_(a >= i, b >= j) Mt_ab`. For `a > b`, `Mt_ab` depends on the
-/// joint angles only through `phi_a - phi_b = q_(b+1) + ... + q_a`, in which `q_a` appears
-/// once, so `dMt_ab/dphi_b = -dMt_ab/dq_a`.
+/// With `N_ij = s_i s_j M_ij` (`s_i` joint `i`'s sense, [`ArmSpec::sense`]),
+/// `Mt_ab = N_ab - N_(a+1)b - N_a(b+1) + N_(a+1)(b+1)` (entries past the last joint are
+/// zero) inverts `N_ij = sum_(a >= i, b >= j) Mt_ab`. For `a > b`, `Mt_ab` depends on the
+/// joint angles only through `phi_a - phi_b = s_(b+1) q_(b+1) + ... + s_a q_a` (plus the
+/// offsets, constant), in which `q_a` appears once, so `dMt_ab/dphi_b = -s_a dMt_ab/dq_a`.
 #[must_use]
 pub fn absolute_derivatives<C: Coefficient>(
     arm: &ArmSpec<C>,
     m: &[Vec<Expr<C>>],
 ) -> Option<Vec<Vec<Expr<C>>>> {
-    if !arm.all_revolute() || !arm.plain() {
+    if !arm.all_revolute() {
         return None;
     }
     let n = m.len();
+    let sense = |i: usize| arm.sense(i);
+    let signed: Vec<Vec<Expr<C>>> = m
+        .iter()
+        .enumerate()
+        .map(|(i, row)| {
+            row.iter()
+                .enumerate()
+                .map(|(j, e)| {
+                    if sense(i) * sense(j) < 0 {
+                        e.scale(&ratio(-1, 1))
+                    } else {
+                        e.clone()
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    let m = &signed;
     let entry = |i: usize, j: usize| (i < n && j < n).then(|| &m[i][j]);
     let mut d = Vec::with_capacity(n);
     for (a, m_a) in m.iter().enumerate() {
@@ -70,7 +89,7 @@ pub fn absolute_derivatives<C: Coefficient>(
                     (_, None) => {}
                 }
             }
-            row.push(mt.diff_q(a).scale(&ratio(-1, 1)));
+            row.push(mt.diff_q(a).scale(&ratio(-i64::from(sense(a)), 1)));
         }
         d.push(row);
     }

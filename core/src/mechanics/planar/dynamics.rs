@@ -67,7 +67,7 @@ impl<C: Coefficient> Dynamics<C> {
         // For arms whose joints all turn, M and c are summed from the metric in absolute
         // angles instead (small expressions per pair of links): the same expressions at a
         // fraction of the cost for long arms.
-        let (mass_matrix, coriolis) = if arm.all_revolute() && arm.plain() {
+        let (mass_matrix, coriolis) = if arm.all_revolute() {
             let pairs = metric::pairs(arm, bodies);
             (pairs.mass_matrix(arm), pairs.coriolis(&mut rates))
         } else {

@@ -7,7 +7,6 @@ use super::rates::{rate, RateProducts};
 use super::spec::{ArmSpec, JointKind};
 use crate::expr::{Expr, Var};
 use crate::ring::{int, ratio, Coefficient};
-use crate::trig::Angle;
 
 /// The potential energy of the bodies, `-m g . p` each with `p` the centre of mass:
 /// `m x_joint + m cx cos theta - m cy sin theta` across, `m y_joint + m cx sin theta +
@@ -68,11 +67,13 @@ pub(super) fn kinetic_energy<C: Coefficient>(
     bodies: &[Body<C>],
     rates: &mut RateProducts<C>,
 ) -> Expr<C> {
-    if !arm.all_revolute() || !arm.plain() {
+    if !arm.all_revolute() {
         return kinetic_energy_of_velocities(arm, bodies);
     }
     let n = arm.links.len();
-    let metric::Pairs { diag, cross } = metric::pairs(arm, bodies);
+    rates.sync(arm);
+    let senses: Vec<i32> = (0..n).map(|i| arm.sense(i)).collect();
+    let metric::Pairs { diag, cross, .. } = metric::pairs(arm, bodies);
     let half = ratio(1, 2);
     let mut kinetic = Expr::zero();
     for a in 0..n {
@@ -84,7 +85,7 @@ pub(super) fn kinetic_energy<C: Coefficient>(
             if ca.is_zero() && cb.is_zero() {
                 continue;
             }
-            let angle = Angle::range(b + 1, a + 1);
+            let angle = metric::relative_angle(&senses, b, a);
             let trig = Expr::cos(ca.clone(), angle.clone()).sub(&Expr::sin(cb.clone(), angle));
             kinetic.add_product(rates.product(a, b), &trig);
         }
@@ -103,7 +104,7 @@ pub(super) fn kinetic_energy<C: Coefficient>(
 /// position), for any mix of joints: `m |v|^2 / 2 + omega v . perp(R h) + J omega^2 / 2` per
 /// body, with `h` its first moment and `J` its inertia about the frame origin, so it stays
 /// linear in the standard parameters; plus the rotors. The pairwise form of the revolute arms
-/// rests on every link length being constant and every joint plain ([`ArmSpec::plain`]).
+/// rests on every link length being constant.
 pub(super) fn kinetic_energy_of_velocities<C: Coefficient>(
     arm: &ArmSpec<C>,
     bodies: &[Body<C>],

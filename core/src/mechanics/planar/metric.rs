@@ -18,10 +18,30 @@ use crate::expr::Expr;
 use crate::ring::{int, Coefficient};
 use crate::trig::Angle;
 
-/// The metric's coefficients: `diag[a] = Mt_aa`; `cross[a][b] = (A_ab, B_ab)` for `a > b`.
+/// The metric's coefficients: `diag[a] = Mt_aa`; `cross[a][b] = (A_ab, B_ab)` for `a > b`;
+/// and the joints' senses (`-1` reversed).
 pub(crate) struct Pairs<C> {
     pub(crate) diag: Vec<C>,
     pub(crate) cross: Vec<Vec<(C, C)>>,
+    senses: Vec<i32>,
+}
+
+/// `theta_hi - theta_lo` (`hi > lo`): the joints `lo + 1 ..= hi`, a reversed one's angle
+/// subtracted ([`ArmSpec::sense`]).
+pub(crate) fn relative_angle(senses: &[i32], lo: usize, hi: usize) -> Angle {
+    Angle::new(
+        (0..=hi)
+            .map(|k| if k > lo { senses[k] } else { 0 })
+            .collect(),
+    )
+}
+
+/// `(x, y)` of `a conj(b)` for complex numbers `a = (x, y)`.
+fn times_conj<C: Coefficient>(a: &(C, C), b: &(C, C)) -> (C, C) {
+    (
+        a.0.clone() * b.0.clone() + a.1.clone() * b.1.clone(),
+        a.1.clone() * b.0.clone() - a.0.clone() * b.1.clone(),
+    )
 }
 
 /// The coefficients of the bodies on the arm (all joints revolute).
@@ -29,7 +49,9 @@ pub(crate) struct Pairs<C> {
 /// A body of link `i` has velocity `sum_a omega_a i z_a` (complex plane),
 /// `z_a = r_a e^(i theta_a)` with `r_a = l_a` for the links before it and `r_i = cx + i cy`
 /// its centre of mass, `theta_a` the absolute angle of link `a` and `omega_a` its rate. So
-/// `|v|^2 = sum_(a,b) omega_a omega_b Re(r_a conj(r_b) e^(i (theta_a - theta_b)))`.
+/// `|v|^2 = sum_(a,b) omega_a omega_b Re(r_a conj(r_b) e^(i (theta_a - theta_b)))`. A joint
+/// offset turns `r_a` (and the centre) by the offsets up to its link ([`ArmSpec::turned`]),
+/// leaving `theta_a` the part of the angle the joints' `q` give.
 pub(crate) fn pairs<C: Coefficient>(arm: &ArmSpec<C>, bodies: &[Body<C>]) -> Pairs<C> {
     let n = arm.links.len();
     let zero = || C::from_rational(int(0));
@@ -37,22 +59,35 @@ pub(crate) fn pairs<C: Coefficient>(arm: &ArmSpec<C>, bodies: &[Body<C>]) -> Pai
     let mut cross: Vec<Vec<(C, C)>> = (0..n)
         .map(|a| (0..a).map(|_| (zero(), zero())).collect())
         .collect();
+    // Each link's end from its joint, turned.
+    let ends: Vec<(C, C)> = (0..n)
+        .map(|a| arm.turned(a, &(arm.links[a].length.clone(), zero())))
+        .collect();
     for body in bodies {
         let (i, m) = (body.link, &body.mass);
-        let (mx, my) = &body.first_moment;
+        let h = arm.turned(i, &body.first_moment);
         for a in 0..i {
-            let la = &arm.links[a].length;
-            diag[a] = diag[a].clone() + m.clone() * la.clone() * la.clone();
-            for (pair, link_b) in cross[a].iter_mut().zip(&arm.links) {
-                pair.0 = pair.0.clone() + m.clone() * la.clone() * link_b.length.clone();
+            let ra = &ends[a];
+            let (x, y) = ra;
+            diag[a] = diag[a].clone() + m.clone() * (x.clone() * x.clone() + y.clone() * y.clone());
+            for (pair, rb) in cross[a].iter_mut().zip(&ends) {
+                let (p, q) = times_conj(ra, rb);
+                pair.0 = pair.0.clone() + m.clone() * p;
+                pair.1 = pair.1.clone() + m.clone() * q;
             }
-            // The body's own term: m r_i conj(l_a) = (m cx + i m cy) l_a.
-            cross[i][a].0 = cross[i][a].0.clone() + mx.clone() * la.clone();
-            cross[i][a].1 = cross[i][a].1.clone() + my.clone() * la.clone();
+            // The body's own term: m r_i conj(r_a), its first moment times the link's end.
+            let (p, q) = times_conj(&h, ra);
+            cross[i][a].0 = cross[i][a].0.clone() + p;
+            cross[i][a].1 = cross[i][a].1.clone() + q;
         }
         diag[i] = diag[i].clone() + body.joint_inertia.clone();
     }
-    Pairs { diag, cross }
+    let senses = (0..n).map(|i| arm.sense(i)).collect();
+    Pairs {
+        diag,
+        cross,
+        senses,
+    }
 }
 
 impl<C: Coefficient> Pairs<C> {
@@ -63,13 +98,14 @@ impl<C: Coefficient> Pairs<C> {
         }
         let (hi, lo) = (a.max(b), a.min(b));
         let (ca, cb) = &self.cross[hi][lo];
-        let angle = Angle::range(lo + 1, hi + 1);
+        let angle = relative_angle(&self.senses, lo, hi);
         Expr::cos(ca.clone(), angle.clone()).sub(&Expr::sin(cb.clone(), angle))
     }
 
     /// `M = J^T Mt J + diag(armature)`, both triangles: `M_ij = R_ij + M_(i+1)j` above the
     /// diagonal with the row suffixes `R_aj = sum_(b >= j) Mt_ab`, so that each entry costs
-    /// one sum of its own size.
+    /// one sum of its own size. `J_ak` is joint `k`'s sense for `k <= a`, so a reversed joint's
+    /// row and column change sign.
     pub(crate) fn mass_matrix(&self, arm: &ArmSpec<C>) -> Vec<Vec<Expr<C>>> {
         let n = self.diag.len();
         // r[a][j] = R_aj.
@@ -92,6 +128,13 @@ impl<C: Coefficient> Pairs<C> {
             }
             m[j][j].add_assign(&Expr::constant(arm.links[j].armature.clone()));
         }
+        for (i, row) in m.iter_mut().enumerate() {
+            for (j, e) in row.iter_mut().enumerate().skip(i) {
+                if self.senses[i] * self.senses[j] < 0 {
+                    *e = e.scale(&int(-1));
+                }
+            }
+        }
         for i in 1..n {
             let (upper, lower) = m.split_at_mut(i);
             for (j, row) in upper.iter().enumerate() {
@@ -104,11 +147,11 @@ impl<C: Coefficient> Pairs<C> {
     /// `D_ab` for `a > b`.
     fn derivative(&self, a: usize, b: usize) -> Expr<C> {
         let (ca, cb) = &self.cross[a][b];
-        let angle = Angle::range(b + 1, a + 1);
+        let angle = relative_angle(&self.senses, b, a);
         Expr::sin(ca.clone(), angle.clone()).add(&Expr::cos(cb.clone(), angle))
     }
 
-    /// The velocity-product torques `c_i = sum_(a >= i) ct_a`,
+    /// The velocity-product torques `c_i = s_i sum_(a >= i) ct_a` (`s_i` joint `i`'s sense),
     /// `ct_a = sum_(b < a) D_ab w_b^2 - sum_(b > a) D_ba w_b^2`.
     pub(crate) fn coriolis(&self, rates: &mut RateProducts<C>) -> Vec<Expr<C>> {
         let n = self.diag.len();
@@ -127,7 +170,11 @@ impl<C: Coefficient> Pairs<C> {
         let mut acc = Expr::zero();
         for i in (0..n).rev() {
             acc.add_assign(&ct[i]);
-            c[i] = acc.clone();
+            c[i] = if self.senses[i] < 0 {
+                acc.scale(&int(-1))
+            } else {
+                acc.clone()
+            };
         }
         c
     }

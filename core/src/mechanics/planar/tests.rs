@@ -114,7 +114,12 @@ fn kinetic_energy_by_velocities<C: Coefficient>(arm: &ArmSpec<C>) -> Expr<C> {
         let mut w = Expr::zero();
         for j in 0..=i {
             if arm.links[j].joint == JointKind::Revolute {
-                w = w.add(&Expr::var(rate(j)));
+                let qd = Expr::var(rate(j));
+                w = if arm.links[j].reversed {
+                    w.sub(&qd)
+                } else {
+                    w.add(&qd)
+                };
             }
         }
         kinetic.add_assign(&w.mul(&w).scale_by(inertia).scale(&half));
@@ -246,5 +251,56 @@ fn pairwise_kinetic_energy_is_the_squared_velocities() {
             kinetic_energy_by_velocities(&symbolic),
             "n = {n}, parameters"
         );
+    }
+}
+
+/// `uneven_arm(n)` with joint `i` reversed where bit `i` of `reversed` is set, and offsets of
+/// rational cosine and sine (a Pythagorean angle, a quarter turn, an obtuse one) on the even
+/// joints.
+pub(crate) fn turned_arm(n: usize, reversed: u32) -> ArmSpec {
+    let mut arm = uneven_arm(n);
+    let turns = [(3, 4, 5), (0, 1, 1), (-5, 12, 13)];
+    for (i, l) in arm.links.iter_mut().enumerate() {
+        l.reversed = reversed >> i & 1 == 1;
+        if i % 2 == 0 {
+            let (c, s, d) = turns[i / 2 % 3];
+            l.offset = Some(Offset {
+                angle: crate::mechanics::spatial::FixedAngle {
+                    radians: Rational::from_float(f64::from(s).atan2(f64::from(c)))
+                        .unwrap_or_default(),
+                    pi_multiple: int(0),
+                },
+                cos: ratio(c.into(), d),
+                sin: ratio(s.into(), d),
+            });
+        }
+    }
+    arm
+}
+
+#[test]
+fn turned_and_reversed_arms_keep_the_pairwise_form() {
+    for n in 1..=4 {
+        for reversed in 0..1u32 << n {
+            let arm = turned_arm(n, reversed);
+            assert!(!arm.plain());
+            assert_eq!(
+                kinetic_energy(&arm, &standard_bodies(&arm), &mut RateProducts::new()),
+                kinetic_energy_by_velocities(&arm),
+                "n = {n}, reversed {reversed:b}"
+            );
+            // M and c of the metric against Lagrange's equation expanded.
+            let d = Dynamics::derive(&arm);
+            assert_eq!(
+                d.mass_matrix,
+                d.mass_matrix_from_lagrange(),
+                "n = {n}, reversed {reversed:b}"
+            );
+            assert_eq!(
+                d.torques(),
+                d.lagrange_torques(),
+                "n = {n}, reversed {reversed:b}"
+            );
+        }
     }
 }
