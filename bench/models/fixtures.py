@@ -65,7 +65,7 @@ PANDA_LOCKED = ("panda_finger_joint1", "panda_finger_joint2")
 
 
 def log(*args):
-    print(*args, file=sys.stderr)
+    print(*args, file=sys.stderr, flush=True)
 
 
 def fmt(x):
@@ -114,6 +114,21 @@ def evaluate(m, datas, dofs, qadr, q, qd, qdd):
     mujoco.mj_inverse(m, di)
 
 
+def rigid_bodies_only(m):
+    """Constraints, contacts and fluid forces off: what is left is the rigid-body dynamics with
+    the joints' armature, damping and springs (frictionloss is a constraint in MuJoCo)."""
+    m.opt.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_CONSTRAINT)
+    m.opt.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_CONTACT)
+    m.opt.density = 0.0
+    m.opt.viscosity = 0.0
+
+
+def chain_joints(m, bodies):
+    """The joints of these bodies, in qpos order."""
+    joints = [j for b in bodies for j in range(m.body_jntadr[b], m.body_jntadr[b] + m.body_jntnum[b])]
+    return sorted(joints, key=lambda j: m.jnt_qposadr[j])
+
+
 def body_path(m, tip):
     """Bodies from the world's child down to tip (world excluded)."""
     b = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, tip)
@@ -128,14 +143,10 @@ def body_path(m, tip):
 
 def mujoco_arm(name, file, tip, rng, notes, maxdiff, mineigs):
     m = mujoco.MjModel.from_xml_path(str(MODELS / file))
-    m.opt.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_CONSTRAINT)
-    m.opt.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_CONTACT)
-    m.opt.density = 0.0
-    m.opt.viscosity = 0.0
+    rigid_bodies_only(m)
 
     path = body_path(m, tip)
-    joints = [j for b in path for j in range(m.body_jntadr[b], m.body_jntadr[b] + m.body_jntnum[b])]
-    joints.sort(key=lambda j: m.jnt_qposadr[j])
+    joints = chain_joints(m, path)
     jnames = [mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_JOINT, j) for j in joints]
     types = [int(m.jnt_type[j]) for j in joints]
     if any(t in (int(mujoco.mjtJoint.mjJNT_FREE), int(mujoco.mjtJoint.mjJNT_BALL)) for t in types):

@@ -56,7 +56,16 @@ import numpy as np
 import pinocchio as pin
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from fixtures import body_path, check_spd, evaluate, line  # noqa: E402  (shared with the models' fixture)
+from fixtures import (  # noqa: E402  (shared with the models' fixture)
+    body_path,
+    chain_joints,
+    check_spd,
+    evaluate,
+    fmt,
+    line,
+    log,
+    rigid_bodies_only,
+)
 
 ROOT = Path(__file__).resolve().parents[2]
 EXPORT = ROOT / "tests" / "data" / "export"
@@ -64,15 +73,6 @@ SEED = 20240612
 STATES = 3
 TOL = 1e-10
 TIP = "tool"
-
-
-def log(*args):
-    print(*args, file=sys.stderr, flush=True)
-
-
-def fmt(x):
-    # repr of a Python float is the shortest string that reads back to the same double.
-    return repr(float(x))
 
 
 def mx(a):
@@ -177,14 +177,10 @@ def mujoco_arm(name, path, rng, notes, maxdiff, mineigs, loadlog, states_out):
     if exc is not None:
         notes.append(f"{name}: MuJoCo load failed: {exc}")
         return []
-    m.opt.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_CONSTRAINT)
-    m.opt.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_CONTACT)
-    m.opt.density = 0.0
-    m.opt.viscosity = 0.0
+    rigid_bodies_only(m)
 
     chain = body_path(m, TIP)
-    joints = [j for b in chain for j in range(m.body_jntadr[b], m.body_jntadr[b] + m.body_jntnum[b])]
-    joints.sort(key=lambda j: m.jnt_qposadr[j])
+    joints = chain_joints(m, chain)
     if len(joints) != m.njnt or m.nv != m.njnt or m.nq != m.njnt:
         raise SystemExit(f"{name}: not a single chain of 1-DoF joints (njnt {m.njnt}, nq {m.nq}, nv {m.nv})")
     jnames = [mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_JOINT, j) for j in joints]

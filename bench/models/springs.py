@@ -19,7 +19,7 @@ import mujoco
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from fixtures import check_spd, line  # noqa: E402  (shared with the models' fixture)
+from fixtures import check_spd, line, rigid_bodies_only  # noqa: E402  (shared with the models' fixture)
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -27,8 +27,7 @@ ROOT = Path(__file__).resolve().parents[2]
 def main():
     model = sys.argv[1] if len(sys.argv) > 1 else "tests/data/springs.xml"
     m = mujoco.MjModel.from_xml_path(str(ROOT / model))
-    m.opt.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_CONSTRAINT)
-    m.opt.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_CONTACT)
+    rigid_bodies_only(m)
     d = mujoco.MjData(m)
     rng = np.random.default_rng(20261205)
     names = [mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_JOINT, j) for j in range(m.njnt)]

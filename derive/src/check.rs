@@ -173,7 +173,9 @@ pub fn check_file(
         gravity,
         payload,
     };
-    if let Some((joint, _)) = literal(&spec).and_then(|l| planar_arm_core::definite::weak_joint(&l))
+    if let Some((joint, _)) = spec
+        .as_rational()
+        .and_then(|l| planar_arm_core::definite::weak_joint(&l))
     {
         cx.error_spanned_by(
             lit,
@@ -194,7 +196,7 @@ pub fn check_file(
 /// when the rest of the chain, armature or a payload keeps `M` definite. Arms with run-time
 /// parameters are checked by `Model::check` when their values are known.
 fn definite(cx: &Ctxt, arm: &Arm<'_>, spec: &ArmSpec<Poly>) -> bool {
-    let Some(literal) = literal(spec) else {
+    let Some(literal) = spec.as_rational() else {
         return true;
     };
     let Some((joint, relative)) = planar_arm_core::definite::weak_joint(&literal) else {
@@ -431,49 +433,4 @@ fn check_range(cx: &Ctxt, name: &str, joint: JointKind, v: &Value) -> Option<(Ra
 
 fn show_f64(r: &Rational) -> String {
     to_f64(r).map_or_else(|| r.to_string(), |x| format!("{x}"))
-}
-
-/// The arm over the rationals, if no value names a run-time parameter.
-pub fn literal(spec: &ArmSpec<Poly>) -> Option<ArmSpec<Rational>> {
-    let r = Poly::as_rational;
-    let pair = |c: &(Poly, Poly)| Some((r(&c.0)?, r(&c.1)?));
-    Some(ArmSpec {
-        links: spec
-            .links
-            .iter()
-            .map(|l| {
-                Some(LinkSpec {
-                    length: r(&l.length)?,
-                    mass: r(&l.mass)?,
-                    inertia: r(&l.inertia)?,
-                    com: pair(&l.com)?,
-                    armature: r(&l.armature)?,
-                    damping: r(&l.damping)?,
-                    frictionloss: r(&l.frictionloss)?,
-                    stiffness: r(&l.stiffness)?,
-                    springref: r(&l.springref)?,
-                    joint: l.joint,
-                    range: l.range.clone(),
-                    offset: match &l.offset {
-                        None => None,
-                        Some(o) => Some(Offset {
-                            angle: o.angle.clone(),
-                            cos: r(&o.cos)?,
-                            sin: r(&o.sin)?,
-                        }),
-                    },
-                    reversed: l.reversed,
-                })
-            })
-            .collect::<Option<Vec<_>>>()?,
-        gravity: pair(&spec.gravity)?,
-        payload: match &spec.payload {
-            None => None,
-            Some(p) => Some(PayloadSpec {
-                mass: r(&p.mass)?,
-                inertia: r(&p.inertia)?,
-                com: pair(&p.com)?,
-            }),
-        },
-    })
 }

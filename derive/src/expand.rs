@@ -14,7 +14,7 @@ use planar_arm_core::slp::Emit;
 use planar_arm_core::{ArmSpec, Expr, JointKind, Poly};
 
 use crate::ast::Arm;
-use crate::check::{check, literal};
+use crate::check::check;
 use crate::ctxt::Ctxt;
 
 pub fn derive(input: &DeriveInput) -> TokenStream {
@@ -166,7 +166,7 @@ fn derive_spec(
     spec: &ArmSpec<Poly>,
     header: &Header,
 ) -> Result<TokenStream, TokenStream> {
-    match literal(spec) {
+    match spec.as_rational() {
         Some(spec) => emit(arm, &spec, header),
         None => emit(arm, spec, header),
     }

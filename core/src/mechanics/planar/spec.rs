@@ -174,6 +174,21 @@ impl<C: Coefficient> ArmSpec<C> {
     }
 }
 
+impl ArmSpec<Poly> {
+    /// The arm over the rationals, if no value names a run-time parameter (or a named
+    /// constant): what the literal arms' exact paths take.
+    #[must_use]
+    pub fn as_rational(&self) -> Option<ArmSpec<Rational>> {
+        let mut numbers = true;
+        let spec = self.map(|c| {
+            let r = c.as_rational();
+            numbers &= r.is_some();
+            r.unwrap_or_default()
+        });
+        numbers.then_some(spec)
+    }
+}
+
 impl ArmSpec<Rational> {
     /// The same arm with every value a run-time parameter, named `v0, v1, ...` in the order
     /// link by link (length, mass, inertia, com x, com y, armature, damping, frictionloss),

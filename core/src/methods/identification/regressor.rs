@@ -500,19 +500,9 @@ pub fn base_parameters_from_energies(
         gravity: arm.gravity.clone(),
         payload: None,
     };
-    let rational = geometry.map(Poly::as_rational);
-    let numbers = rational.links.iter().all(|l| {
-        l.length.is_some()
-            && l.offset
-                .as_ref()
-                .is_none_or(|o| o.cos.is_some() && o.sin.is_some())
-    }) && rational.gravity.0.is_some()
-        && rational.gravity.1.is_some();
-    let base = if numbers {
-        let geometry = rational.map(|c| c.clone().unwrap_or_default());
-        energy_elimination(geometry, &parameters)?.into_poly()
-    } else {
-        energy_elimination(geometry, &parameters)?
+    let base = match geometry.as_rational() {
+        Some(numbers) => energy_elimination(numbers, &parameters)?.into_poly(),
+        None => energy_elimination(geometry, &parameters)?,
     };
     Some((parameters, base))
 }
