@@ -5,20 +5,22 @@
 //! about the origin (all in the frame's axes) needs the force `m a + dw x h + w x (w x h)` and
 //! the moment about the origin `J dw + w x J w + h x a`, both linear in `(m, h, J)`. Column `k`
 //! of link `i` is therefore the joint forces that carry the body whose parameters are all zero
-//! but parameter `k`, one: the outward pass (shared by every column) and the inward pass from
-//! link `i`, whose zeros fold away. The payload's ten parameters, in the tool frame, are a
+//! but parameter `k`, one. Joint `j` carries a wrench `(f, n)` on link `i` (moment about its
+//! origin) with the torque `v . f + w . n`, `(w, v)` the twist link `i` has (angular velocity,
+//! velocity of its origin) when joint `j` alone turns at unit rate: the outward pass of the
+//! motion and of these twists is shared by every column, and each entry is one such product,
+//! whose zeros fold away. The payload's ten parameters, in the tool frame, are a
 //! constant linear map of the last link's: `h = m p + R h_t`, `J = R J_t R^T + m (|p|^2 E -
 //! p p^T) + 2 (p . R h_t) E - p (R h_t)^T - (R h_t) p^T`.
 
 use crate::algebra::poly::Poly;
 use crate::algebra::ring::int;
+use crate::mechanics::planar::JointKind;
 use crate::mechanics::spatial::frames::tool_frame;
 use crate::mechanics::spatial::spec::{SpatialArmSpec, SpatialBody};
 use crate::programs::method::Method;
-use crate::programs::spatial::cross;
-use crate::programs::spatial_newton_euler::{
-    add, motions, scale, transmitted, Joint, Motion, DESCRIPTION, V3,
-};
+use crate::programs::spatial::{cross, dot};
+use crate::programs::spatial_newton_euler::{add, motions, scale, Joint, Motion, DESCRIPTION, V3};
 use crate::programs::unrolled::Terms;
 use crate::slp::{Id, Input, Program};
 
@@ -213,11 +215,24 @@ pub fn regressor(
     let joints: Vec<Joint> = (0..n).map(|j| Joint::new(&mut p, arm, j)).collect();
     let motions = motions(&mut p, arm, &joints, Terms::ALL);
     let zero = p.constant(int(0));
-    let nothing = ([zero; 3], [zero; 3]);
+    let twists = unit_twists(&mut p, &joints, &motions);
+    // Row `j` of a link-`i` column is joint `j`'s unit twist against the unit body's wrench,
+    // both in link `i`'s axes: the twists are carried outward once per pair of joint and link
+    // and shared by that link's ten columns, where carrying each column's wrench inward cost
+    // a transformation per column and joint (the PUMA's base regressor 642 multiplications
+    // that way, 464 this; the UR5's 652 and 407, the Panda's 833 and 751).
     let carrying = |p: &mut Program, link: usize, body: &(Poly, [Poly; 3], [[Poly; 3]; 3])| {
-        let mut loads = vec![nothing; n];
-        loads[link] = standard_load(p, &motions[link], body);
-        transmitted(p, &joints, &motions, &loads, link)
+        let (force, moment) = standard_load(p, &motions[link], body);
+        (0..n)
+            .map(|j| match twists[link].get(j) {
+                Some((w, v)) => {
+                    let along = dot(p, v, &force);
+                    let about = dot(p, w, &moment);
+                    p.add(along, about)
+                }
+                None => zero,
+            })
+            .collect::<Vec<Id>>()
     };
     let on_row =
         |j: usize, x: Id| -> Vec<Id> { (0..n).map(|i| if i == j { x } else { zero }).collect() };
@@ -245,4 +260,33 @@ pub fn regressor(
         "{DESCRIPTION}: once per standard parameter, that parameter one and the others zero (the \
          forces are linear in them), the motion of the links shared"
     ))
+}
+
+/// Joint `j`'s unit twist in link `i`'s axes for every `j <= i` (`out[i][j]`): the angular
+/// velocity and the velocity of link `i`'s origin when joint `j` alone moves at unit rate. A
+/// wrench `(f, n)` on link `i` (moment about its origin) then loads joint `j` with `v . f + w .
+/// n`, its power per unit rate.
+fn unit_twists(p: &mut Program, joints: &[Joint], motions: &[Motion]) -> Vec<Vec<(V3, V3)>> {
+    let zero = p.constant(int(0));
+    let mut out: Vec<Vec<(V3, V3)>> = Vec::with_capacity(joints.len());
+    for (i, joint) in joints.iter().enumerate() {
+        let r = motions[i].r;
+        let mut row = Vec::with_capacity(i + 1);
+        if i > 0 {
+            for (w, v) in out[i - 1].clone() {
+                let lever = cross(p, &w, &joint.pre.p);
+                let at_axis = add(p, &v, &lever);
+                let w = joint.inward(p, &w);
+                let v = joint.inward(p, &at_axis);
+                let swing = cross(p, &w, &r);
+                row.push((w, add(p, &v, &swing)));
+            }
+        }
+        row.push(match joint.kind {
+            JointKind::Revolute => (joint.z, cross(p, &joint.z, &r)),
+            JointKind::Prismatic => ([zero; 3], joint.z),
+        });
+        out.push(row);
+    }
+    out
 }
