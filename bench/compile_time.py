@@ -87,12 +87,13 @@ def crate(root, n, params, lengths=False, repo=REPO, derivatives=False, prismati
     return name, path
 
 
-def spatial_crate(root, n, params, repo=REPO, derivatives=False):
+def spatial_crate(root, n, params, repo=REPO, derivatives=False, exact=False):
     """A crate deriving an `n`-joint spatial arm: the PUMA 560 at six joints, Franka's Panda
     (modified DH) at seven, otherwise a chain of alternating twists; with `params` its masses
-    and centres of mass are run-time parameters. It calls the kinematics, the closed-form IK,
-    and the inverse and forward dynamics, mass matrix and bias, so that those are compiled."""
-    name = f"spatial{n}{'p' if params else ''}{'d' if derivatives else ''}"
+    and centres of mass are run-time parameters; with `exact`, `#[arm(exact_dynamics)]`. It calls
+    the kinematics, the closed-form IK, and the inverse and forward dynamics, mass matrix and
+    bias, so that those are compiled."""
+    name = f"spatial{n}{'p' if params else ''}{'d' if derivatives else ''}{'x' if exact else ''}"
     path = os.path.join(root, name)
     os.makedirs(os.path.join(path, "src"), exist_ok=True)
     with open(os.path.join(path, "Cargo.toml"), "w") as f:
@@ -130,7 +131,8 @@ def spatial_crate(root, n, params, repo=REPO, derivatives=False):
     with open(os.path.join(path, "src", "main.rs"), "w") as f:
         f.write(
             "use planar_arm::prelude::*;\n\n"
-            "#[derive(SpatialArm)]\n#[arm(gravity = (0, 0, -9.81))]\n"
+            "#[derive(SpatialArm)]\n"
+            f"#[arm(gravity = (0, 0, -9.81){', exact_dynamics' if exact else ''})]\n"
             f"struct Arm {{\n{chr(10).join(links + fields)}\n}}\n\n"
             "fn main() {\n"
             f"    let arm = Arm {{ {' '.join(values)} }};\n"
@@ -184,6 +186,10 @@ def main():
         help="#[derive(SpatialArm)] of n joints (the PUMA 560 at six, the Panda at seven)",
     )
     ap.add_argument(
+        "--exact-dynamics", action="store_true",
+        help="with --spatial: #[arm(exact_dynamics)] (M and c multiplied out for EXACT)",
+    )
+    ap.add_argument(
         "--prismatic", action="store_true",
         help="every second joint prismatic (links 2, 4, ...)",
     )
@@ -196,7 +202,9 @@ def main():
             kinds = [False] if args.literal_only or n > 14 else [False, True]
             for params in kinds:
                 if args.spatial:
-                    name, path = spatial_crate(root, n, params, args.repo, args.derivatives)
+                    name, path = spatial_crate(
+                        root, n, params, args.repo, args.derivatives, args.exact_dynamics
+                    )
                 else:
                     name, path = crate(
                         root, n, params, args.lengths and params, args.repo, args.derivatives,
@@ -208,6 +216,8 @@ def main():
                 kind = ("parameters, lengths" if args.lengths else "parameters") if params else "literal"
                 if args.spatial:
                     kind = "spatial, " + kind
+                if args.exact_dynamics:
+                    kind += ", exact_dynamics"
                 if args.prismatic:
                     kind += ", every second joint prismatic"
                 print(f"| {n} | {kind} | {best[0]:.2f} | {best[1]:.0f} |", flush=True)

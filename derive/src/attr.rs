@@ -259,6 +259,11 @@ fn parse_entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut At
                     .collect::<Vec<_>>()
                     .join(", ")
             )
+        } else if key == "exact_dynamics" {
+            // #[arm(exact_dynamics)] on a planar arm
+            "`exact_dynamics` is a key of #[derive(SpatialArm)]; a planar arm's `EXACT` always \
+             holds M and c multiplied out"
+                .to_string()
         } else if SPATIAL_KEYS.contains(&key.as_str()) {
             // #[arm(dh(a = 0.4))] on a planar arm: no missing-`length` error on top
             if key != "axis" {

@@ -646,8 +646,10 @@ pub struct SpatialExpansion<const N: usize> {
     /// The gravity torques g(q) = dV/dq.
     pub gravity: [Terms; N],
     /// The mass matrix M(q), row-major (both triangles), from the kinetic energy written in
-    /// each link's own axes; `None` where it would exceed the budget or an exact coefficient
-    /// would not fit the `i128` of this data.
+    /// each link's own axes; `None` where a link's velocities would exceed the budget that
+    /// keeps builds quick (80 terms, arms of up to three or four joints; the struct key
+    /// `#[arm(exact_dynamics)]` lifts it) or an exact coefficient would not fit the `i128` of
+    /// this data.
     pub mass_matrix: Option<[[Terms; N]; N]>,
     /// The velocity-product forces c(q, qd), with `mass_matrix`.
     pub coriolis: Option<[Terms; N]>,

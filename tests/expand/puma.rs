@@ -286,7 +286,7 @@ Cost: 212 multiplications, 172 additions, 0 divisions, 5 sin_cos pairs.*/
     }
     /**The mass matrix M(q), each joint's armature on its diagonal.
 
-Not multiplied out for this arm: a link's velocities would exceed 80 terms, and the products that M and c need would cost its build more than they are worth (`EXACT` has its tool pose, V and g where those fit; `planar_arm::symbolic::spatial::lagrangian::expand_dynamics`, feature `symbolic`, multiplies M and c out for any budget).
+Not multiplied out for this arm: a link's velocities would exceed 80 terms, and the products that M and c need would cost its build more than they are worth (`EXACT` has its tool pose, V and g where those fit). `#[arm(exact_dynamics)]` on the struct multiplies them out for `EXACT` and these docs whatever their size, as does `planar_arm::symbolic::spatial::lagrangian::expand_dynamics` (feature `symbolic`) for any budget.
 
 the composite-rigid-body algorithm unrolled, each link in its own frame, the joints' constant transformations folded in
 
@@ -459,7 +459,7 @@ Cost: 155 multiplications, 166 additions, 0 divisions, 5 sin_cos pairs.*/
     }
     /**The velocity-product (Coriolis and centrifugal) forces c(q, qd).
 
-Not multiplied out for this arm: a link's velocities would exceed 80 terms, and the products that M and c need would cost its build more than they are worth (`EXACT` has its tool pose, V and g where those fit; `planar_arm::symbolic::spatial::lagrangian::expand_dynamics`, feature `symbolic`, multiplies M and c out for any budget).
+Not multiplied out for this arm: a link's velocities would exceed 80 terms, and the products that M and c need would cost its build more than they are worth (`EXACT` has its tool pose, V and g where those fit). `#[arm(exact_dynamics)]` on the struct multiplies them out for `EXACT` and these docs whatever their size, as does `planar_arm::symbolic::spatial::lagrangian::expand_dynamics` (feature `symbolic`) for any budget.
 
 the recursive Newton-Euler algorithm unrolled, each link in its own frame, the joints' constant transformations folded in
 

@@ -17,6 +17,9 @@ pub struct Header {
     pub joint_names: Vec<String>,
     /// `JOINT_NAMES`' documentation.
     pub joint_names_doc: String,
+    /// A spatial arm's `#[arm(exact_dynamics)]`: M and c multiplied out for `EXACT` whatever
+    /// their size, not only within the budget that keeps builds quick.
+    pub exact_dynamics: bool,
 }
 
 impl Header {
@@ -35,6 +38,7 @@ impl Header {
             ty,
             where_clause,
             fields,
+            exact_dynamics: false,
         }
     }
 }

@@ -27,7 +27,22 @@ use crate::slp::Input;
 /// # Errors
 /// If a constant does not fit in `f64`, or an exact coefficient in the `i128` of `EXACT`.
 pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenStream, EmitError> {
-    let d = SpatialDerived::new(arm);
+    let d = if header.exact_dynamics {
+        SpatialDerived::with_exact_dynamics(arm)
+    } else {
+        SpatialDerived::new(arm)
+    };
+    if header.exact_dynamics && d.dynamics.is_none() {
+        return Err(EmitError {
+            message: format!(
+                "`exact_dynamics` asks for M and c multiplied out, but this arm's tool pose \
+                 already passes {EXPANSION_BUDGET} terms (twists or rotations that are not \
+                 multiples of pi/2 at most joints), so its dynamics would not fit a build; \
+                 remove the key (the derive then evaluates the products of the joints' \
+                 transformations)"
+            ),
+        });
+    }
     let n = arm.joints.len();
     let nn = Literal::usize_unsuffixed(n);
     let q = Param::Joints("q", Input::Q);
@@ -332,9 +347,11 @@ fn dynamics_doc(title: &str, d: &SpatialDerived, mass: bool) -> String {
         return format!(
             "{title}\n\nNot multiplied out for this arm: a link's velocities would exceed \
              {DYNAMICS_BUDGET} terms, and the products that M and c need would cost its build \
-             more than they are worth (`EXACT` has its tool pose, V and g where those fit; \
-             `planar_arm::symbolic::spatial::lagrangian::expand_dynamics`, feature `symbolic`, \
-             multiplies M and c out for any budget)."
+             more than they are worth (`EXACT` has its tool pose, V and g where those fit). \
+             `#[arm(exact_dynamics)]` on the struct multiplies them out for `EXACT` and these \
+             docs whatever their size, as does \
+             `planar_arm::symbolic::spatial::lagrangian::expand_dynamics` (feature `symbolic`) \
+             for any budget."
         );
     };
     let rows: Vec<(String, &Expr<Poly>)> = if mass {

@@ -151,6 +151,17 @@ impl SpatialDerived {
         Self::in_form(arm, SpatialForm::Cheaper)
     }
 
+    /// As [`new`](Self::new), with M and c multiplied out whatever their size (the arm's
+    /// `#[arm(exact_dynamics)]`), where the kinematics is.
+    #[must_use]
+    pub fn with_exact_dynamics(arm: &SpatialArmSpec) -> Self {
+        let mut d = Self::new(arm);
+        if d.kinematics.is_some() && d.dynamics.is_none() {
+            d.dynamics = expand_dynamics(arm, usize::MAX);
+        }
+        d
+    }
+
     /// Derives the arm with every method in `form` (tests check both forms against the
     /// reference, whichever the derive would choose). An arm whose expansion exceeds
     /// [`EXPANSION_BUDGET`] gets the product form whatever `form` asks.

@@ -108,6 +108,9 @@ pub struct SpatialAttrs {
     pub model_written: bool,
     pub base: Option<syn::LitStr>,
     pub tip: Option<syn::LitStr>,
+    /// `exact_dynamics` (where it was written): M and c multiplied out for `EXACT` whatever
+    /// their size.
+    pub exact_dynamics: Option<TokenStream>,
 }
 
 pub use crate::models::Format as ModelFormat;
@@ -145,6 +148,7 @@ const STRUCT_KEYS: &[&str] = &[
     "mjcf",
     "base",
     "tip",
+    "exact_dynamics",
 ];
 pub const INERTIA_KEYS: [&str; 6] = ["xx", "yy", "zz", "xy", "xz", "yz"];
 
@@ -207,6 +211,10 @@ fn entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut SpatialA
         skip_rest(meta);
         return;
     }
+    if key == "exact_dynamics" {
+        exact_dynamics(cx, meta, out);
+        return;
+    }
     let is_geometry = matches!(key.as_str(), "dh" | "mdh" | "origin");
     let is_list = is_geometry || key == "inertia" || key == "payload_inertia" || key == "tool";
     let message = if let Some(g) = out.geometry.as_ref().filter(|_| is_geometry) {
@@ -263,6 +271,25 @@ fn entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut SpatialA
         cx.syn_error(err);
         out.malformed = true;
         skip_rest(meta);
+    }
+}
+
+/// The flag `exact_dynamics`, which takes no value.
+fn exact_dynamics(cx: &Ctxt, meta: &ParseNestedMeta<'_>, out: &mut SpatialAttrs) {
+    let message = if out.exact_dynamics.is_some() {
+        Some("duplicate key `exact_dynamics`; give it once")
+    } else if meta.input.peek(syn::Token![=]) || meta.input.peek(syn::token::Paren) {
+        // #[arm(exact_dynamics = true)]
+        Some("`exact_dynamics` is a flag: write `#[arm(exact_dynamics)]`, without a value")
+    } else {
+        None
+    };
+    match message {
+        Some(m) => {
+            cx.error_spanned_by(&meta.path, m);
+            skip_rest(meta);
+        }
+        None => out.exact_dynamics = Some(meta.path.to_token_stream()),
     }
 }
 

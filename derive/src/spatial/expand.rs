@@ -37,6 +37,7 @@ fn try_derive(input: &DeriveInput) -> Result<TokenStream, TokenStream> {
     let mut header = crate::expand::header(input);
     header.joint_names.clone_from(&names);
     header.joint_names_doc = joint_names_doc(&arm, file.as_ref());
+    header.exact_dynamics = arm.attrs.exact_dynamics.is_some();
     let generate = |spec: &_| planar_arm_core::spatial::generate_spatial(spec, &header);
     // As for planar arms: literals whose exact coefficients overflow `EXACT` enter as named
     // constants, fewer digits each round.
@@ -52,8 +53,14 @@ fn try_derive(input: &DeriveInput) -> Result<TokenStream, TokenStream> {
             }
         }
     }
-    let mut tokens = generated
-        .map_err(|e| syn::Error::new_spanned(&input.ident, e.to_string()).to_compile_error())?;
+    let mut tokens = generated.map_err(|e| {
+        // The key's own refusal points at the key.
+        let at = match &arm.attrs.exact_dynamics {
+            Some(key) if e.message.starts_with("`exact_dynamics`") => key.clone(),
+            _ => input.ident.to_token_stream(),
+        };
+        syn::Error::new_spanned(at, e.to_string()).to_compile_error()
+    })?;
     tokens.extend(joint_types(&arm));
     if let Some(f) = &file {
         // `include_bytes!` is how a derive makes cargo rebuild the user's crate when a file it

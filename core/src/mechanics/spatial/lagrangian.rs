@@ -143,7 +143,7 @@ pub fn expand_dynamics(arm: &SpatialArmSpec, budget: usize) -> Option<SpatialDyn
             energy.add_assign(&body_energy(&body, &w, &v));
         }
         energy.add_assign(&qd.mul(&qd).scale_by(&spec.armature).scale(&half));
-        if size(&energy) > budget * n {
+        if size(&energy) > budget.saturating_mul(n) {
             return None;
         }
     }
