@@ -55,15 +55,17 @@ pub struct SpatialDerived {
 }
 
 impl SpatialDerived {
-    /// The dynamics' programs, which do not depend on the form the kinematics take.
+    /// The dynamics' programs, which do not depend on the form the kinematics take; M and c
+    /// multiplied out within `budget` where the kinematics is.
     fn with_dynamics(
         arm: &SpatialArmSpec,
         kinematics: Option<SpatialKinematics>,
         [tip_pose, link_poses, jacobian, gravity, potential_energy]: [Method; 5],
+        budget: usize,
     ) -> Self {
         let dynamics = kinematics
             .as_ref()
-            .and_then(|_| expand_dynamics(arm, DYNAMICS_BUDGET));
+            .and_then(|_| expand_dynamics(arm, budget));
         Self {
             kinematics,
             dynamics,
@@ -155,11 +157,7 @@ impl SpatialDerived {
     /// `#[arm(exact_dynamics)]`), where the kinematics is.
     #[must_use]
     pub fn with_exact_dynamics(arm: &SpatialArmSpec) -> Self {
-        let mut d = Self::new(arm);
-        if d.kinematics.is_some() && d.dynamics.is_none() {
-            d.dynamics = expand_dynamics(arm, usize::MAX);
-        }
-        d
+        Self::within(arm, SpatialForm::Cheaper, usize::MAX)
     }
 
     /// Derives the arm with every method in `form` (tests check both forms against the
@@ -167,6 +165,11 @@ impl SpatialDerived {
     /// [`EXPANSION_BUDGET`] gets the product form whatever `form` asks.
     #[must_use]
     pub fn in_form(arm: &SpatialArmSpec, form: SpatialForm) -> Self {
+        Self::within(arm, form, DYNAMICS_BUDGET)
+    }
+
+    /// [`in_form`](Self::in_form) with M and c multiplied out within `budget`.
+    fn within(arm: &SpatialArmSpec, form: SpatialForm, budget: usize) -> Self {
         let (g_product, v_product) = product::gravity(arm);
         let Some(k) = SpatialKinematics::derive_within(arm, EXPANSION_BUDGET) else {
             let kinematics = [
@@ -176,7 +179,7 @@ impl SpatialDerived {
                 g_product,
                 v_product,
             ];
-            return Self::with_dynamics(arm, None, kinematics);
+            return Self::with_dynamics(arm, None, kinematics, budget);
         };
         let tip_pose = form.pick(product::tip_pose(arm), expanded(&frame_rows("", &k.tool)));
         let link_rows: Vec<(String, &Expr<Poly>)> = k
@@ -202,6 +205,7 @@ impl SpatialDerived {
             arm,
             Some(k),
             [tip_pose, link_poses, jacobian, gravity, potential_energy],
+            budget,
         )
     }
 }

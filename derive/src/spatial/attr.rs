@@ -211,10 +211,6 @@ fn entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut SpatialA
         skip_rest(meta);
         return;
     }
-    if key == "exact_dynamics" {
-        exact_dynamics(cx, meta, out);
-        return;
-    }
     let is_geometry = matches!(key.as_str(), "dh" | "mdh" | "origin");
     let is_list = is_geometry || key == "inertia" || key == "payload_inertia" || key == "tool";
     let message = if let Some(g) = out.geometry.as_ref().filter(|_| is_geometry) {
@@ -244,6 +240,12 @@ fn entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut SpatialA
                 "tool frame's"
             }
         ))
+    } else if key == "exact_dynamics" {
+        // #[arm(exact_dynamics = true)]
+        (meta.input.peek(syn::Token![=]) || meta.input.peek(syn::token::Paren)).then(|| {
+            "`exact_dynamics` is a flag: write `#[arm(exact_dynamics)]`, without a value"
+                .to_string()
+        })
     } else if is_list != meta.input.peek(syn::token::Paren)
         || !is_list && !meta.input.peek(syn::Token![=])
     {
@@ -264,6 +266,10 @@ fn entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut SpatialA
         "inertia" | "payload_inertia" => inertia(cx, meta, &key, out),
         "tool" => tool(cx, meta, out),
         "crate" => krate(meta, out),
+        "exact_dynamics" => {
+            out.exact_dynamics = Some(meta.path.to_token_stream());
+            Ok(())
+        }
         "urdf" | "mjcf" | "base" | "tip" => model_key(cx, meta, &key, out),
         _ => keyed_value(cx, meta, &key, out),
     };
@@ -271,25 +277,6 @@ fn entry(cx: &Ctxt, meta: &ParseNestedMeta<'_>, place: Place, out: &mut SpatialA
         cx.syn_error(err);
         out.malformed = true;
         skip_rest(meta);
-    }
-}
-
-/// The flag `exact_dynamics`, which takes no value.
-fn exact_dynamics(cx: &Ctxt, meta: &ParseNestedMeta<'_>, out: &mut SpatialAttrs) {
-    let message = if out.exact_dynamics.is_some() {
-        Some("duplicate key `exact_dynamics`; give it once")
-    } else if meta.input.peek(syn::Token![=]) || meta.input.peek(syn::token::Paren) {
-        // #[arm(exact_dynamics = true)]
-        Some("`exact_dynamics` is a flag: write `#[arm(exact_dynamics)]`, without a value")
-    } else {
-        None
-    };
-    match message {
-        Some(m) => {
-            cx.error_spanned_by(&meta.path, m);
-            skip_rest(meta);
-        }
-        None => out.exact_dynamics = Some(meta.path.to_token_stream()),
     }
 }
 
