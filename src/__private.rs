@@ -10,6 +10,11 @@ use nalgebra::{Isometry2, SMatrix, SVector, Translation2, UnitComplex};
 
 use crate::Real;
 
+/// The largest methods' bodies, run in an AVX2 copy where the processor has it.
+pub use crate::dispatch::{
+    dispatch, BaseRegressor, ForwardDynamicsDerivatives, InverseDynamicsDerivatives, Kernel,
+    Regressor,
+};
 /// The forward dynamics' solve after `mass_matrix_and_bias` (three or more joints).
 pub use crate::ldlt::{forward_solve, Floor};
 /// The trait's default for the forward dynamics' derivatives, named here for the benches.

@@ -226,10 +226,13 @@
 //! parameters. Energy is conserved under integration, `Mdot - 2C` is skew-symmetric, and the
 //! paper's hand derivations are reproduced exactly where they are right.
 #![cfg_attr(not(feature = "std"), no_std)]
-#![forbid(unsafe_code)]
+// One `unsafe` block in the crate, in `dispatch`: calling the AVX2 copy of a generated method
+// after the processor has said it runs AVX2.
+#![deny(unsafe_code)]
 #![warn(missing_docs)]
 
 mod arm;
+mod dispatch;
 mod error;
 pub mod exact;
 mod frozen;

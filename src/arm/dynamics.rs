@@ -117,6 +117,17 @@ pub trait Dynamics<const N: usize> {
     ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
         Jet::inverse_dynamics_derivatives(self, q, qd, qdd)
     }
+    /// The body of a generated [`inverse_dynamics_derivatives`](Self::inverse_dynamics_derivatives),
+    /// which runs it through `__private::dispatch` (the AVX2 copy where the processor has it).
+    #[doc(hidden)]
+    fn __inverse_dynamics_derivatives_kernel(
+        &self,
+        q: &SVector<f64, N>,
+        qd: &SVector<f64, N>,
+        qdd: &SVector<f64, N>,
+    ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
+        Jet::inverse_dynamics_derivatives(self, q, qd, qdd)
+    }
 
     /// The partial derivatives of [`forward_dynamics`](Self::forward_dynamics),
     /// `(dqdd/dq, dqdd/dqd, dqdd/dtau)`, N x N each, as Pinocchio's `computeABADerivatives`:
@@ -138,8 +149,25 @@ pub trait Dynamics<const N: usize> {
         qd: &SVector<f64, N>,
         tau: &SVector<f64, N>,
     ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
+        crate::dispatch::dispatch(crate::dispatch::ForwardDynamicsDerivatives {
+            arm: self,
+            q,
+            qd,
+            tau,
+        })
+    }
+    /// The body of [`forward_dynamics_derivatives`](Self::forward_dynamics_derivatives), run
+    /// through `__private::dispatch` (the AVX2 copy where the processor has it): this default,
+    /// or the program the derive emits.
+    #[doc(hidden)]
+    fn __forward_dynamics_derivatives_kernel(
+        &self,
+        q: &SVector<f64, N>,
+        qd: &SVector<f64, N>,
+        tau: &SVector<f64, N>,
+    ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
         let qdd = self.forward_dynamics(q, qd, tau);
-        let (dq, dqd) = self.inverse_dynamics_derivatives(q, qd, &qdd);
+        let (dq, dqd) = self.__inverse_dynamics_derivatives_kernel(q, qd, &qdd);
         mass_inverse::inverse_products(&self.mass_matrix(q), &dq, &dqd).unwrap_or_else(|| {
             let nan = SMatrix::from_element(f64::NAN);
             (nan, nan, nan)

@@ -415,6 +415,27 @@ Cost: 68 multiplications, 76 additions, 0 divisions, 3 sin_cos pairs.*/
         ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 3, 3>,
         ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 3, 3>,
     ) {
+        ::planar_arm::__private::dispatch(::planar_arm::__private::InverseDynamicsDerivatives::<
+            Self,
+            3,
+        > {
+            arm: self,
+            q: __q,
+            qd: __qd,
+            qdd: __qdd,
+        })
+    }
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __inverse_dynamics_derivatives_kernel(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+        __qdd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+    ) -> (
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 3, 3>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 3, 3>,
+    ) {
         let [__q1, __q2, __q3] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2, __qd3] = ::planar_arm::__private::unpack(__qd);
         let [__qdd1, __qdd2, __qdd3] = ::planar_arm::__private::unpack(__qdd);
@@ -500,6 +521,28 @@ qdd from the forward dynamics program; dtau/dq and dtau/dqd at that qdd as `inve
 Cost: 171 multiplications, 178 additions, 3 divisions, 3 sin_cos pairs.*/
     #[inline]
     fn forward_dynamics_derivatives(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+        __tau: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
+    ) -> (
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 3, 3>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 3, 3>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 3, 3>,
+    ) {
+        ::planar_arm::__private::dispatch(::planar_arm::__private::ForwardDynamicsDerivatives::<
+            Self,
+            3,
+        > {
+            arm: self,
+            q: __q,
+            qd: __qd,
+            tau: __tau,
+        })
+    }
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __forward_dynamics_derivatives_kernel(
         &self,
         __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,
         __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 3>,

@@ -291,6 +291,27 @@ Cost: 17 multiplications, 10 additions, 0 divisions, 1 sin_cos pairs.*/
         ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
         ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
     ) {
+        ::planar_arm::__private::dispatch(::planar_arm::__private::InverseDynamicsDerivatives::<
+            Self,
+            2,
+        > {
+            arm: self,
+            q: __q,
+            qd: __qd,
+            qdd: __qdd,
+        })
+    }
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __inverse_dynamics_derivatives_kernel(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+        __qdd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+    ) -> (
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
+    ) {
         let [__q1, __q2] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2] = ::planar_arm::__private::unpack(__qd);
         let [__qdd1, _] = ::planar_arm::__private::unpack(__qdd);
@@ -324,6 +345,28 @@ qdd from the forward dynamics program; dtau/dq and dtau/dqd at that qdd as `inve
 Cost: 36 multiplications, 18 additions, 2 divisions, 1 sin_cos pairs.*/
     #[inline]
     fn forward_dynamics_derivatives(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+        __tau: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
+    ) -> (
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 2, 2>,
+    ) {
+        ::planar_arm::__private::dispatch(::planar_arm::__private::ForwardDynamicsDerivatives::<
+            Self,
+            2,
+        > {
+            arm: self,
+            q: __q,
+            qd: __qd,
+            tau: __tau,
+        })
+    }
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __forward_dynamics_derivatives_kernel(
         &self,
         __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,
         __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 2>,

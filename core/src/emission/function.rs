@@ -37,6 +37,10 @@ pub(crate) struct Fn<'a> {
     /// Emitted generic over the scalar (`fn NAME<__T: ::planar_arm::Real>`), its vectors of
     /// `__T`.
     pub(crate) generic: bool,
+    /// Run through `::planar_arm::__private::dispatch` (see `src/dispatch.rs`): the kernel's
+    /// type there and its const arguments after `Self`. The body goes in a hidden
+    /// `__NAME_kernel`, which the method hands to the kernel with its inputs.
+    pub(crate) kernel: Option<(&'static str, TokenStream)>,
 }
 
 impl<'a> Fn<'a> {
@@ -58,7 +62,15 @@ impl<'a> Fn<'a> {
             touch: TokenStream::new(),
             finish,
             generic: true,
+            kernel: None,
         }
+    }
+
+    /// The same method run through the kernel `name` of `::planar_arm::__private` with the
+    /// const arguments `args`.
+    pub(crate) fn dispatched(mut self, name: &'static str, args: TokenStream) -> Self {
+        self.kernel = Some((name, args));
+        self
     }
 
     /// The same method in `f64` only.
@@ -139,6 +151,39 @@ pub(crate) fn emit_fn(
     } else {
         quote!(#[inline])
     };
+    if let (Some((kernel, args)), None) = (&f.kernel, frozen) {
+        let kernel = quote::format_ident!("{kernel}");
+        let body = quote::format_ident!("__{}_kernel", f.name);
+        let inputs: Vec<_> = f
+            .params
+            .iter()
+            .filter_map(|p| match *p {
+                Param::Joints(name, _) => Some((quote::format_ident!("{name}"), local(name))),
+                Param::Force | Param::Torque => None,
+            })
+            .collect();
+        let (fields, locals): (Vec<_>, Vec<_>) = inputs.into_iter().unzip();
+        let real = if f.generic { quote!(__T) } else { quote!(#F64) };
+        let nn = Literal::usize_unsuffixed(n);
+        return Ok(quote! {
+            #[doc = #doc]
+            #inline
+            fn #name #generics(&self, #(#locals: &::planar_arm::nalgebra::SVector<#real, #nn>),*) -> #ret {
+                ::planar_arm::__private::dispatch(::planar_arm::__private::#kernel::<Self, #args> {
+                    arm: self,
+                    #(#fields: #locals),*
+                })
+            }
+            #[doc(hidden)]
+            #[inline(always)]
+            fn #body #generics(&self, #(#params),*) -> #ret {
+                #touch
+                #(#unpack)*
+                #(#statements)*
+                #result
+            }
+        });
+    }
     Ok(quote! {
         #[doc = #doc]
         #hidden

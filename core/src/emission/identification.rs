@@ -91,6 +91,7 @@ pub(crate) fn identification_impl(
             method: regressor,
             touch: TokenStream::new(),
             finish: Box::new(move |ids| matrix(n, pp, ids)),
+            kernel: Some(("Regressor", quote!(#nn, #pl, #bl))),
         },
         Fn {
             name: "standard_parameters",
@@ -101,6 +102,7 @@ pub(crate) fn identification_impl(
             method: standard,
             touch: TokenStream::new(),
             finish: Box::new(vector),
+            kernel: None,
         },
         Fn {
             name: "base_regressor",
@@ -111,6 +113,7 @@ pub(crate) fn identification_impl(
             method: base_regressor,
             touch: TokenStream::new(),
             finish: Box::new(move |ids| matrix(n, bb, ids)),
+            kernel: Some(("BaseRegressor", quote!(#nn, #pl, #bl))),
         },
         Fn {
             name: "base_parameters",
@@ -121,6 +124,7 @@ pub(crate) fn identification_impl(
             method: base,
             touch: TokenStream::new(),
             finish: Box::new(vector),
+            kernel: None,
         },
     ];
     let mut fns = Vec::new();

@@ -239,7 +239,8 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
                     quote!((#dq, #dqd))
                 }),
             )
-            .in_f64(),
+            .in_f64()
+            .dispatched("InverseDynamicsDerivatives", quote!(#nn)),
         );
     }
     let mut body = Vec::with_capacity(fns.len() + 12);

@@ -30,7 +30,8 @@ pub(super) fn methods<'a, C: Emit>(d: &'a Derived<C>, cx: &Context, table: &mut 
                     quote!((#dq, #dqd))
                 }),
             )
-            .in_f64(),
+            .in_f64()
+            .dispatched("InverseDynamicsDerivatives", quote!(#nn)),
         );
     }
     if let Some(method) = d.forward_dynamics_derivatives_method() {
@@ -49,7 +50,8 @@ pub(super) fn methods<'a, C: Emit>(d: &'a Derived<C>, cx: &Context, table: &mut 
                     quote!((#(#m),*))
                 }),
             )
-            .in_f64(),
+            .in_f64()
+            .dispatched("ForwardDynamicsDerivatives", quote!(#nn)),
         );
     }
 }

@@ -1,0 +1,150 @@
+//! The largest generated methods run in a copy compiled for AVX2 where the processor has it.
+//!
+//! The derivatives and the regressors are thousands of straight-line operations, too long for
+//! the baseline x86-64 instruction set's two-operand SSE2 forms: the PUMA 560's
+//! `inverse_dynamics_derivatives` compiled to 7,900 instructions and 51 KB, a third of them
+//! register copies and stack reloads, which no longer fit the processor's first-level
+//! instruction cache. The same source compiled with AVX2's three-operand forms is 34 KB and ran
+//! in a third to a half of the time (docs/performance.md). A user's build passes no
+//! `target-cpu`, so the crate compiles the method twice, as BLAS libraries do, and chooses at run
+//! time: [`dispatch`] asks the processor once (the standard library caches the answer) and runs
+//! the AVX2 copy where it can.
+//!
+//! The two copies compute the same function to the bit: Rust does not contract `a * b + c` into
+//! a fused multiply-add unless asked, so enabling AVX2 changes the instructions and not the
+//! rounding (`tests/dispatch.rs` compares them bit for bit in an optimised build).
+//!
+//! Only optimised builds without debug assertions (Cargo's `release` and `bench` profiles) on
+//! x86-64 with `std` compile the second copy: a `dev` build would spend compile time on a copy
+//! it does not optimise, and without `std` there is no run-time detection. Where the build
+//! already targets AVX2 (`-C target-cpu=native`), there is one copy and no question asked.
+
+/// A method's body, with its arm and inputs: what [`dispatch`] runs.
+pub trait Kernel {
+    /// What the method returns.
+    type Output;
+    /// Runs the body. Implementations are `#[inline(always)]`, so that the body is compiled
+    /// into each copy of [`dispatch`]'s caller.
+    fn run(self) -> Self::Output;
+}
+
+/// Runs `k`, in the AVX2 copy where the build has one and the processor can run it.
+#[inline(always)]
+pub fn dispatch<K: Kernel>(k: K) -> K::Output {
+    #[cfg(all(
+        target_arch = "x86_64",
+        feature = "std",
+        not(debug_assertions),
+        not(target_feature = "avx2")
+    ))]
+    {
+        if std::is_x86_feature_detected!("avx2") {
+            return avx2::run(k);
+        }
+    }
+    k.run()
+}
+
+#[cfg(all(
+    target_arch = "x86_64",
+    feature = "std",
+    not(debug_assertions),
+    not(target_feature = "avx2")
+))]
+#[allow(unsafe_code)]
+mod avx2 {
+    use super::Kernel;
+
+    /// `k.run()` compiled with AVX2 enabled (the body is inlined into it).
+    ///
+    /// # Safety
+    ///
+    /// The processor must support AVX2.
+    #[target_feature(enable = "avx2")]
+    unsafe fn enabled<K: Kernel>(k: K) -> K::Output {
+        k.run()
+    }
+
+    /// `k.run()` in the AVX2 copy; the caller has checked that the processor supports AVX2.
+    #[inline(always)]
+    pub(super) fn run<K: Kernel>(k: K) -> K::Output {
+        // SAFETY: `dispatch` calls this only after `is_x86_feature_detected!("avx2")`.
+        unsafe { enabled(k) }
+    }
+}
+
+/// A [`Kernel`] per dispatched method: the arm and the method's inputs, run by calling the
+/// arm's hidden `__NAME_kernel`, which holds the generated body.
+macro_rules! kernels {
+    ($(
+        $(#[$doc:meta])*
+        $name:ident<$($c:ident),*> : $bound:path => $method:ident($($arg:ident),*) -> $out:ty;
+    )*) => {$(
+        $(#[$doc])*
+        pub struct $name<'a, A: ?Sized, $(const $c: usize),*> {
+            /// The arm.
+            pub arm: &'a A,
+            $(
+                /// An input of the method.
+                pub $arg: &'a nalgebra::SVector<f64, N>,
+            )*
+        }
+
+        impl<A: $bound + ?Sized, $(const $c: usize),*> Kernel for $name<'_, A, $($c),*> {
+            type Output = $out;
+            #[inline(always)]
+            fn run(self) -> Self::Output {
+                self.arm.$method($(self.$arg),*)
+            }
+        }
+    )*};
+}
+
+kernels! {
+    /// `inverse_dynamics_derivatives`.
+    InverseDynamicsDerivatives<N>: crate::Dynamics<N>
+        => __inverse_dynamics_derivatives_kernel(q, qd, qdd)
+        -> (nalgebra::SMatrix<f64, N, N>, nalgebra::SMatrix<f64, N, N>);
+    /// `forward_dynamics_derivatives`.
+    ForwardDynamicsDerivatives<N>: crate::Dynamics<N>
+        => __forward_dynamics_derivatives_kernel(q, qd, tau)
+        -> (
+            nalgebra::SMatrix<f64, N, N>,
+            nalgebra::SMatrix<f64, N, N>,
+            nalgebra::SMatrix<f64, N, N>,
+        );
+    /// `regressor`.
+    Regressor<N, P, B>: crate::Identification<N, P, B>
+        => __regressor_kernel(q, qd, qdd) -> nalgebra::SMatrix<f64, N, P>;
+    /// `base_regressor`.
+    BaseRegressor<N, P, B>: crate::Identification<N, P, B>
+        => __base_regressor_kernel(q, qd, qdd) -> nalgebra::SMatrix<f64, N, B>;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{dispatch, Kernel};
+
+    /// A long chain of dependent operations, to see that a kernel's result is its body's.
+    struct Chain(f64);
+
+    impl Kernel for Chain {
+        type Output = f64;
+        #[inline(always)]
+        fn run(self) -> f64 {
+            let mut x = self.0;
+            for k in 0..64 {
+                x = x * 1.000_000_1 + f64::from(k) * 1e-3;
+            }
+            x
+        }
+    }
+
+    #[test]
+    fn dispatch_runs_the_kernel() {
+        let direct = Chain(0.75).run();
+        let dispatched = dispatch(Chain(0.75));
+        assert_eq!(direct.to_bits(), dispatched.to_bits());
+        assert!((direct - 2.766).abs() < 1e-2, "{direct}");
+    }
+}

@@ -1,0 +1,88 @@
+//! The methods run through `__private::dispatch` (derivatives, regressors) give, bit for bit,
+//! what their bodies give called directly; and those bodies are the right functions (the
+//! derivatives against the inverse dynamics in run-time jets, the regressors times their
+//! parameters against the inverse dynamics).
+//!
+//! In a `dev` build both calls run the same code, so the bit-for-bit comparison means something
+//! only in an optimised build on a processor with AVX2, where the public method runs the copy
+//! compiled for AVX2 and the hidden body the baseline one: CI runs this file with `--release`.
+
+mod common;
+
+#[path = "../examples/support/puma_arm.rs"]
+mod puma_arm;
+
+use common::Rng;
+use planar_arm::nalgebra::{SMatrix, SVector};
+use planar_arm::prelude::*;
+use planar_arm::Jet;
+use puma_arm::Puma560;
+
+/// Three planar links: small enough that the derive emits the forward dynamics' derivatives
+/// too.
+#[derive(PlanarArm, Default)]
+#[arm(gravity = 9.81)]
+struct Three {
+    #[arm(length = 0.5, mass = 1.5, com = (0.2, 0.03), armature = 0.05)]
+    a: Revolute,
+    #[arm(length = 0.4, mass = 1.1, damping = 0.15)]
+    b: Revolute,
+    #[arm(length = 0.3, mass = 0.6)]
+    c: Revolute,
+}
+
+fn same_bits<const R: usize, const C: usize>(a: &SMatrix<f64, R, C>, b: &SMatrix<f64, R, C>) {
+    for (x, y) in a.iter().zip(b.iter()) {
+        assert_eq!(x.to_bits(), y.to_bits(), "{x} against {y}");
+    }
+}
+
+fn close<const R: usize, const C: usize>(a: &SMatrix<f64, R, C>, b: &SMatrix<f64, R, C>) {
+    let scale = 1.0 + b.amax();
+    assert!((a - b).amax() <= 1e-12 * scale, "{a} against {b}");
+}
+
+/// The dispatched derivatives against their bodies (bits) and against jets (values), and the
+/// dispatched regressors against their bodies (bits) and the inverse dynamics (values).
+fn check<A, const N: usize, const P: usize, const B: usize>(arm: &A, rng: &mut Rng)
+where
+    A: Identification<N, P, B>,
+{
+    for _ in 0..20 {
+        let (q, qd, qdd): (SVector<f64, N>, SVector<f64, N>, SVector<f64, N>) =
+            (rng.vector(3.0), rng.vector(2.0), rng.vector(2.0));
+        let (dq, dqd) = arm.inverse_dynamics_derivatives(&q, &qd, &qdd);
+        let (kq, kqd) = arm.__inverse_dynamics_derivatives_kernel(&q, &qd, &qdd);
+        same_bits(&dq, &kq);
+        same_bits(&dqd, &kqd);
+        let (jq, jqd) = Jet::inverse_dynamics_derivatives(arm, &q, &qd, &qdd);
+        close(&dq, &jq);
+        close(&dqd, &jqd);
+
+        let tau = arm.inverse_dynamics(&q, &qd, &qdd);
+        let fd = arm.forward_dynamics_derivatives(&q, &qd, &tau);
+        let kfd = arm.__forward_dynamics_derivatives_kernel(&q, &qd, &tau);
+        same_bits(&fd.0, &kfd.0);
+        same_bits(&fd.1, &kfd.1);
+        same_bits(&fd.2, &kfd.2);
+        // dqdd/dtau is M^-1.
+        close(&(arm.mass_matrix(&q) * fd.2), &SMatrix::identity());
+
+        let y = arm.regressor(&q, &qd, &qdd);
+        same_bits(&y, &arm.__regressor_kernel(&q, &qd, &qdd));
+        close(&(y * arm.standard_parameters()), &tau);
+        let yb = arm.base_regressor(&q, &qd, &qdd);
+        same_bits(&yb, &arm.__base_regressor_kernel(&q, &qd, &qdd));
+        close(&(yb * arm.base_parameters()), &tau);
+    }
+}
+
+#[test]
+fn puma_dispatched_methods_match_their_bodies() {
+    check(&Puma560::default(), &mut Rng(11));
+}
+
+#[test]
+fn planar_dispatched_methods_match_their_bodies() {
+    check(&Three::default(), &mut Rng(12));
+}
