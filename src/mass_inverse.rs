@@ -14,7 +14,7 @@ use nalgebra::{ArrayStorage, SMatrix};
 /// `(-M^-1 a, -M^-1 b, M^-1)`, or `None` when `m` is not numerically positive definite (a
 /// pivot that is not positive, NaN included).
 #[allow(clippy::type_complexity, clippy::needless_range_loop)]
-#[inline]
+#[inline(always)] // into the AVX2 copy of `forward_dynamics_derivatives` (src/dispatch.rs)
 #[must_use]
 pub fn inverse_products<const N: usize>(
     m: &SMatrix<f64, N, N>,

@@ -160,6 +160,7 @@ pub trait Dynamics<const N: usize> {
     /// through `__private::dispatch` (the AVX2 copy where the processor has it): this default,
     /// or the program the derive emits.
     #[doc(hidden)]
+    #[inline(always)]
     fn __forward_dynamics_derivatives_kernel(
         &self,
         q: &SVector<f64, N>,
