@@ -12,8 +12,7 @@ use crate::Real;
 
 /// The largest methods' bodies, run in an AVX2 copy where the processor has it.
 pub use crate::dispatch::{
-    dispatch, BaseRegressor, ForwardDynamicsDerivatives, InverseDynamicsDerivatives, Kernel,
-    Regressor,
+    dispatch, ForwardDynamicsDerivatives, InverseDynamicsDerivatives, Kernel,
 };
 /// The forward dynamics' solve after `mass_matrix_and_bias` (three or more joints).
 pub use crate::ldlt::{forward_solve, Floor};

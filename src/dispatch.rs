@@ -1,14 +1,13 @@
-//! The largest generated methods run in a copy compiled for AVX2 where the processor has it.
+//! The derivatives of the dynamics run in a copy compiled for AVX2 where the processor has it.
 //!
-//! The derivatives and the regressors are thousands of straight-line operations, too long for
-//! the baseline x86-64 instruction set's two-operand SSE2 forms: the PUMA 560's
-//! `inverse_dynamics_derivatives` compiled to 7,900 instructions and 51 KB, a third of them
-//! register copies and stack reloads, which no longer fit the processor's first-level
-//! instruction cache. The same source compiled with AVX2's three-operand forms is 34 KB and ran
-//! in a third to a half of the time (docs/performance.md). A user's build passes no
-//! `target-cpu`, so the crate compiles the method twice, as BLAS libraries do, and chooses at run
-//! time: [`dispatch`] asks the processor once (the standard library caches the answer) and runs
-//! the AVX2 copy where it can.
+//! `inverse_dynamics_derivatives` is thousands of straight-line operations, too long for the
+//! baseline x86-64 instruction set's two-operand SSE2 forms: the PUMA 560's compiled to 7,900
+//! instructions and 51 KB, a third of them register copies and stack reloads, past the
+//! processor's first-level instruction cache. The same source compiled with AVX2's
+//! three-operand forms is 34 KB and runs two to three times faster (docs/performance.md). A
+//! user's build passes no `target-cpu`, so the crate compiles these methods twice, as BLAS
+//! libraries do, and chooses at run time: [`dispatch`] asks the processor (the standard library
+//! caches the answer) and runs the AVX2 copy where it can.
 //!
 //! The two copies compute the same function to the bit: Rust does not contract `a * b + c` into
 //! a fused multiply-add unless asked, so enabling AVX2 changes the instructions and not the
@@ -18,6 +17,9 @@
 //! x86-64 with `std` compile the second copy: a `dev` build would spend compile time on a copy
 //! it does not optimise, and without `std` there is no run-time detection. Where the build
 //! already targets AVX2 (`-C target-cpu=native`), there is one copy and no question asked.
+//!
+//! The regressors were tried too and measured 5-25 % slower in the AVX2 copy (their results,
+//! 1.7 KB and more, come back through one more call), so they have one copy.
 
 /// A method's body, with its arm and inputs: what [`dispatch`] runs.
 pub trait Kernel {
@@ -113,12 +115,6 @@ kernels! {
             nalgebra::SMatrix<f64, N, N>,
             nalgebra::SMatrix<f64, N, N>,
         );
-    /// `regressor`.
-    Regressor<N, P, B>: crate::Identification<N, P, B>
-        => __regressor_kernel(q, qd, qdd) -> nalgebra::SMatrix<f64, N, P>;
-    /// `base_regressor`.
-    BaseRegressor<N, P, B>: crate::Identification<N, P, B>
-        => __base_regressor_kernel(q, qd, qdd) -> nalgebra::SMatrix<f64, N, B>;
 }
 
 #[cfg(test)]

@@ -88,28 +88,6 @@ pub trait Identification<const N: usize, const P: usize, const B: usize>: Dynami
     ) -> SMatrix<f64, N, B>;
     /// The base parameters' values now.
     fn base_parameters(&self) -> SVector<f64, B>;
-    /// The body of a generated [`regressor`](Self::regressor), which runs it through
-    /// `__private::dispatch` (the AVX2 copy where the processor has it).
-    #[doc(hidden)]
-    fn __regressor_kernel(
-        &self,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        qdd: &SVector<f64, N>,
-    ) -> SMatrix<f64, N, P> {
-        self.regressor(q, qd, qdd)
-    }
-    /// The body of a generated [`base_regressor`](Self::base_regressor), as
-    /// `__regressor_kernel`.
-    #[doc(hidden)]
-    fn __base_regressor_kernel(
-        &self,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        qdd: &SVector<f64, N>,
-    ) -> SMatrix<f64, N, B> {
-        self.base_regressor(q, qd, qdd)
-    }
     /// [`PARAMETERS`](Self::PARAMETERS) without naming `P` and `B`: `Arm::parameter_names()`
     /// (there is one impl per arm, so the counts are inferred).
     #[must_use]

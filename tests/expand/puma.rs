@@ -3581,26 +3581,6 @@ Cost: 573 multiplications, 496 additions, 0 divisions, 5 sin_cos pairs.*/
         __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
         __qdd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
     ) -> ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 6, 60> {
-        ::planar_arm::__private::dispatch(::planar_arm::__private::Regressor::<
-            Self,
-            6,
-            60,
-            36,
-        > {
-            arm: self,
-            q: __q,
-            qd: __qd,
-            qdd: __qdd,
-        })
-    }
-    #[doc(hidden)]
-    #[inline(always)]
-    fn __regressor_kernel(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
-        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
-        __qdd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
-    ) -> ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 6, 60> {
         let [_, __q2, __q3, __q4, __q5, __q6] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2, __qd3, __qd4, __qd5, __qd6] = ::planar_arm::__private::unpack(
             __qd,
@@ -4590,26 +4570,6 @@ the recursive Newton-Euler algorithm unrolled, each link in its own frame, the j
 Cost: 464 multiplications, 398 additions, 0 divisions, 5 sin_cos pairs.*/
     #[inline]
     fn base_regressor(
-        &self,
-        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
-        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
-        __qdd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
-    ) -> ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 6, 36> {
-        ::planar_arm::__private::dispatch(::planar_arm::__private::BaseRegressor::<
-            Self,
-            6,
-            60,
-            36,
-        > {
-            arm: self,
-            q: __q,
-            qd: __qd,
-            qdd: __qdd,
-        })
-    }
-    #[doc(hidden)]
-    #[inline(always)]
-    fn __base_regressor_kernel(
         &self,
         __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
         __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,

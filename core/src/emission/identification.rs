@@ -91,7 +91,7 @@ pub(crate) fn identification_impl(
             method: regressor,
             touch: TokenStream::new(),
             finish: Box::new(move |ids| matrix(n, pp, ids)),
-            kernel: Some(("Regressor", quote!(#nn, #pl, #bl))),
+            kernel: None,
         },
         Fn {
             name: "standard_parameters",
@@ -113,7 +113,7 @@ pub(crate) fn identification_impl(
             method: base_regressor,
             touch: TokenStream::new(),
             finish: Box::new(move |ids| matrix(n, bb, ids)),
-            kernel: Some(("BaseRegressor", quote!(#nn, #pl, #bl))),
+            kernel: None,
         },
         Fn {
             name: "base_parameters",
