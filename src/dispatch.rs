@@ -40,10 +40,26 @@ pub fn dispatch<K: Kernel>(k: K) -> K::Output {
         not(target_feature = "avx2")
     ))]
     {
-        if std::is_x86_feature_detected!("avx2") {
-            return avx2::run(k);
-        }
+        return if std::is_x86_feature_detected!("avx2") {
+            avx2::run(k)
+        } else {
+            baseline(k)
+        };
     }
+    #[allow(unreachable_code)]
+    k.run()
+}
+
+/// `k.run()` in the baseline copy: one function per kernel, however many places call
+/// [`dispatch`], so that a method's body is compiled twice and no more.
+#[cfg(all(
+    target_arch = "x86_64",
+    feature = "std",
+    not(debug_assertions),
+    not(target_feature = "avx2")
+))]
+#[inline(never)]
+fn baseline<K: Kernel>(k: K) -> K::Output {
     k.run()
 }
 

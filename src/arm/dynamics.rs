@@ -174,7 +174,8 @@ pub trait Dynamics<const N: usize> {
         tau: &SVector<f64, N>,
     ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
         let qdd = self.forward_dynamics(q, qd, tau);
-        let (dq, dqd) = self.__inverse_dynamics_derivatives_kernel(q, qd, &qdd);
+        // The dispatched method, not its body: the body's two copies stay the only ones.
+        let (dq, dqd) = self.inverse_dynamics_derivatives(q, qd, &qdd);
         mass_inverse::inverse_products(&self.mass_matrix(q), &dq, &dqd).unwrap_or_else(|| {
             let nan = SMatrix::from_element(f64::NAN);
             (nan, nan, nan)
