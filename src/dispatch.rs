@@ -40,29 +40,13 @@ pub fn dispatch<K: Kernel>(k: K) -> K::Output {
         not(target_feature = "avx2")
     ))]
     {
-        return if std::is_x86_feature_detected!("avx2") {
-            avx2::run(k)
-        } else {
-            baseline(k)
-        };
+        return copies::run(k);
     }
     #[allow(unreachable_code)]
     k.run()
 }
 
-/// `k.run()` in the baseline copy: one function per kernel, however many places call
-/// [`dispatch`], so that a method's body is compiled twice and no more.
-#[cfg(all(
-    target_arch = "x86_64",
-    feature = "std",
-    not(debug_assertions),
-    not(target_feature = "avx2")
-))]
-#[inline(never)]
-fn baseline<K: Kernel>(k: K) -> K::Output {
-    k.run()
-}
-
+/// The two copies of a kernel, and the choice between them.
 #[cfg(all(
     target_arch = "x86_64",
     feature = "std",
@@ -70,8 +54,18 @@ fn baseline<K: Kernel>(k: K) -> K::Output {
     not(target_feature = "avx2")
 ))]
 #[allow(unsafe_code)]
-mod avx2 {
+mod copies {
     use super::Kernel;
+
+    #[inline(always)]
+    pub(super) fn run<K: Kernel>(k: K) -> K::Output {
+        if std::is_x86_feature_detected!("avx2") {
+            // SAFETY: the processor has just said that it supports AVX2.
+            unsafe { avx2(k) }
+        } else {
+            baseline(k)
+        }
+    }
 
     /// `k.run()` compiled with AVX2 enabled (the body is inlined into it).
     ///
@@ -79,15 +73,15 @@ mod avx2 {
     ///
     /// The processor must support AVX2.
     #[target_feature(enable = "avx2")]
-    unsafe fn enabled<K: Kernel>(k: K) -> K::Output {
+    unsafe fn avx2<K: Kernel>(k: K) -> K::Output {
         k.run()
     }
 
-    /// `k.run()` in the AVX2 copy; the caller has checked that the processor supports AVX2.
-    #[inline(always)]
-    pub(super) fn run<K: Kernel>(k: K) -> K::Output {
-        // SAFETY: `dispatch` calls this only after `is_x86_feature_detected!("avx2")`.
-        unsafe { enabled(k) }
+    /// `k.run()` in the baseline copy: one function per kernel, however many places call
+    /// [`dispatch`](super::dispatch), so that a method's body is compiled twice and no more.
+    #[inline(never)]
+    fn baseline<K: Kernel>(k: K) -> K::Output {
+        k.run()
     }
 }
 
