@@ -4,7 +4,7 @@
 //! baseline x86-64 instruction set's two-operand SSE2 forms: the PUMA 560's compiled to 7,900
 //! instructions and 51 KB, a third of them register copies and stack reloads, past the
 //! processor's first-level instruction cache. The same source compiled with AVX2's
-//! three-operand forms is 34 KB and runs two to three times faster (docs/performance.md). A
+//! three-operand forms is 34 KB and ran 1.9-2.8x faster (docs/performance.md). A
 //! user's build passes no `target-cpu`, so the crate compiles these methods twice, as BLAS
 //! libraries do, and chooses at run time: [`dispatch`] asks the processor (the standard library
 //! caches the answer) and runs the AVX2 copy where it can.
@@ -18,8 +18,8 @@
 //! it does not optimise, and without `std` there is no run-time detection. Where the build
 //! already targets AVX2 (`-C target-cpu=native`), there is one copy and no question asked.
 //!
-//! The regressors were tried too and measured 5-25 % slower in the AVX2 copy (their results,
-//! 1.7 KB and more, come back through one more call), so they have one copy.
+//! The regressors were tried too and measured 5-25 % slower in the AVX2 copy (probably because
+//! their results, 1.7 KB and more, come back through one more call), so they have one copy.
 
 /// A method's body, with its arm and inputs: what [`dispatch`] runs.
 pub trait Kernel {

@@ -112,9 +112,9 @@ pub trait Dynamics<const N: usize> {
     ///
     /// In an optimised build on x86-64 with `std`, the emitted program (and this method's
     /// sibling [`forward_dynamics_derivatives`](Self::forward_dynamics_derivatives)) runs in a
-    /// second copy compiled for AVX2 where the processor has it, chosen at run time: two to
-    /// three times faster for a six-joint arm, and the same result to the bit (no fused
-    /// multiply-add; `tests/dispatch.rs`).
+    /// second copy compiled for AVX2 where the processor has it, chosen at run time: 1.9-2.8x
+    /// faster for the PUMA 560 in the benchmarks (docs/performance.md), and the same result to
+    /// the bit (no fused multiply-add; `tests/dispatch.rs`).
     fn inverse_dynamics_derivatives(
         &self,
         q: &SVector<f64, N>,
