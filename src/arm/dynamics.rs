@@ -110,11 +110,11 @@ pub trait Dynamics<const N: usize> {
     /// `qd_i = 0` and has no derivative there; it contributes 0 to `dtau/dqd` everywhere (its
     /// derivative away from the jump).
     ///
-    /// In an optimised build on x86-64 with `std`, the emitted program (and this method's
-    /// sibling [`forward_dynamics_derivatives`](Self::forward_dynamics_derivatives)) runs in a
-    /// second copy compiled for AVX2 where the processor has it, chosen at run time: 1.9-2.8x
-    /// faster for the PUMA 560 in the benchmarks (docs/performance.md), and the same result to
-    /// the bit (no fused multiply-add; `tests/dispatch.rs`).
+    /// In a build without debug assertions (Cargo's `release` profile) on x86-64 with `std`,
+    /// the emitted program (and [`forward_dynamics_derivatives`](Self::forward_dynamics_derivatives))
+    /// runs in a second copy compiled for AVX2 where the processor has it, chosen at run time:
+    /// 1.9-2.8x faster for the PUMA 560 in the benchmarks (docs/performance.md), and the same
+    /// result to the bit (no fused multiply-add; `tests/dispatch.rs`).
     fn inverse_dynamics_derivatives(
         &self,
         q: &SVector<f64, N>,
