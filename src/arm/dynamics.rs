@@ -121,10 +121,11 @@ pub trait Dynamics<const N: usize> {
         qd: &SVector<f64, N>,
         qdd: &SVector<f64, N>,
     ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
-        Jet::inverse_dynamics_derivatives(self, q, qd, qdd)
+        self.__inverse_dynamics_derivatives_kernel(q, qd, qdd)
     }
-    /// The body of a generated [`inverse_dynamics_derivatives`](Self::inverse_dynamics_derivatives),
-    /// which runs it through `__private::dispatch` (the AVX2 copy where the processor has it).
+    /// The body of [`inverse_dynamics_derivatives`](Self::inverse_dynamics_derivatives): these
+    /// jets, or the program the derive emits, which the emitted method runs through
+    /// `__private::dispatch` (the AVX2 copy where the processor has it).
     #[doc(hidden)]
     fn __inverse_dynamics_derivatives_kernel(
         &self,

@@ -151,50 +151,67 @@ pub(crate) fn emit_fn(
     } else {
         quote!(#[inline])
     };
-    if let (Some((kernel, args)), None) = (&f.kernel, frozen) {
-        let kernel = quote::format_ident!("{kernel}");
-        let body = quote::format_ident!("__{}_kernel", f.name);
-        let inputs: Vec<_> = f
-            .params
-            .iter()
-            .filter_map(|p| match *p {
-                Param::Joints(name, _) => Some((quote::format_ident!("{name}"), local(name))),
-                Param::Force | Param::Torque => None,
-            })
-            .collect();
-        let (fields, locals): (Vec<_>, Vec<_>) = inputs.into_iter().unzip();
-        let real = if f.generic { quote!(__T) } else { quote!(#F64) };
-        let nn = Literal::usize_unsuffixed(n);
-        return Ok(quote! {
-            #[doc = #doc]
-            #inline
-            fn #name #generics(&self, #(#locals: &::planar_arm::nalgebra::SVector<#real, #nn>),*) -> #ret {
-                ::planar_arm::__private::dispatch(::planar_arm::__private::#kernel::<Self, #args> {
-                    arm: self,
-                    #(#fields: #locals),*
-                })
-            }
-            #[doc(hidden)]
-            #[inline(always)]
-            fn #body #generics(&self, #(#params),*) -> #ret {
-                #touch
-                #(#unpack)*
-                #(#statements)*
-                #result
-            }
-        });
-    }
+    // A dispatched method is a call of its kernel, and the body goes in the hidden
+    // `__NAME_kernel` that the kernel runs.
+    let (body, attrs, wrapper) = match (&f.kernel, frozen) {
+        (Some((kernel, args)), None) => (
+            quote::format_ident!("__{}_kernel", f.name),
+            quote!(#[doc(hidden)] #[inline(always)]),
+            dispatcher(
+                n,
+                f,
+                kernel,
+                args,
+                quote!(#[doc = #doc] #inline fn #name #generics),
+            ),
+        ),
+        _ => (
+            name,
+            quote!(#[doc = #doc] #hidden #inline),
+            TokenStream::new(),
+        ),
+    };
     Ok(quote! {
-        #[doc = #doc]
-        #hidden
-        #inline
-        fn #name #generics(&self, #(#params),*) -> #ret {
+        #wrapper
+        #attrs
+        fn #body #generics(&self, #(#params),*) -> #ret {
             #touch
             #(#unpack)*
             #(#statements)*
             #result
         }
     })
+}
+
+/// `head(&self, inputs) -> RET { dispatch(KERNEL::<Self, ARGS> { arm: self, inputs }) }`: the
+/// method `f` handing its inputs to the kernel `kernel` of `::planar_arm::__private`.
+fn dispatcher(
+    n: usize,
+    f: &Fn<'_>,
+    kernel: &str,
+    args: &TokenStream,
+    head: TokenStream,
+) -> TokenStream {
+    let kernel = quote::format_ident!("{kernel}");
+    let (fields, locals): (Vec<_>, Vec<_>) = f
+        .params
+        .iter()
+        .filter_map(|p| match *p {
+            Param::Joints(name, _) => Some((quote::format_ident!("{name}"), local(name))),
+            Param::Force | Param::Torque => None,
+        })
+        .unzip();
+    let real = if f.generic { quote!(__T) } else { quote!(#F64) };
+    let nn = Literal::usize_unsuffixed(n);
+    let ret = &f.ret;
+    quote! {
+        #head(&self, #(#locals: &::planar_arm::nalgebra::SVector<#real, #nn>),*) -> #ret {
+            ::planar_arm::__private::dispatch(::planar_arm::__private::#kernel::<Self, #args> {
+                arm: self,
+                #(#fields: #locals),*
+            })
+        }
+    }
 }
 
 /// The parameters of `f` as the rendered body reads them, and the statements that unpack them
