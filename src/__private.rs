@@ -17,7 +17,7 @@ pub use crate::dispatch::{
 /// The forward dynamics' solve after `mass_matrix_and_bias` (three or more joints).
 pub use crate::ldlt::{forward_solve, Floor};
 /// The trait's default for the forward dynamics' derivatives, named here for the benches.
-pub use crate::mass_inverse::inverse_products;
+pub use crate::mass_inverse::Cholesky;
 
 #[inline(always)]
 #[must_use]

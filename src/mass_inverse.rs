@@ -1,6 +1,7 @@
-//! `M^-1`, `-M^-1 A` and `-M^-1 B` from a fixed-size Cholesky factorisation: the linear
-//! algebra that turns the inverse dynamics' derivatives into the forward dynamics' ones
-//! (`dqdd/dq = -M^-1 dtau/dq`, `dqdd/dqd = -M^-1 dtau/dqd`, `dqdd/dtau = M^-1`).
+//! A fixed-size Cholesky factorisation of M, and from it `qdd = M^-1 (tau - h)`, `M^-1`,
+//! `-M^-1 A` and `-M^-1 B`: the linear algebra that turns the inverse dynamics' derivatives
+//! into the forward dynamics' ones (`dqdd/dq = -M^-1 dtau/dq`, `dqdd/dqd = -M^-1 dtau/dqd`,
+//! `dqdd/dtau = M^-1`, at the `qdd` that the same factor solves for).
 //!
 //! Written over arrays of the arm's size so that the compiler unrolls and vectorises every loop:
 //! nalgebra's `cholesky().inverse()` followed by two products took 2.4-3.0x the time of the
@@ -9,90 +10,135 @@
 #[cfg(not(feature = "std"))]
 use num_traits::Float as _;
 
-use nalgebra::{ArrayStorage, SMatrix};
+use nalgebra::{ArrayStorage, SMatrix, SVector};
 
-/// `(-M^-1 a, -M^-1 b, M^-1)`, or `None` when `m` is not numerically positive definite (a
-/// pivot that is not positive, NaN included).
-#[allow(clippy::type_complexity, clippy::needless_range_loop)]
-#[inline(always)] // into the AVX2 copy of `forward_dynamics_derivatives` (src/dispatch.rs)
-#[must_use]
-pub fn inverse_products<const N: usize>(
-    m: &SMatrix<f64, N, N>,
-    a: &SMatrix<f64, N, N>,
-    b: &SMatrix<f64, N, N>,
-) -> Option<(SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>)> {
-    // nalgebra stores columns: `m[j][i]` is M(i, j). M is symmetric; the lower half is read.
-    let m = &m.data.0;
-    // M = L L^T, `l[i][j]` = L(i, j) for i >= j; `r[j]` = 1 / L(j, j).
-    let mut l = [[0.0f64; N]; N];
-    let mut r = [0.0f64; N];
-    for j in 0..N {
-        let mut d = m[j][j];
-        for k in 0..j {
-            d -= l[j][k] * l[j][k];
-        }
-        // NaN is not greater either.
-        if d.partial_cmp(&0.0) != Some(core::cmp::Ordering::Greater) {
-            return None;
-        }
-        let inv = 1.0 / d.sqrt();
-        r[j] = inv;
-        l[j][j] = d * inv;
-        for i in j + 1..N {
-            let mut s = m[j][i];
+/// The Cholesky factor `M = L L^T` of a symmetric positive definite matrix of the arm's size,
+/// kept to solve for the accelerations and then to invert M with the same factor.
+#[derive(Clone, Copy, Debug)]
+pub struct Cholesky<const N: usize> {
+    /// `l[i][j]` = L(i, j) for `i >= j`, rows contiguous so that the dot products of the
+    /// factorisation read memory in order.
+    l: [[f64; N]; N],
+    /// `r[j]` = 1 / L(j, j).
+    r: [f64; N],
+}
+
+impl<const N: usize> Cholesky<N> {
+    /// The factor of `m` (its lower half is read), or `None` when `m` is not numerically
+    /// positive definite (a pivot that is not positive, NaN included).
+    #[allow(clippy::needless_range_loop)]
+    #[inline(always)] // into the AVX2 copy of `forward_dynamics_derivatives` (src/dispatch.rs)
+    #[must_use]
+    pub fn new(m: &SMatrix<f64, N, N>) -> Option<Self> {
+        // nalgebra stores columns: `m[j][i]` is M(i, j).
+        let m = &m.data.0;
+        let mut l = [[0.0f64; N]; N];
+        let mut r = [0.0f64; N];
+        for j in 0..N {
+            let mut d = m[j][j];
             for k in 0..j {
-                s -= l[i][k] * l[j][k];
+                d -= l[j][k] * l[j][k];
             }
-            l[i][j] = s * inv;
-        }
-    }
-    // W = L^-1, lower triangular, by forward substitution column by column.
-    let mut w = [[0.0f64; N]; N];
-    for j in 0..N {
-        w[j][j] = r[j];
-        for i in j + 1..N {
-            let mut s = 0.0;
-            for k in j..i {
-                s -= l[i][k] * w[k][j];
+            // NaN is not greater either.
+            if d.partial_cmp(&0.0) != Some(core::cmp::Ordering::Greater) {
+                return None;
             }
-            w[i][j] = s * r[i];
-        }
-    }
-    // M^-1 = W^T W, symmetric, stored by columns like nalgebra.
-    let mut inv = [[0.0f64; N]; N];
-    for j in 0..N {
-        for i in j..N {
-            let mut s = 0.0;
-            for k in i..N {
-                s += w[k][i] * w[k][j];
+            let inv = 1.0 / d.sqrt();
+            r[j] = inv;
+            l[j][j] = d * inv;
+            for i in j + 1..N {
+                let mut s = m[j][i];
+                for k in 0..j {
+                    s -= l[i][k] * l[j][k];
+                }
+                l[i][j] = s * inv;
             }
-            inv[j][i] = s;
-            inv[i][j] = s;
         }
+        Some(Self { l, r })
     }
-    let minus_product = |x: &[[f64; N]; N]| {
-        let mut out = [[0.0f64; N]; N];
-        for c in 0..N {
-            for k in 0..N {
-                let xk = x[c][k];
-                for i in 0..N {
-                    out[c][i] -= inv[k][i] * xk;
+
+    /// `M^-1 b`, by forward then backward substitution.
+    #[allow(clippy::needless_range_loop)]
+    #[inline(always)]
+    #[must_use]
+    pub fn solve(&self, b: &SVector<f64, N>) -> SVector<f64, N> {
+        let (l, r) = (&self.l, &self.r);
+        let mut y = [0.0f64; N];
+        for i in 0..N {
+            let mut s = b[i];
+            for k in 0..i {
+                s -= l[i][k] * y[k];
+            }
+            y[i] = s * r[i];
+        }
+        for i in (0..N).rev() {
+            let mut s = y[i];
+            for k in i + 1..N {
+                s -= l[k][i] * y[k];
+            }
+            y[i] = s * r[i];
+        }
+        SVector::from_data(ArrayStorage([y]))
+    }
+
+    /// `(-M^-1 a, -M^-1 b, M^-1)`.
+    #[allow(clippy::type_complexity, clippy::needless_range_loop)]
+    #[inline(always)]
+    #[must_use]
+    pub fn inverse_products(
+        &self,
+        a: &SMatrix<f64, N, N>,
+        b: &SMatrix<f64, N, N>,
+    ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
+        let (l, r) = (&self.l, &self.r);
+        // W = L^-1, lower triangular, by forward substitution column by column.
+        let mut w = [[0.0f64; N]; N];
+        for j in 0..N {
+            w[j][j] = r[j];
+            for i in j + 1..N {
+                let mut s = 0.0;
+                for k in j..i {
+                    s -= l[i][k] * w[k][j];
+                }
+                w[i][j] = s * r[i];
+            }
+        }
+        // M^-1 = W^T W, symmetric, stored by columns like nalgebra.
+        let mut inv = [[0.0f64; N]; N];
+        for j in 0..N {
+            for i in j..N {
+                let mut s = 0.0;
+                for k in i..N {
+                    s += w[k][i] * w[k][j];
+                }
+                inv[j][i] = s;
+                inv[i][j] = s;
+            }
+        }
+        let minus_product = |x: &[[f64; N]; N]| {
+            let mut out = [[0.0f64; N]; N];
+            for c in 0..N {
+                for k in 0..N {
+                    let xk = x[c][k];
+                    for i in 0..N {
+                        out[c][i] -= inv[k][i] * xk;
+                    }
                 }
             }
-        }
-        SMatrix::from_data(ArrayStorage(out))
-    };
-    Some((
-        minus_product(&a.data.0),
-        minus_product(&b.data.0),
-        SMatrix::from_data(ArrayStorage(inv)),
-    ))
+            SMatrix::from_data(ArrayStorage(out))
+        };
+        (
+            minus_product(&a.data.0),
+            minus_product(&b.data.0),
+            SMatrix::from_data(ArrayStorage(inv)),
+        )
+    }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::inverse_products;
-    use nalgebra::SMatrix;
+    use super::Cholesky;
+    use nalgebra::{SMatrix, SVector};
 
     /// A symmetric positive definite matrix with a spread of eigenvalues, and two others.
     fn inputs<const N: usize>() -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
@@ -108,7 +154,8 @@ mod tests {
 
     fn against_nalgebra<const N: usize>() {
         let (m, a, b) = inputs::<N>();
-        let (x, y, inv) = inverse_products(&m, &a, &b).expect("positive definite");
+        let factor = Cholesky::new(&m).expect("positive definite");
+        let (x, y, inv) = factor.inverse_products(&a, &b);
         let reference = m.cholesky().expect("positive definite").inverse();
         let scale = reference.amax();
         assert!((inv - reference).amax() <= 1e-12 * scale, "N = {N}");
@@ -120,6 +167,15 @@ mod tests {
             (y + reference * b).amax() <= 1e-12 * scale * b.amax() * 8.0,
             "N = {N}"
         );
+        // The solve, against the product with nalgebra's inverse and by its residual.
+        #[allow(clippy::cast_precision_loss)]
+        let rhs = SVector::<f64, N>::from_fn(|i, _| (i as f64 * 1.7 + 0.3).cos());
+        let x = factor.solve(&rhs);
+        assert!(
+            (x - reference * rhs).amax() <= 1e-12 * scale * 8.0,
+            "N = {N}"
+        );
+        assert!((m * x - rhs).amax() < 1e-10, "N = {N}");
         // And an independent property: M M^-1 = I.
         assert!(
             (m * inv - SMatrix::<f64, N, N>::identity()).amax() < 1e-10,
@@ -139,13 +195,12 @@ mod tests {
 
     #[test]
     fn singular_indefinite_and_nan_give_none() {
-        let z = SMatrix::<f64, 3, 3>::zeros();
         let singular = SMatrix::<f64, 3, 3>::from_element(1.0);
-        assert!(inverse_products(&singular, &z, &z).is_none());
+        assert!(Cholesky::new(&singular).is_none());
         let indefinite = SMatrix::<f64, 2, 2>::new(1.0, 2.0, 2.0, 1.0);
-        assert!(inverse_products(&indefinite, &SMatrix::zeros(), &SMatrix::zeros()).is_none());
+        assert!(Cholesky::new(&indefinite).is_none());
         let mut nan = SMatrix::<f64, 3, 3>::identity();
         nan[(1, 1)] = f64::NAN;
-        assert!(inverse_products(&nan, &z, &z).is_none());
+        assert!(Cholesky::new(&nan).is_none());
     }
 }

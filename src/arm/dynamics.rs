@@ -145,11 +145,12 @@ pub trait Dynamics<const N: usize> {
     /// For arms of up to five links the derive emits this as one straight-line program that
     /// shares the trigonometry, M and its factorisation (guarded by the pivot floors of
     /// `forward_dynamics`, so finite wherever `forward_dynamics` is); its operation count is in
-    /// the method's docs. For larger arms this default computes it from the methods above and
-    /// a fixed-size Cholesky factorisation of M (no allocation; 1.4x the time of the emitted
-    /// program at six links, measured in docs/performance.md, and none of its compile time),
-    /// NaN everywhere if that fails (only with NaN or infinite input). NaN input gives NaN
-    /// output either way, never a panic.
+    /// the method's docs. For larger arms this default computes it from
+    /// [`mass_matrix_and_bias`](Self::mass_matrix_and_bias), one fixed-size Cholesky
+    /// factorisation of M that gives both `qdd` and `M^-1`, and the inverse dynamics'
+    /// derivatives at that `qdd` (no allocation, and none of the emitted program's compile
+    /// time; docs/performance.md measures both), NaN everywhere if the factorisation fails
+    /// (only with NaN or infinite input). NaN input gives NaN output either way, never a panic.
     fn forward_dynamics_derivatives(
         &self,
         q: &SVector<f64, N>,
@@ -174,13 +175,16 @@ pub trait Dynamics<const N: usize> {
         qd: &SVector<f64, N>,
         tau: &SVector<f64, N>,
     ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
-        let qdd = self.forward_dynamics(q, qd, tau);
+        // One evaluation of M and h and one factor of M serve the accelerations and M^-1.
+        let (m, h) = self.mass_matrix_and_bias(q, qd);
+        let Some(factor) = mass_inverse::Cholesky::new(&m) else {
+            let nan = SMatrix::from_element(f64::NAN);
+            return (nan, nan, nan);
+        };
+        let qdd = factor.solve(&(tau - h));
         // The dispatched method, not its body: the body's two copies stay the only ones.
         let (dq, dqd) = self.inverse_dynamics_derivatives(q, qd, &qdd);
-        mass_inverse::inverse_products(&self.mass_matrix(q), &dq, &dqd).unwrap_or_else(|| {
-            let nan = SMatrix::from_element(f64::NAN);
-            (nan, nan, nan)
-        })
+        factor.inverse_products(&dq, &dqd)
     }
 
     /// Kinetic energy, J: the links, the payload and the rotors (`armature qd_i^2 / 2`).
