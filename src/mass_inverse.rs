@@ -5,7 +5,9 @@
 //!
 //! Written over arrays of the arm's size so that the compiler unrolls and vectorises every loop:
 //! nalgebra's `cholesky().inverse()` followed by two products took 2.4-3.0x the time of the
-//! emitted straight-line derivatives at two to six links, this 1.4-2.1x.
+//! emitted straight-line derivatives at two to six links; this, after one `mass_matrix_and_bias`
+//! and with one factor for `qdd` and `M^-1`, 1.0-1.6x at two to four links
+//! (`benches/derivatives.rs`).
 
 #[cfg(not(feature = "std"))]
 use num_traits::Float as _;
@@ -115,24 +117,30 @@ impl<const N: usize> Cholesky<N> {
                 inv[i][j] = s;
             }
         }
-        let minus_product = |x: &[[f64; N]; N]| {
-            let mut out = [[0.0f64; N]; N];
-            for c in 0..N {
-                for k in 0..N {
-                    let xk = x[c][k];
-                    for i in 0..N {
-                        out[c][i] -= inv[k][i] * xk;
-                    }
-                }
-            }
-            SMatrix::from_data(ArrayStorage(out))
-        };
         (
-            minus_product(&a.data.0),
-            minus_product(&b.data.0),
+            minus_product(&inv, &a.data.0),
+            minus_product(&inv, &b.data.0),
             SMatrix::from_data(ArrayStorage(inv)),
         )
     }
+}
+
+/// `-inv x`, both stored by columns. A function, not a closure, so that it is inlined into the
+/// AVX2 copy of its caller and vectorised there (a closure was compiled on its own, for the
+/// baseline).
+#[allow(clippy::needless_range_loop)]
+#[inline(always)]
+fn minus_product<const N: usize>(inv: &[[f64; N]; N], x: &[[f64; N]; N]) -> SMatrix<f64, N, N> {
+    let mut out = [[0.0f64; N]; N];
+    for c in 0..N {
+        for k in 0..N {
+            let xk = x[c][k];
+            for i in 0..N {
+                out[c][i] -= inv[k][i] * xk;
+            }
+        }
+    }
+    SMatrix::from_data(ArrayStorage(out))
 }
 
 #[cfg(test)]
