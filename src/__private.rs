@@ -14,6 +14,8 @@ use crate::Real;
 pub use crate::dispatch::{
     dispatch, ForwardDynamicsDerivatives, InverseDynamicsDerivatives, Kernel,
 };
+/// The lanes a packed derivative body computes in (see `src/lanes.rs`).
+pub use crate::lanes::{Lanes, Portable};
 /// The forward dynamics' solve after `mass_matrix_and_bias` (three or more joints).
 pub use crate::ldlt::{forward_solve, Floor};
 /// The trait's default for the forward dynamics' derivatives, named here for the benches.

@@ -9,25 +9,36 @@
 //! libraries do, and chooses at run time: [`dispatch`] asks the processor (the standard library
 //! caches the answer) and runs the AVX2 copy where it can.
 //!
-//! The two copies compute the same function to the bit: Rust does not contract `a * b + c` into
-//! a fused multiply-add unless asked, so enabling AVX2 changes the instructions and not the
-//! rounding (`tests/dispatch.rs` compares them bit for bit in an optimised build).
+//! Each copy hands the body its lanes (src/lanes.rs). Where they are AVX2 registers, a spatial
+//! arm's inverse derivatives run the packed program the derive emits beside the one-direction
+//! program, four directions per register: 1.6-3.6x faster again (docs/performance.md). The
+//! baseline copy, `dev` builds and other processors run the one-direction program, which
+//! portable lanes would only slow down (more operations, none of them in vector registers).
+//!
+//! Otherwise the two copies compute the same function to the bit: Rust does not contract
+//! `a * b + c` into a fused multiply-add unless asked, so enabling AVX2 changes the
+//! instructions and not the rounding. The packed program adds the same terms in another order,
+//! so it agrees with the one-direction program to rounding, and to the bit with itself in
+//! portable lanes (`tests/dispatch.rs` checks both in an optimised build).
 //!
 //! Only optimised builds without debug assertions (Cargo's `release` and `bench` profiles) on
 //! x86-64 with `std` compile the second copy: a `dev` build would spend compile time on a copy
 //! it does not optimise, and without `std` there is no run-time detection. Where the build
-//! already targets AVX2 (`-C target-cpu=native`), there is one copy and no question asked.
+//! already targets AVX2 (`-C target-cpu=native`), there is one copy, with AVX2 lanes, and no
+//! question asked.
 //!
 //! The regressors were tried too and measured 5-25 % slower in the AVX2 copy (probably because
 //! their results, 1.7 KB and more, come back through one more call), so they have one copy.
+
+use crate::lanes::{Lanes, Portable};
 
 /// A method's body, with its arm and inputs: what [`dispatch`] runs.
 pub trait Kernel {
     /// What the method returns.
     type Output;
-    /// Runs the body. Implementations are `#[inline(always)]`, so that the body is compiled
-    /// into each copy of [`dispatch`]'s caller.
-    fn run(self) -> Self::Output;
+    /// Runs the body in `lanes` (see `src/lanes.rs`). Implementations are `#[inline(always)]`,
+    /// so that the body is compiled into each copy of [`dispatch`]'s caller.
+    fn run<L: Lanes>(self, lanes: L) -> Self::Output;
 }
 
 /// Runs `k`, in the AVX2 copy where the build has one and the processor can run it.
@@ -42,8 +53,14 @@ pub fn dispatch<K: Kernel>(k: K) -> K::Output {
     {
         return copies::run(k);
     }
+    #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+    {
+        // SAFETY: the build targets AVX2, so every processor that runs it has AVX2.
+        #[allow(unsafe_code)]
+        return k.run(unsafe { crate::lanes::Avx2::new() });
+    }
     #[allow(unreachable_code)]
-    k.run()
+    k.run(Portable)
 }
 
 /// The two copies of a kernel, and the choice between them.
@@ -56,6 +73,7 @@ pub fn dispatch<K: Kernel>(k: K) -> K::Output {
 #[allow(unsafe_code)]
 mod copies {
     use super::Kernel;
+    use crate::lanes::{Avx2, Portable};
 
     #[inline(always)]
     pub(super) fn run<K: Kernel>(k: K) -> K::Output {
@@ -74,23 +92,26 @@ mod copies {
     /// The processor must support AVX2.
     #[target_feature(enable = "avx2")]
     unsafe fn avx2<K: Kernel>(k: K) -> K::Output {
-        k.run()
+        // SAFETY: the caller has asked the processor.
+        k.run(unsafe { Avx2::new() })
     }
 
     /// `k.run()` in the baseline copy: one function per kernel, however many places call
     /// [`dispatch`](super::dispatch), so that a method's body is compiled twice and no more.
     #[inline(never)]
     fn baseline<K: Kernel>(k: K) -> K::Output {
-        k.run()
+        k.run(Portable)
     }
 }
 
 /// A [`Kernel`] per dispatched method: the arm and the method's inputs, run by calling the
-/// arm's hidden `__NAME_kernel`, which holds the generated body.
+/// arm's hidden `__NAME_kernel`, which holds the generated body, or where the lanes are
+/// registers `__NAME_packed`, which holds the packed one (src/lanes.rs).
 macro_rules! kernels {
     ($(
         $(#[$doc:meta])*
-        $name:ident<$($c:ident),*> : $bound:path => $method:ident($($arg:ident),*) -> $out:ty;
+        $name:ident<$($c:ident),*> : $bound:path
+            => $method:ident, $packed:ident ($($arg:ident),*) -> $out:ty;
     )*) => {$(
         $(#[$doc])*
         pub struct $name<'a, A: ?Sized, $(const $c: usize),*> {
@@ -105,8 +126,13 @@ macro_rules! kernels {
         impl<A: $bound + ?Sized, $(const $c: usize),*> Kernel for $name<'_, A, $($c),*> {
             type Output = $out;
             #[inline(always)]
-            fn run(self) -> Self::Output {
-                self.arm.$method($(self.$arg),*)
+            fn run<L: Lanes>(self, lanes: L) -> Self::Output {
+                // A constant condition: the other branch is not even compiled.
+                if L::PACKED {
+                    self.arm.$packed(lanes, $(self.$arg),*)
+                } else {
+                    self.arm.$method($(self.$arg),*)
+                }
             }
         }
     )*};
@@ -115,11 +141,12 @@ macro_rules! kernels {
 kernels! {
     /// `inverse_dynamics_derivatives`.
     InverseDynamicsDerivatives<N>: crate::Dynamics<N>
-        => __inverse_dynamics_derivatives_kernel(q, qd, qdd)
+        => __inverse_dynamics_derivatives_kernel, __inverse_dynamics_derivatives_packed(q, qd, qdd)
         -> (nalgebra::SMatrix<f64, N, N>, nalgebra::SMatrix<f64, N, N>);
-    /// `forward_dynamics_derivatives`.
+    /// `forward_dynamics_derivatives` (which has no packed program: its default calls the
+    /// dispatched inverse derivatives).
     ForwardDynamicsDerivatives<N>: crate::Dynamics<N>
-        => __forward_dynamics_derivatives_kernel(q, qd, tau)
+        => __forward_dynamics_derivatives_kernel, __forward_dynamics_derivatives_packed(q, qd, tau)
         -> (
             nalgebra::SMatrix<f64, N, N>,
             nalgebra::SMatrix<f64, N, N>,
@@ -130,6 +157,7 @@ kernels! {
 #[cfg(test)]
 mod tests {
     use super::{dispatch, Kernel};
+    use crate::lanes::Lanes;
 
     /// A long chain of dependent operations, to see that a kernel's result is its body's.
     struct Chain(f64);
@@ -137,7 +165,7 @@ mod tests {
     impl Kernel for Chain {
         type Output = f64;
         #[inline(always)]
-        fn run(self) -> f64 {
+        fn run<L: Lanes>(self, _: L) -> f64 {
             let mut x = self.0;
             for k in 0..64 {
                 x = x * 1.000_000_1 + f64::from(k) * 1e-3;
@@ -148,7 +176,7 @@ mod tests {
 
     #[test]
     fn dispatch_runs_the_kernel() {
-        let direct = Chain(0.75).run();
+        let direct = Chain(0.75).run(crate::lanes::Portable);
         let dispatched = dispatch(Chain(0.75));
         assert_eq!(direct.to_bits(), dispatched.to_bits());
         assert!((direct - 2.766).abs() < 1e-2, "{direct}");

@@ -239,6 +239,7 @@ mod frozen;
 mod identification;
 mod jet;
 pub mod kinematics;
+mod lanes;
 mod ldlt;
 mod linear;
 mod link;

@@ -1,11 +1,13 @@
 //! The methods run through `__private::dispatch` (the derivatives of the dynamics) give, bit for
 //! bit, what their bodies give called directly; and those bodies are the right functions (the
-//! inverse dynamics' derivatives against the inverse dynamics in run-time jets, the forward
-//! dynamics' `dqdd/dtau` against the mass matrix).
+//! inverse dynamics' derivatives, one direction at a time and packed four directions at a time,
+//! against the inverse dynamics in run-time jets, the forward dynamics' `dqdd/dtau` against the
+//! mass matrix).
 //!
-//! In a `dev` build both calls run the same code, so the bit-for-bit comparison means something
-//! only in an optimised build on a processor with AVX2, where the public method runs the copy
-//! compiled for AVX2 and the hidden body the baseline one: CI runs this file with `--release`.
+//! In a `dev` build the dispatched method runs the one-direction body, so the bit-for-bit
+//! comparison means something only in an optimised build on a processor with AVX2, where the
+//! public method runs the copy compiled for AVX2, with the packed body in AVX2 registers, and
+//! the test calls the packed body in portable lanes: CI runs this file with `--release`.
 
 mod common;
 
@@ -31,6 +33,20 @@ struct Three {
     c: Revolute,
 }
 
+/// Whether the dispatched methods run the AVX2 copy, with the packed programs: an optimised
+/// build on a processor with AVX2 (or a build for AVX2).
+fn avx2_copy() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        cfg!(target_feature = "avx2")
+            || (!cfg!(debug_assertions) && std::is_x86_feature_detected!("avx2"))
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
+}
+
 fn same_bits<const R: usize, const C: usize>(a: &SMatrix<f64, R, C>, b: &SMatrix<f64, R, C>) {
     for (x, y) in a.iter().zip(b.iter()) {
         assert_eq!(x.to_bits(), y.to_bits(), "{x} against {y}");
@@ -49,12 +65,25 @@ fn check<A: Dynamics<N>, const N: usize>(arm: &A, rng: &mut Rng) {
         let (q, qd, qdd): (SVector<f64, N>, SVector<f64, N>, SVector<f64, N>) =
             (rng.vector(3.0), rng.vector(2.0), rng.vector(2.0));
         let (dq, dqd) = arm.inverse_dynamics_derivatives(&q, &qd, &qdd);
+        // The body that runs one direction at a time, and the packed one in portable lanes.
         let (kq, kqd) = arm.__inverse_dynamics_derivatives_kernel(&q, &qd, &qdd);
-        same_bits(&dq, &kq);
-        same_bits(&dqd, &kqd);
+        let (pq, pqd) = arm.__inverse_dynamics_derivatives_packed(
+            planar_arm::__private::Portable,
+            &q,
+            &qd,
+            &qdd,
+        );
+        if avx2_copy() {
+            same_bits(&dq, &pq);
+            same_bits(&dqd, &pqd);
+        } else {
+            same_bits(&dq, &kq);
+            same_bits(&dqd, &kqd);
+        }
         let (jq, jqd) = Jet::inverse_dynamics_derivatives(arm, &q, &qd, &qdd);
-        close(&dq, &jq);
-        close(&dqd, &jqd);
+        for (a, b) in [(&kq, &jq), (&kqd, &jqd), (&pq, &jq), (&pqd, &jqd)] {
+            close(a, b);
+        }
 
         let tau = arm.inverse_dynamics(&q, &qd, &qdd);
         let fd = arm.forward_dynamics_derivatives(&q, &qd, &tau);

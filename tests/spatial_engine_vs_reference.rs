@@ -431,6 +431,7 @@ fn compare<const N: usize>(d: &ArmDraw, derived: &SpatialDerived) -> Result<(), 
             program: p,
             outputs: rows,
             evaluation: String::new(),
+            packed: None,
         };
         let got = outputs_at(&method, qs, qd.as_slice(), &[], reach);
         let m = reference::mass_matrix(&model, &q);

@@ -12,6 +12,7 @@ mod function;
 pub mod generate;
 mod header;
 pub mod identification;
+mod packed;
 pub mod paths;
 pub(crate) mod spatial;
 mod spatial_identification;

@@ -8,6 +8,7 @@ pub mod christoffel;
 pub mod derivative;
 pub mod frozen;
 pub mod method;
+pub mod packed;
 pub mod slp;
 pub(crate) mod spatial;
 pub(crate) mod spatial_composite;

@@ -114,7 +114,11 @@ pub trait Dynamics<const N: usize> {
     /// the emitted program (and [`forward_dynamics_derivatives`](Self::forward_dynamics_derivatives))
     /// runs in a second copy compiled for AVX2 where the processor has it, chosen at run time:
     /// 1.9-2.8x faster for the PUMA 560 in the benchmarks (docs/performance.md), and the same
-    /// result to the bit (no fused multiply-add; `tests/dispatch.rs`).
+    /// result to the bit (no fused multiply-add; `tests/dispatch.rs`). For spatial arms that
+    /// copy runs a second emitted program, the same chain rule applied four directions at a
+    /// time in AVX2 registers (its four-lane operation count is in the method's docs), which
+    /// agrees with the first to rounding and was another 1.6-3.6x faster for the PUMA 560 and
+    /// the Panda.
     fn inverse_dynamics_derivatives(
         &self,
         q: &SVector<f64, N>,
@@ -134,6 +138,20 @@ pub trait Dynamics<const N: usize> {
         qdd: &SVector<f64, N>,
     ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
         Jet::inverse_dynamics_derivatives(self, q, qd, qdd)
+    }
+    /// The same derivatives computed four directions at a time in `lanes` (see
+    /// `src/lanes.rs`), which the dispatch runs where the lanes are registers: the packed
+    /// program the derive emits for spatial arms, or else the body above.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __inverse_dynamics_derivatives_packed<L: crate::__private::Lanes>(
+        &self,
+        _lanes: L,
+        q: &SVector<f64, N>,
+        qd: &SVector<f64, N>,
+        qdd: &SVector<f64, N>,
+    ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
+        self.__inverse_dynamics_derivatives_kernel(q, qd, qdd)
     }
 
     /// The partial derivatives of [`forward_dynamics`](Self::forward_dynamics),
@@ -185,6 +203,20 @@ pub trait Dynamics<const N: usize> {
         // The dispatched method, not its body: the body's two copies stay the only ones.
         let (dq, dqd) = self.inverse_dynamics_derivatives(q, qd, &qdd);
         factor.inverse_products(&dq, &dqd)
+    }
+
+    /// The forward derivatives in `lanes`: the body above, whose inverse derivatives are
+    /// dispatched on their own.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __forward_dynamics_derivatives_packed<L: crate::__private::Lanes>(
+        &self,
+        _lanes: L,
+        q: &SVector<f64, N>,
+        qd: &SVector<f64, N>,
+        tau: &SVector<f64, N>,
+    ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
+        self.__forward_dynamics_derivatives_kernel(q, qd, tau)
     }
 
     /// Kinetic energy, J: the links, the payload and the rotors (`armature qd_i^2 / 2`).

@@ -1678,9 +1678,9 @@ Cost: 357 multiplications, 321 additions, 0 divisions, 5 sin_cos pairs.*/
     }
     /**The partial derivatives of `inverse_dynamics`, `(dtau/dq, dtau/dqd)` (`dtau/dqdd` is `mass_matrix`). Coulomb friction contributes 0 to `dtau/dqd`.
 
-the unrolled recursive Newton-Euler algorithm differentiated at compile time, operation by operation
+the unrolled recursive Newton-Euler algorithm differentiated at compile time, operation by operation, four directions at a time
 
-Cost: 1456 multiplications, 1164 additions, 0 divisions, 5 sin_cos pairs.*/
+Cost: 1456 multiplications, 1164 additions, 0 divisions, 5 sin_cos pairs; where the processor has AVX2, 200 multiplications, 160 additions, 0 divisions, 5 sin_cos pairs on scalars and 1109 four-lane operations.*/
     #[inline]
     fn inverse_dynamics_derivatives(
         &self,
@@ -2712,6 +2712,1635 @@ Cost: 1456 multiplications, 1164 additions, 0 divisions, 5 sin_cos pairs.*/
                     __dtau1_dq1,
                     __dtau1_dq1,
                     __dtau1_dq1,
+                ],
+            ]),
+        )
+    }
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __inverse_dynamics_derivatives_packed<__L: ::planar_arm::__private::Lanes>(
+        &self,
+        __lanes: __L,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+        __qdd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+    ) -> (
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 6, 6>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 6, 6>,
+    ) {
+        let [_, __q2, __q3, __q4, __q5, __q6] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2, __qd3, __qd4, __qd5, __qd6] = ::planar_arm::__private::unpack(
+            __qd,
+        );
+        let [__qdd1, __qdd2, __qdd3, __qdd4, __qdd5, _] = ::planar_arm::__private::unpack(
+            __qdd,
+        );
+        let [(__s2, __c2), (__s3, __c3), (__s4, __c4), (__s5, __c5), (__s6, __c6)] = ::planar_arm::__private::sin_cos([
+            __q2,
+            __q3,
+            __q4,
+            __q5,
+            __q6,
+        ]);
+        let __v17 = -__s3;
+        let __v31 = -__s4;
+        let __v42 = -__s5;
+        let __v46 = -__s6;
+        let __v13 = __s2 * __qd1;
+        let __v12 = __c2 * __qd1;
+        let __v18 = __s2 * __qdd1 + __qd2 * __v12;
+        let __v19 = __c2 * __qdd1 - __qd2 * __v13;
+        let __v14 = (2159.0 / 5000.0) * __qd2;
+        let __v11 = -((2159.0 / 5000.0) * __v12);
+        let __t1 = __v13 * __v14 - (2159.0 / 5000.0) * __v19;
+        let __v15 = (981.0 / 100.0) * __s2 + __v12 * __v11 - __qd2 * __v14;
+        let __v16 = (981.0 / 100.0) * __c2 + (2159.0 / 5000.0) * __qdd2 - __v13 * __v11;
+        let __v28 = __c3 * __v13 + __s3 * __v12;
+        let __v25 = __v17 * __v13 + __c3 * __v12;
+        let __v20 = -__qd3;
+        let __v23 = -__qd2 - __qd3;
+        let __v33 = -__qdd2 - __qdd3;
+        let __v32 = __c3 * __v18 + __s3 * __v19 - __v25 * __v20;
+        let __t2 = __v17 * __v18 + __c3 * __v19 + __v28 * __v20;
+        let __v26 = -((-(3001.0 / 20000.0)) * __v25);
+        let __v24 = (203.0 / 10000.0) * __v25;
+        let __v27 = (-(3001.0 / 20000.0)) * __v28 - (203.0 / 10000.0) * __v23;
+        let __v29 = __c3 * __v15 + __s3 * __v16 + __v23 * __v27 - __v25 * __v24
+            - (-(3001.0 / 20000.0)) * __t2;
+        let __v30 = __v25 * __v26 - __v28 * __v27 + (203.0 / 10000.0) * __t2 - __t1;
+        let __t3 = __v17 * __v15 + __c3 * __v16 + __v28 * __v24 - __v23 * __v26
+            + (-(3001.0 / 20000.0)) * __v32 - (203.0 / 10000.0) * __v33;
+        let __v39 = __c4 * __v28 + __s4 * __v23;
+        let __t4 = __v31 * __v28 + __c4 * __v23;
+        let __v38 = -__t4;
+        let __v36 = __v25 + __qd4;
+        let __v87 = __t2 + __qdd4;
+        let __v86 = __c4 * __v32 + __s4 * __v33 - __qd4 * __v38;
+        let __t5 = __qd4 * __v39 - (__v31 * __v32 + __c4 * __v33);
+        let __v37 = -((2159.0 / 5000.0) * __v38);
+        let __v35 = (2159.0 / 5000.0) * __v39;
+        let __v84 = __c4 * __v29 + __s4 * __v30 + __v36 * __v35
+            - (2159.0 / 5000.0) * __t5;
+        let __v85 = __t3 + __v38 * __v37 - __v39 * __v35;
+        let __t6 = (2159.0 / 5000.0) * __v86 - __v36 * __v37
+            - (__v31 * __v29 + __c4 * __v30);
+        let __v89 = __c5 * __v84 + __s5 * __v85;
+        let __t7 = __v42 * __v84 + __c5 * __v85;
+        let __v90 = -__t6;
+        let __v91 = __c5 * __v39 + __s5 * __v36;
+        let __v88 = __v42 * __v39 + __c5 * __v36;
+        let __v43 = -__qd5;
+        let __v92 = __t4 - __qd5;
+        let __v94 = -__t5 - __qdd5;
+        let __v93 = __c5 * __v86 + __s5 * __v87 - __v88 * __v43;
+        let __v71 = __c6 * __v91 + __s6 * __v92;
+        let __v72 = __v46 * __v91 + __c6 * __v92;
+        let __v69 = __v88 + __qd6;
+        let __v53 = (91.0 / 400.0) * __v12 - (3.0 / 500.0) * __qd2;
+        let __v52 = (-(1819.0 / 5000.0)) * __qd2 - (91.0 / 400.0) * __v13;
+        let __v51 = (3.0 / 500.0) * __v13 - (-(1819.0 / 5000.0)) * __v12;
+        let __t8 = (87.0 / 5.0)
+            * (__t1 + __v13 * __v52 - __v12 * __v53 + (3.0 / 500.0) * __v18
+                - (-(1819.0 / 5000.0)) * __v19);
+        let __v59 = (7.0 / 100.0) * __v23 - (-(141.0 / 10000.0)) * __v25;
+        let __v58 = (-(203.0 / 10000.0)) * __v25 - (7.0 / 100.0) * __v28;
+        let __v60 = (-(141.0 / 10000.0)) * __v28 - (-(203.0 / 10000.0)) * __v23;
+        let __t9 = (24.0 / 5.0)
+            * (__v29 + __v23 * __v60 - __v25 * __v58 + (7.0 / 100.0) * __v33
+                - (-(141.0 / 10000.0)) * __t2);
+        let __t10 = (24.0 / 5.0)
+            * (__v30 + __v25 * __v59 - __v28 * __v60 + (-(203.0 / 10000.0)) * __t2
+                - (7.0 / 100.0) * __v32);
+        let __t11 = (24.0 / 5.0)
+            * (__t3 + __v28 * __v58 - __v23 * __v59 + (-(141.0 / 10000.0)) * __v32
+                - (-(203.0 / 10000.0)) * __v33);
+        let __v64 = -((19.0 / 1000.0) * __v38);
+        let __v63 = (19.0 / 1000.0) * __v39;
+        let __t12 = (41.0 / 50.0) * (__v84 + __v36 * __v63 - (19.0 / 1000.0) * __t5);
+        let __t13 = (41.0 / 50.0) * (__t6 + (19.0 / 1000.0) * __v86 - __v36 * __v64);
+        let __v70 = (4.0 / 125.0) * __v72;
+        let __v68 = -((4.0 / 125.0) * __v71);
+        let __v95 = (9.0 / 100.0)
+            * (__c6 * __v89 + __s6 * __v90
+                + (4.0 / 125.0) * (__v46 * __v93 + __c6 * __v94 - __qd6 * __v71)
+                - __v69 * __v68);
+        let __v96 = (9.0 / 100.0)
+            * (__v46 * __v89 + __c6 * __v90 + __v69 * __v70
+                - (4.0 / 125.0) * (__c6 * __v93 + __s6 * __v94 + __qd6 * __v72));
+        let __v97 = -((4.0 / 125.0) * __v96);
+        let __v98 = (4.0 / 125.0) * __v95;
+        let __v101 = __c6 * __v97 + __v46 * __v98;
+        let __v99 = (17.0 / 50.0) * __v89 + __c6 * __v95 + __v46 * __v96;
+        let __v100 = (17.0 / 50.0) * __t7
+            + (9.0 / 100.0) * (__t7 + __v71 * __v68 - __v72 * __v70);
+        let __v74 = __t12 + __c5 * __v99 + __v42 * __v100;
+        let __t14 = __t13 - ((17.0 / 50.0) * __v90 + __s6 * __v95 + __c6 * __v96);
+        let __v76 = (19.0 / 1000.0) * __t13 + __c5 * __v101 + (2159.0 / 5000.0) * __t14;
+        let __v75 = -__t14;
+        let __v77 = -(-((19.0 / 1000.0) * __t12) - (__s6 * __v97 + __c6 * __v98)
+            - (2159.0 / 5000.0) * __v74);
+        let __v78 = __t9 + __c4 * __v74 + __v31 * __v75;
+        let __t15 = __t10 + __s4 * __v74 + __c4 * __v75;
+        let __v79 = __t11 + (41.0 / 50.0) * (__v85 + __v38 * __v64 - __v39 * __v63)
+            + __s5 * __v99 + __c5 * __v100;
+        let __v80 = (-(141.0 / 10000.0)) * __t11 - (7.0 / 100.0) * __t10 + __c4 * __v76
+            + __v31 * __v77 + (-(3001.0 / 20000.0)) * __v79;
+        let __v81 = (-(203.0 / 10000.0)) * __t10 - (-(141.0 / 10000.0)) * __t9
+            + __s5 * __v101 + (203.0 / 10000.0) * __t15 - (-(3001.0 / 20000.0)) * __v78;
+        let __v82 = (3.0 / 500.0) * __t8
+            - (91.0 / 400.0) * (87.0 / 5.0)
+                * (__v16 + __qd2 * __v53 - __v13 * __v51 + (-(1819.0 / 5000.0)) * __qdd2
+                    - (91.0 / 400.0) * __v18) + __c3 * __v80 + __v17 * __v81;
+        let __v83 = (91.0 / 400.0) * (87.0 / 5.0)
+            * (__v15 + __v12 * __v51 - __qd2 * __v52 + (91.0 / 400.0) * __v19
+                - (3.0 / 500.0) * __qdd2) - (-(1819.0 / 5000.0)) * __t8 + __s3 * __v80
+            + __c3 * __v81 - (2159.0 / 5000.0) * (__t8 - __t15);
+        let __v6 = (981.0 / 100.0);
+        let __v10 = (2159.0 / 5000.0);
+        let __v21 = (-(3001.0 / 20000.0));
+        let __v22 = (203.0 / 10000.0);
+        let __v48 = (91.0 / 400.0);
+        let __v49 = (3.0 / 500.0);
+        let __v50 = (-(1819.0 / 5000.0));
+        let __v54 = (87.0 / 5.0);
+        let __v55 = (-(141.0 / 10000.0));
+        let __v56 = (-(203.0 / 10000.0));
+        let __v57 = (7.0 / 100.0);
+        let __v61 = (24.0 / 5.0);
+        let __v62 = (19.0 / 1000.0);
+        let __v65 = (41.0 / 50.0);
+        let __v66 = (17.0 / 50.0);
+        let __v67 = (4.0 / 125.0);
+        let __v73 = (9.0 / 100.0);
+        let (
+            __lane387,
+            __lane395,
+            __lane449,
+            __lane479,
+            __lane486,
+            __lane853,
+            __lane861,
+            __lane899,
+            __lane917,
+            __lane920,
+            __lane922,
+            __lane923,
+            __lane924,
+            __lane925,
+            __lane926,
+            __lane927,
+            __lane933,
+            __lane951,
+            __lane956,
+            __lane963,
+            __lane970,
+            __lane988,
+            __lane989,
+            __lane990,
+            __lane991,
+            __lane992,
+            __lane994,
+            __lane997,
+            __lane998,
+            __lane999,
+        ) = {
+            let __lane0 = __lanes.constant([0.0, -1.0, 0.0, 0.0]);
+            let __lane1 = __lanes.mul(__lane0, __lanes.splat(__s2));
+            let __lane2 = __lanes.constant([0.0, 1.0, 0.0, 0.0]);
+            let __lane3 = __lanes.mul(__lane2, __lanes.splat(__c2));
+            let __lane4 = __lanes.constant([0.0, 0.0, -1.0, 0.0]);
+            let __lane5 = __lanes.mul(__lane4, __lanes.splat(__s3));
+            let __lane6 = __lanes.constant([0.0, 0.0, 1.0, 0.0]);
+            let __lane7 = __lanes.mul(__lane6, __lanes.splat(__c3));
+            let __lane8 = __lanes.neg(__lane7);
+            let __lane9 = __lanes.constant([0.0, 0.0, 0.0, -1.0]);
+            let __lane10 = __lanes.mul(__lane9, __lanes.splat(__s4));
+            let __lane11 = __lanes.constant([0.0, 0.0, 0.0, 1.0]);
+            let __lane12 = __lanes.mul(__lane11, __lanes.splat(__c4));
+            let __lane13 = __lanes.neg(__lane12);
+            let __lane14 = __lanes.mul(__lane3, __lanes.splat(__v6));
+            let __lane15 = __lanes.mul(__lane1, __lanes.splat(__v6));
+            let __lane16 = __lanes.mul(__lane3, __lanes.splat(__qd1));
+            let __lane17 = __lanes.mul(__lane1, __lanes.splat(__qd1));
+            let __lane18 = __lanes.mul(__lane3, __lanes.splat(__qdd1));
+            let __lane19 = __lanes.mul(__lane1, __lanes.splat(__qdd1));
+            let __lane20 = __lanes.mul(__lane17, __lanes.splat(__qd2));
+            let __lane21 = __lanes.mul(__lane16, __lanes.splat(__qd2));
+            let __lane22 = __lanes.add(__lane18, __lane20);
+            let __lane23 = __lanes.sub(__lane19, __lane21);
+            let __lane24 = __lanes.mul(__lane17, __lanes.splat(__v10));
+            let __lane25 = __lanes.neg(__lane24);
+            let __lane26 = __lanes.mul(__lane17, __lanes.splat(__v11));
+            let __lane27 = __lanes.mul(__lane25, __lanes.splat(__v12));
+            let __lane28 = __lanes.add(__lane26, __lane27);
+            let __lane29 = __lanes.mul(__lane16, __lanes.splat(__v11));
+            let __lane30 = __lanes.mul(__lane25, __lanes.splat(__v13));
+            let __lane31 = __lanes.add(__lane29, __lane30);
+            let __lane32 = __lanes.mul(__lane16, __lanes.splat(__v14));
+            let __lane33 = __lanes.mul(__lane23, __lanes.splat(__v10));
+            let __lane34 = __lanes.neg(__lane31);
+            let __lane35 = __lanes.sub(__lane32, __lane33);
+            let __lane36 = __lanes.add(__lane14, __lane28);
+            let __lane37 = __lanes.add(__lane15, __lane34);
+            let __lane38 = __lanes.mul(__lane5, __lanes.splat(__v15));
+            let __lane39 = __lanes.mul(__lane36, __lanes.splat(__c3));
+            let __lane40 = __lanes.add(__lane38, __lane39);
+            let __lane41 = __lanes.mul(__lane7, __lanes.splat(__v16));
+            let __lane42 = __lanes.mul(__lane37, __lanes.splat(__s3));
+            let __lane43 = __lanes.add(__lane41, __lane42);
+            let __lane44 = __lanes.add(__lane40, __lane43);
+            let __lane45 = __lanes.mul(__lane8, __lanes.splat(__v15));
+            let __lane46 = __lanes.mul(__lane36, __lanes.splat(__v17));
+            let __lane47 = __lanes.add(__lane45, __lane46);
+            let __lane48 = __lanes.mul(__lane5, __lanes.splat(__v16));
+            let __lane49 = __lanes.mul(__lane37, __lanes.splat(__c3));
+            let __lane50 = __lanes.add(__lane48, __lane49);
+            let __lane51 = __lanes.add(__lane47, __lane50);
+            let __lane52 = __lanes.mul(__lane5, __lanes.splat(__v13));
+            let __lane53 = __lanes.mul(__lane16, __lanes.splat(__c3));
+            let __lane54 = __lanes.add(__lane52, __lane53);
+            let __lane55 = __lanes.mul(__lane7, __lanes.splat(__v12));
+            let __lane56 = __lanes.mul(__lane17, __lanes.splat(__s3));
+            let __lane57 = __lanes.add(__lane55, __lane56);
+            let __lane58 = __lanes.add(__lane54, __lane57);
+            let __lane59 = __lanes.mul(__lane8, __lanes.splat(__v13));
+            let __lane60 = __lanes.mul(__lane16, __lanes.splat(__v17));
+            let __lane61 = __lanes.add(__lane59, __lane60);
+            let __lane62 = __lanes.mul(__lane5, __lanes.splat(__v12));
+            let __lane63 = __lanes.mul(__lane17, __lanes.splat(__c3));
+            let __lane64 = __lanes.add(__lane62, __lane63);
+            let __lane65 = __lanes.add(__lane61, __lane64);
+            let __lane66 = __lanes.mul(__lane5, __lanes.splat(__v18));
+            let __lane67 = __lanes.mul(__lane22, __lanes.splat(__c3));
+            let __lane68 = __lanes.add(__lane66, __lane67);
+            let __lane69 = __lanes.mul(__lane7, __lanes.splat(__v19));
+            let __lane70 = __lanes.mul(__lane23, __lanes.splat(__s3));
+            let __lane71 = __lanes.add(__lane69, __lane70);
+            let __lane72 = __lanes.add(__lane68, __lane71);
+            let __lane73 = __lanes.mul(__lane8, __lanes.splat(__v18));
+            let __lane74 = __lanes.mul(__lane22, __lanes.splat(__v17));
+            let __lane75 = __lanes.add(__lane73, __lane74);
+            let __lane76 = __lanes.mul(__lane5, __lanes.splat(__v19));
+            let __lane77 = __lanes.mul(__lane23, __lanes.splat(__c3));
+            let __lane78 = __lanes.add(__lane76, __lane77);
+            let __lane79 = __lanes.add(__lane75, __lane78);
+            let __lane80 = __lanes.mul(__lane65, __lanes.splat(__v20));
+            let __lane81 = __lanes.mul(__lane58, __lanes.splat(__v20));
+            let __lane82 = __lanes.sub(__lane72, __lane80);
+            let __lane83 = __lanes.add(__lane79, __lane81);
+            let __lane84 = __lanes.mul(__lane65, __lanes.splat(__v21));
+            let __lane85 = __lanes.neg(__lane84);
+            let __lane86 = __lanes.mul(__lane65, __lanes.splat(__v22));
+            let __lane87 = __lanes.mul(__lane58, __lanes.splat(__v21));
+            let __lane88 = __lanes.mul(__lane87, __lanes.splat(__v23));
+            let __lane89 = __lanes.mul(__lane65, __lanes.splat(__v24));
+            let __lane90 = __lanes.mul(__lane86, __lanes.splat(__v25));
+            let __lane91 = __lanes.add(__lane89, __lane90);
+            let __lane92 = __lanes.sub(__lane88, __lane91);
+            let __lane93 = __lanes.mul(__lane65, __lanes.splat(__v26));
+            let __lane94 = __lanes.mul(__lane85, __lanes.splat(__v25));
+            let __lane95 = __lanes.add(__lane93, __lane94);
+            let __lane96 = __lanes.mul(__lane58, __lanes.splat(__v27));
+            let __lane97 = __lanes.mul(__lane87, __lanes.splat(__v28));
+            let __lane98 = __lanes.add(__lane96, __lane97);
+            let __lane99 = __lanes.sub(__lane95, __lane98);
+            let __lane100 = __lanes.mul(__lane58, __lanes.splat(__v24));
+            let __lane101 = __lanes.mul(__lane86, __lanes.splat(__v28));
+            let __lane102 = __lanes.add(__lane100, __lane101);
+            let __lane103 = __lanes.mul(__lane85, __lanes.splat(__v23));
+            let __lane104 = __lanes.sub(__lane102, __lane103);
+            let __lane105 = __lanes.mul(__lane83, __lanes.splat(__v21));
+            let __lane106 = __lanes.mul(__lane83, __lanes.splat(__v22));
+            let __lane107 = __lanes.mul(__lane82, __lanes.splat(__v21));
+            let __lane108 = __lanes.sub(__lane92, __lane105);
+            let __lane109 = __lanes.add(__lane99, __lane106);
+            let __lane110 = __lanes.add(__lane104, __lane107);
+            let __lane111 = __lanes.add(__lane44, __lane108);
+            let __lane112 = __lanes.sub(__lane109, __lane35);
+            let __lane113 = __lanes.add(__lane51, __lane110);
+            let __lane114 = __lanes.mul(__lane10, __lanes.splat(__v29));
+            let __lane115 = __lanes.mul(__lane111, __lanes.splat(__c4));
+            let __lane116 = __lanes.add(__lane114, __lane115);
+            let __lane117 = __lanes.mul(__lane12, __lanes.splat(__v30));
+            let __lane118 = __lanes.mul(__lane112, __lanes.splat(__s4));
+            let __lane119 = __lanes.add(__lane117, __lane118);
+            let __lane120 = __lanes.add(__lane116, __lane119);
+            let __lane121 = __lanes.mul(__lane13, __lanes.splat(__v29));
+            let __lane122 = __lanes.mul(__lane111, __lanes.splat(__v31));
+            let __lane123 = __lanes.add(__lane121, __lane122);
+            let __lane124 = __lanes.mul(__lane10, __lanes.splat(__v30));
+            let __lane125 = __lanes.mul(__lane112, __lanes.splat(__c4));
+            let __lane126 = __lanes.add(__lane124, __lane125);
+            let __lane127 = __lanes.add(__lane123, __lane126);
+            let __lane128 = __lanes.mul(__lane10, __lanes.splat(__v28));
+            let __lane129 = __lanes.mul(__lane58, __lanes.splat(__c4));
+            let __lane130 = __lanes.add(__lane128, __lane129);
+            let __lane131 = __lanes.mul(__lane12, __lanes.splat(__v23));
+            let __lane132 = __lanes.add(__lane130, __lane131);
+            let __lane133 = __lanes.mul(__lane13, __lanes.splat(__v28));
+            let __lane134 = __lanes.mul(__lane58, __lanes.splat(__v31));
+            let __lane135 = __lanes.add(__lane133, __lane134);
+            let __lane136 = __lanes.mul(__lane10, __lanes.splat(__v23));
+            let __lane137 = __lanes.add(__lane135, __lane136);
+            let __lane138 = __lanes.neg(__lane137);
+            let __lane139 = __lanes.mul(__lane10, __lanes.splat(__v32));
+            let __lane140 = __lanes.mul(__lane82, __lanes.splat(__c4));
+            let __lane141 = __lanes.add(__lane139, __lane140);
+            let __lane142 = __lanes.mul(__lane12, __lanes.splat(__v33));
+            let __lane143 = __lanes.add(__lane141, __lane142);
+            let __lane144 = __lanes.mul(__lane13, __lanes.splat(__v32));
+            let __lane145 = __lanes.mul(__lane82, __lanes.splat(__v31));
+            let __lane146 = __lanes.add(__lane144, __lane145);
+            let __lane147 = __lanes.mul(__lane10, __lanes.splat(__v33));
+            let __lane148 = __lanes.add(__lane146, __lane147);
+            let __lane149 = __lanes.mul(__lane138, __lanes.splat(__qd4));
+            let __lane150 = __lanes.mul(__lane132, __lanes.splat(__qd4));
+            let __lane151 = __lanes.sub(__lane143, __lane149);
+            let __lane152 = __lanes.sub(__lane150, __lane148);
+            let __lane153 = __lanes.mul(__lane138, __lanes.splat(__v10));
+            let __lane154 = __lanes.neg(__lane153);
+            let __lane155 = __lanes.mul(__lane132, __lanes.splat(__v10));
+            let __lane156 = __lanes.mul(__lane65, __lanes.splat(__v35));
+            let __lane157 = __lanes.mul(__lane155, __lanes.splat(__v36));
+            let __lane158 = __lanes.add(__lane156, __lane157);
+            let __lane159 = __lanes.mul(__lane138, __lanes.splat(__v37));
+            let __lane160 = __lanes.mul(__lane154, __lanes.splat(__v38));
+            let __lane161 = __lanes.add(__lane159, __lane160);
+            let __lane162 = __lanes.mul(__lane132, __lanes.splat(__v35));
+            let __lane163 = __lanes.mul(__lane155, __lanes.splat(__v39));
+            let __lane164 = __lanes.add(__lane162, __lane163);
+            let __lane165 = __lanes.sub(__lane161, __lane164);
+            let __lane166 = __lanes.mul(__lane65, __lanes.splat(__v37));
+            let __lane167 = __lanes.mul(__lane154, __lanes.splat(__v36));
+            let __lane168 = __lanes.add(__lane166, __lane167);
+            let __lane169 = __lanes.mul(__lane152, __lanes.splat(__v10));
+            let __lane170 = __lanes.mul(__lane151, __lanes.splat(__v10));
+            let __lane171 = __lanes.sub(__lane158, __lane169);
+            let __lane172 = __lanes.sub(__lane170, __lane168);
+            let __lane173 = __lanes.add(__lane120, __lane171);
+            let __lane174 = __lanes.add(__lane113, __lane165);
+            let __lane175 = __lanes.sub(__lane172, __lane127);
+            let __lane176 = __lanes.mul(__lane173, __lanes.splat(__c5));
+            let __lane177 = __lanes.mul(__lane174, __lanes.splat(__s5));
+            let __lane178 = __lanes.add(__lane176, __lane177);
+            let __lane179 = __lanes.mul(__lane173, __lanes.splat(__v42));
+            let __lane180 = __lanes.mul(__lane174, __lanes.splat(__c5));
+            let __lane181 = __lanes.add(__lane179, __lane180);
+            let __lane182 = __lanes.neg(__lane175);
+            let __lane183 = __lanes.mul(__lane132, __lanes.splat(__c5));
+            let __lane184 = __lanes.mul(__lane65, __lanes.splat(__s5));
+            let __lane185 = __lanes.add(__lane183, __lane184);
+            let __lane186 = __lanes.mul(__lane132, __lanes.splat(__v42));
+            let __lane187 = __lanes.mul(__lane65, __lanes.splat(__c5));
+            let __lane188 = __lanes.add(__lane186, __lane187);
+            let __lane189 = __lanes.mul(__lane151, __lanes.splat(__c5));
+            let __lane190 = __lanes.mul(__lane83, __lanes.splat(__s5));
+            let __lane191 = __lanes.add(__lane189, __lane190);
+            let __lane192 = __lanes.neg(__lane152);
+            let __lane193 = __lanes.mul(__lane188, __lanes.splat(__v43));
+            let __lane194 = __lanes.sub(__lane191, __lane193);
+            let __lane195 = __lanes.mul(__lane178, __lanes.splat(__c6));
+            let __lane196 = __lanes.mul(__lane182, __lanes.splat(__s6));
+            let __lane197 = __lanes.add(__lane195, __lane196);
+            let __lane198 = __lanes.mul(__lane178, __lanes.splat(__v46));
+            let __lane199 = __lanes.mul(__lane182, __lanes.splat(__c6));
+            let __lane200 = __lanes.add(__lane198, __lane199);
+            let __lane201 = __lanes.mul(__lane185, __lanes.splat(__c6));
+            let __lane202 = __lanes.mul(__lane137, __lanes.splat(__s6));
+            let __lane203 = __lanes.add(__lane201, __lane202);
+            let __lane204 = __lanes.mul(__lane185, __lanes.splat(__v46));
+            let __lane205 = __lanes.mul(__lane137, __lanes.splat(__c6));
+            let __lane206 = __lanes.add(__lane204, __lane205);
+            let __lane207 = __lanes.mul(__lane194, __lanes.splat(__c6));
+            let __lane208 = __lanes.mul(__lane192, __lanes.splat(__s6));
+            let __lane209 = __lanes.add(__lane207, __lane208);
+            let __lane210 = __lanes.mul(__lane194, __lanes.splat(__v46));
+            let __lane211 = __lanes.mul(__lane192, __lanes.splat(__c6));
+            let __lane212 = __lanes.add(__lane210, __lane211);
+            let __lane213 = __lanes.mul(__lane206, __lanes.splat(__qd6));
+            let __lane214 = __lanes.mul(__lane203, __lanes.splat(__qd6));
+            let __lane215 = __lanes.add(__lane209, __lane213);
+            let __lane216 = __lanes.sub(__lane212, __lane214);
+            let __lane217 = __lanes.mul(__lane17, __lanes.splat(__v48));
+            let __lane218 = __lanes.mul(__lane16, __lanes.splat(__v48));
+            let __lane219 = __lanes.neg(__lane218);
+            let __lane220 = __lanes.mul(__lane16, __lanes.splat(__v49));
+            let __lane221 = __lanes.mul(__lane17, __lanes.splat(__v50));
+            let __lane222 = __lanes.sub(__lane220, __lane221);
+            let __lane223 = __lanes.mul(__lane17, __lanes.splat(__v51));
+            let __lane224 = __lanes.mul(__lane222, __lanes.splat(__v12));
+            let __lane225 = __lanes.add(__lane223, __lane224);
+            let __lane226 = __lanes.mul(__lane219, __lanes.splat(__qd2));
+            let __lane227 = __lanes.sub(__lane225, __lane226);
+            let __lane228 = __lanes.mul(__lane217, __lanes.splat(__qd2));
+            let __lane229 = __lanes.mul(__lane16, __lanes.splat(__v51));
+            let __lane230 = __lanes.mul(__lane222, __lanes.splat(__v13));
+            let __lane231 = __lanes.add(__lane229, __lane230);
+            let __lane232 = __lanes.sub(__lane228, __lane231);
+            let __lane233 = __lanes.mul(__lane16, __lanes.splat(__v52));
+            let __lane234 = __lanes.mul(__lane219, __lanes.splat(__v13));
+            let __lane235 = __lanes.add(__lane233, __lane234);
+            let __lane236 = __lanes.mul(__lane17, __lanes.splat(__v53));
+            let __lane237 = __lanes.mul(__lane217, __lanes.splat(__v12));
+            let __lane238 = __lanes.add(__lane236, __lane237);
+            let __lane239 = __lanes.sub(__lane235, __lane238);
+            let __lane240 = __lanes.mul(__lane23, __lanes.splat(__v48));
+            let __lane241 = __lanes.mul(__lane22, __lanes.splat(__v48));
+            let __lane242 = __lanes.neg(__lane241);
+            let __lane243 = __lanes.mul(__lane22, __lanes.splat(__v49));
+            let __lane244 = __lanes.mul(__lane23, __lanes.splat(__v50));
+            let __lane245 = __lanes.sub(__lane243, __lane244);
+            let __lane246 = __lanes.add(__lane227, __lane240);
+            let __lane247 = __lanes.add(__lane232, __lane242);
+            let __lane248 = __lanes.add(__lane239, __lane245);
+            let __lane249 = __lanes.add(__lane36, __lane246);
+            let __lane250 = __lanes.add(__lane37, __lane247);
+            let __lane251 = __lanes.add(__lane35, __lane248);
+            let __lane252 = __lanes.mul(__lane249, __lanes.splat(__v54));
+            let __lane253 = __lanes.mul(__lane250, __lanes.splat(__v54));
+            let __lane254 = __lanes.mul(__lane251, __lanes.splat(__v54));
+            let __lane255 = __lanes.mul(__lane254, __lanes.splat(__v49));
+            let __lane256 = __lanes.mul(__lane253, __lanes.splat(__v48));
+            let __lane257 = __lanes.sub(__lane255, __lane256);
+            let __lane258 = __lanes.mul(__lane252, __lanes.splat(__v48));
+            let __lane259 = __lanes.mul(__lane254, __lanes.splat(__v50));
+            let __lane260 = __lanes.sub(__lane258, __lane259);
+            let __lane261 = __lanes.mul(__lane253, __lanes.splat(__v50));
+            let __lane262 = __lanes.mul(__lane252, __lanes.splat(__v49));
+            let __lane263 = __lanes.sub(__lane261, __lane262);
+            let __lane264 = __lanes.mul(__lane65, __lanes.splat(__v55));
+            let __lane265 = __lanes.neg(__lane264);
+            let __lane266 = __lanes.mul(__lane65, __lanes.splat(__v56));
+            let __lane267 = __lanes.mul(__lane58, __lanes.splat(__v57));
+            let __lane268 = __lanes.sub(__lane266, __lane267);
+            let __lane269 = __lanes.mul(__lane58, __lanes.splat(__v55));
+            let __lane270 = __lanes.mul(__lane269, __lanes.splat(__v23));
+            let __lane271 = __lanes.mul(__lane65, __lanes.splat(__v58));
+            let __lane272 = __lanes.mul(__lane268, __lanes.splat(__v25));
+            let __lane273 = __lanes.add(__lane271, __lane272);
+            let __lane274 = __lanes.sub(__lane270, __lane273);
+            let __lane275 = __lanes.mul(__lane65, __lanes.splat(__v59));
+            let __lane276 = __lanes.mul(__lane265, __lanes.splat(__v25));
+            let __lane277 = __lanes.add(__lane275, __lane276);
+            let __lane278 = __lanes.mul(__lane58, __lanes.splat(__v60));
+            let __lane279 = __lanes.mul(__lane269, __lanes.splat(__v28));
+            let __lane280 = __lanes.add(__lane278, __lane279);
+            let __lane281 = __lanes.sub(__lane277, __lane280);
+            let __lane282 = __lanes.mul(__lane58, __lanes.splat(__v58));
+            let __lane283 = __lanes.mul(__lane268, __lanes.splat(__v28));
+            let __lane284 = __lanes.add(__lane282, __lane283);
+            let __lane285 = __lanes.mul(__lane265, __lanes.splat(__v23));
+            let __lane286 = __lanes.sub(__lane284, __lane285);
+            let __lane287 = __lanes.mul(__lane83, __lanes.splat(__v55));
+            let __lane288 = __lanes.neg(__lane287);
+            let __lane289 = __lanes.mul(__lane83, __lanes.splat(__v56));
+            let __lane290 = __lanes.mul(__lane82, __lanes.splat(__v57));
+            let __lane291 = __lanes.sub(__lane289, __lane290);
+            let __lane292 = __lanes.mul(__lane82, __lanes.splat(__v55));
+            let __lane293 = __lanes.add(__lane274, __lane288);
+            let __lane294 = __lanes.add(__lane281, __lane291);
+            let __lane295 = __lanes.add(__lane286, __lane292);
+            let __lane296 = __lanes.add(__lane111, __lane293);
+            let __lane297 = __lanes.add(__lane112, __lane294);
+            let __lane298 = __lanes.add(__lane113, __lane295);
+            let __lane299 = __lanes.mul(__lane296, __lanes.splat(__v61));
+            let __lane300 = __lanes.mul(__lane297, __lanes.splat(__v61));
+            let __lane301 = __lanes.mul(__lane298, __lanes.splat(__v61));
+            let __lane302 = __lanes.mul(__lane301, __lanes.splat(__v55));
+            let __lane303 = __lanes.mul(__lane300, __lanes.splat(__v57));
+            let __lane304 = __lanes.sub(__lane302, __lane303);
+            let __lane305 = __lanes.mul(__lane299, __lanes.splat(__v57));
+            let __lane306 = __lanes.mul(__lane301, __lanes.splat(__v56));
+            let __lane307 = __lanes.sub(__lane305, __lane306);
+            let __lane308 = __lanes.mul(__lane300, __lanes.splat(__v56));
+            let __lane309 = __lanes.mul(__lane299, __lanes.splat(__v55));
+            let __lane310 = __lanes.sub(__lane308, __lane309);
+            let __lane311 = __lanes.mul(__lane138, __lanes.splat(__v62));
+            let __lane312 = __lanes.neg(__lane311);
+            let __lane313 = __lanes.mul(__lane132, __lanes.splat(__v62));
+            let __lane314 = __lanes.mul(__lane65, __lanes.splat(__v63));
+            let __lane315 = __lanes.mul(__lane313, __lanes.splat(__v36));
+            let __lane316 = __lanes.add(__lane314, __lane315);
+            let __lane317 = __lanes.mul(__lane138, __lanes.splat(__v64));
+            let __lane318 = __lanes.mul(__lane312, __lanes.splat(__v38));
+            let __lane319 = __lanes.add(__lane317, __lane318);
+            let __lane320 = __lanes.mul(__lane132, __lanes.splat(__v63));
+            let __lane321 = __lanes.mul(__lane313, __lanes.splat(__v39));
+            let __lane322 = __lanes.add(__lane320, __lane321);
+            let __lane323 = __lanes.sub(__lane319, __lane322);
+            let __lane324 = __lanes.mul(__lane65, __lanes.splat(__v64));
+            let __lane325 = __lanes.mul(__lane312, __lanes.splat(__v36));
+            let __lane326 = __lanes.add(__lane324, __lane325);
+            let __lane327 = __lanes.mul(__lane152, __lanes.splat(__v62));
+            let __lane328 = __lanes.mul(__lane151, __lanes.splat(__v62));
+            let __lane329 = __lanes.sub(__lane316, __lane327);
+            let __lane330 = __lanes.sub(__lane328, __lane326);
+            let __lane331 = __lanes.add(__lane173, __lane329);
+            let __lane332 = __lanes.add(__lane174, __lane323);
+            let __lane333 = __lanes.add(__lane175, __lane330);
+            let __lane334 = __lanes.mul(__lane331, __lanes.splat(__v65));
+            let __lane335 = __lanes.mul(__lane332, __lanes.splat(__v65));
+            let __lane336 = __lanes.mul(__lane333, __lanes.splat(__v65));
+            let __lane337 = __lanes.mul(__lane336, __lanes.splat(__v62));
+            let __lane338 = __lanes.mul(__lane334, __lanes.splat(__v62));
+            let __lane339 = __lanes.neg(__lane338);
+            let __lane340 = __lanes.mul(__lane178, __lanes.splat(__v66));
+            let __lane341 = __lanes.mul(__lane182, __lanes.splat(__v66));
+            let __lane342 = __lanes.mul(__lane181, __lanes.splat(__v66));
+            let __lane343 = __lanes.mul(__lane206, __lanes.splat(__v67));
+            let __lane344 = __lanes.mul(__lane203, __lanes.splat(__v67));
+            let __lane345 = __lanes.neg(__lane344);
+            let __lane346 = __lanes.mul(__lane188, __lanes.splat(__v68));
+            let __lane347 = __lanes.mul(__lane345, __lanes.splat(__v69));
+            let __lane348 = __lanes.add(__lane346, __lane347);
+            let __lane349 = __lanes.mul(__lane188, __lanes.splat(__v70));
+            let __lane350 = __lanes.mul(__lane343, __lanes.splat(__v69));
+            let __lane351 = __lanes.add(__lane349, __lane350);
+            let __lane352 = __lanes.mul(__lane203, __lanes.splat(__v68));
+            let __lane353 = __lanes.mul(__lane345, __lanes.splat(__v71));
+            let __lane354 = __lanes.add(__lane352, __lane353);
+            let __lane355 = __lanes.mul(__lane206, __lanes.splat(__v70));
+            let __lane356 = __lanes.mul(__lane343, __lanes.splat(__v72));
+            let __lane357 = __lanes.add(__lane355, __lane356);
+            let __lane358 = __lanes.sub(__lane354, __lane357);
+            let __lane359 = __lanes.mul(__lane216, __lanes.splat(__v67));
+            let __lane360 = __lanes.mul(__lane215, __lanes.splat(__v67));
+            let __lane361 = __lanes.sub(__lane359, __lane348);
+            let __lane362 = __lanes.sub(__lane351, __lane360);
+            let __lane363 = __lanes.add(__lane197, __lane361);
+            let __lane364 = __lanes.add(__lane200, __lane362);
+            let __lane365 = __lanes.add(__lane181, __lane358);
+            let __lane366 = __lanes.mul(__lane363, __lanes.splat(__v73));
+            let __lane367 = __lanes.mul(__lane364, __lanes.splat(__v73));
+            let __lane368 = __lanes.mul(__lane365, __lanes.splat(__v73));
+            let __lane369 = __lanes.mul(__lane367, __lanes.splat(__v67));
+            let __lane370 = __lanes.neg(__lane369);
+            let __lane371 = __lanes.mul(__lane366, __lanes.splat(__v67));
+            let __lane372 = __lanes.mul(__lane366, __lanes.splat(__c6));
+            let __lane373 = __lanes.mul(__lane367, __lanes.splat(__v46));
+            let __lane374 = __lanes.add(__lane372, __lane373);
+            let __lane375 = __lanes.mul(__lane366, __lanes.splat(__s6));
+            let __lane376 = __lanes.mul(__lane367, __lanes.splat(__c6));
+            let __lane377 = __lanes.add(__lane375, __lane376);
+            let __lane378 = __lanes.mul(__lane370, __lanes.splat(__c6));
+            let __lane379 = __lanes.mul(__lane371, __lanes.splat(__v46));
+            let __lane380 = __lanes.add(__lane378, __lane379);
+            let __lane381 = __lanes.mul(__lane370, __lanes.splat(__s6));
+            let __lane382 = __lanes.mul(__lane371, __lanes.splat(__c6));
+            let __lane383 = __lanes.add(__lane381, __lane382);
+            let __lane384 = __lanes.add(__lane340, __lane374);
+            let __lane385 = __lanes.add(__lane341, __lane377);
+            let __lane386 = __lanes.add(__lane342, __lane368);
+            let __lane387 = __lanes.neg(__lane383);
+            let __lane388 = __lanes.mul(__lane384, __lanes.splat(__c5));
+            let __lane389 = __lanes.mul(__lane386, __lanes.splat(__v42));
+            let __lane390 = __lanes.add(__lane388, __lane389);
+            let __lane391 = __lanes.mul(__lane384, __lanes.splat(__s5));
+            let __lane392 = __lanes.mul(__lane386, __lanes.splat(__c5));
+            let __lane393 = __lanes.add(__lane391, __lane392);
+            let __lane394 = __lanes.mul(__lane380, __lanes.splat(__c5));
+            let __lane395 = __lanes.mul(__lane380, __lanes.splat(__s5));
+            let __lane396 = __lanes.add(__lane334, __lane390);
+            let __lane397 = __lanes.add(__lane335, __lane393);
+            let __lane398 = __lanes.sub(__lane336, __lane385);
+            let __lane399 = __lanes.add(__lane337, __lane394);
+            let __lane400 = __lanes.sub(__lane339, __lane383);
+            let __lane401 = __lanes.mul(__lane398, __lanes.splat(__v10));
+            let __lane402 = __lanes.mul(__lane396, __lanes.splat(__v10));
+            let __lane403 = __lanes.add(__lane399, __lane401);
+            let __lane404 = __lanes.sub(__lane400, __lane402);
+            let __lane405 = __lanes.neg(__lane398);
+            let __lane406 = __lanes.mul(__lane10, __lanes.splat(__v74));
+            let __lane407 = __lanes.mul(__lane396, __lanes.splat(__c4));
+            let __lane408 = __lanes.add(__lane406, __lane407);
+            let __lane409 = __lanes.mul(__lane13, __lanes.splat(__v75));
+            let __lane410 = __lanes.mul(__lane405, __lanes.splat(__v31));
+            let __lane411 = __lanes.add(__lane409, __lane410);
+            let __lane412 = __lanes.add(__lane408, __lane411);
+            let __lane413 = __lanes.mul(__lane12, __lanes.splat(__v74));
+            let __lane414 = __lanes.mul(__lane396, __lanes.splat(__s4));
+            let __lane415 = __lanes.add(__lane413, __lane414);
+            let __lane416 = __lanes.mul(__lane10, __lanes.splat(__v75));
+            let __lane417 = __lanes.mul(__lane405, __lanes.splat(__c4));
+            let __lane418 = __lanes.add(__lane416, __lane417);
+            let __lane419 = __lanes.add(__lane415, __lane418);
+            let __lane420 = __lanes.neg(__lane404);
+            let __lane421 = __lanes.mul(__lane10, __lanes.splat(__v76));
+            let __lane422 = __lanes.mul(__lane403, __lanes.splat(__c4));
+            let __lane423 = __lanes.add(__lane421, __lane422);
+            let __lane424 = __lanes.mul(__lane13, __lanes.splat(__v77));
+            let __lane425 = __lanes.mul(__lane420, __lanes.splat(__v31));
+            let __lane426 = __lanes.add(__lane424, __lane425);
+            let __lane427 = __lanes.add(__lane423, __lane426);
+            let __lane428 = __lanes.mul(__lane12, __lanes.splat(__v76));
+            let __lane429 = __lanes.mul(__lane403, __lanes.splat(__s4));
+            let __lane430 = __lanes.add(__lane428, __lane429);
+            let __lane431 = __lanes.mul(__lane10, __lanes.splat(__v77));
+            let __lane432 = __lanes.mul(__lane420, __lanes.splat(__c4));
+            let __lane433 = __lanes.add(__lane431, __lane432);
+            let __lane434 = __lanes.add(__lane430, __lane433);
+            let __lane435 = __lanes.add(__lane299, __lane412);
+            let __lane436 = __lanes.add(__lane300, __lane419);
+            let __lane437 = __lanes.add(__lane301, __lane397);
+            let __lane438 = __lanes.add(__lane304, __lane427);
+            let __lane439 = __lanes.add(__lane307, __lane434);
+            let __lane440 = __lanes.add(__lane310, __lane395);
+            let __lane441 = __lanes.mul(__lane437, __lanes.splat(__v21));
+            let __lane442 = __lanes.mul(__lane437, __lanes.splat(__v22));
+            let __lane443 = __lanes.mul(__lane436, __lanes.splat(__v22));
+            let __lane444 = __lanes.mul(__lane435, __lanes.splat(__v21));
+            let __lane445 = __lanes.sub(__lane443, __lane444);
+            let __lane446 = __lanes.add(__lane438, __lane441);
+            let __lane447 = __lanes.sub(__lane439, __lane442);
+            let __lane448 = __lanes.add(__lane440, __lane445);
+            let __lane449 = __lanes.neg(__lane447);
+            let __lane450 = __lanes.mul(__lane7, __lanes.splat(__v78));
+            let __lane451 = __lanes.mul(__lane435, __lanes.splat(__s3));
+            let __lane452 = __lanes.add(__lane450, __lane451);
+            let __lane453 = __lanes.mul(__lane5, __lanes.splat(__v79));
+            let __lane454 = __lanes.mul(__lane437, __lanes.splat(__c3));
+            let __lane455 = __lanes.add(__lane453, __lane454);
+            let __lane456 = __lanes.add(__lane452, __lane455);
+            let __lane457 = __lanes.mul(__lane5, __lanes.splat(__v80));
+            let __lane458 = __lanes.mul(__lane446, __lanes.splat(__c3));
+            let __lane459 = __lanes.add(__lane457, __lane458);
+            let __lane460 = __lanes.mul(__lane8, __lanes.splat(__v81));
+            let __lane461 = __lanes.mul(__lane448, __lanes.splat(__v17));
+            let __lane462 = __lanes.add(__lane460, __lane461);
+            let __lane463 = __lanes.add(__lane459, __lane462);
+            let __lane464 = __lanes.mul(__lane7, __lanes.splat(__v80));
+            let __lane465 = __lanes.mul(__lane446, __lanes.splat(__s3));
+            let __lane466 = __lanes.add(__lane464, __lane465);
+            let __lane467 = __lanes.mul(__lane5, __lanes.splat(__v81));
+            let __lane468 = __lanes.mul(__lane448, __lanes.splat(__c3));
+            let __lane469 = __lanes.add(__lane467, __lane468);
+            let __lane470 = __lanes.add(__lane466, __lane469);
+            let __lane471 = __lanes.add(__lane253, __lane456);
+            let __lane472 = __lanes.sub(__lane254, __lane436);
+            let __lane473 = __lanes.add(__lane257, __lane463);
+            let __lane474 = __lanes.add(__lane260, __lane470);
+            let __lane475 = __lanes.sub(__lane263, __lane447);
+            let __lane476 = __lanes.mul(__lane472, __lanes.splat(__v10));
+            let __lane477 = __lanes.mul(__lane471, __lanes.splat(__v10));
+            let __lane478 = __lanes.sub(__lane474, __lane476);
+            let __lane479 = __lanes.add(__lane475, __lane477);
+            let __lane480 = __lanes.mul(__lane3, __lanes.splat(__v82));
+            let __lane481 = __lanes.mul(__lane473, __lanes.splat(__s2));
+            let __lane482 = __lanes.add(__lane480, __lane481);
+            let __lane483 = __lanes.mul(__lane1, __lanes.splat(__v83));
+            let __lane484 = __lanes.mul(__lane478, __lanes.splat(__c2));
+            let __lane485 = __lanes.add(__lane483, __lane484);
+            let __lane486 = __lanes.add(__lane482, __lane485);
+            let __lane487 = __lanes.constant([1.0, 0.0, 0.0, 0.0]);
+            let __lane488 = __lanes.mul(__lane487, __lanes.splat(__s2));
+            let __lane489 = __lanes.mul(__lane487, __lanes.splat(__c2));
+            let __lane490 = __lanes.mul(__lane2, __lanes.splat(__v12));
+            let __lane491 = __lanes.mul(__lane489, __lanes.splat(__qd2));
+            let __lane492 = __lanes.add(__lane490, __lane491);
+            let __lane493 = __lanes.mul(__lane2, __lanes.splat(__v13));
+            let __lane494 = __lanes.mul(__lane488, __lanes.splat(__qd2));
+            let __lane495 = __lanes.add(__lane493, __lane494);
+            let __lane496 = __lanes.neg(__lane495);
+            let __lane497 = __lanes.mul(__lane2, __lanes.splat(__v10));
+            let __lane498 = __lanes.mul(__lane489, __lanes.splat(__v10));
+            let __lane499 = __lanes.neg(__lane498);
+            let __lane500 = __lanes.mul(__lane489, __lanes.splat(__v11));
+            let __lane501 = __lanes.mul(__lane499, __lanes.splat(__v12));
+            let __lane502 = __lanes.add(__lane500, __lane501);
+            let __lane503 = __lanes.mul(__lane2, __lanes.splat(__v14));
+            let __lane504 = __lanes.mul(__lane497, __lanes.splat(__qd2));
+            let __lane505 = __lanes.add(__lane503, __lane504);
+            let __lane506 = __lanes.sub(__lane502, __lane505);
+            let __lane507 = __lanes.mul(__lane488, __lanes.splat(__v11));
+            let __lane508 = __lanes.mul(__lane499, __lanes.splat(__v13));
+            let __lane509 = __lanes.add(__lane507, __lane508);
+            let __lane510 = __lanes.mul(__lane488, __lanes.splat(__v14));
+            let __lane511 = __lanes.mul(__lane497, __lanes.splat(__v13));
+            let __lane512 = __lanes.add(__lane510, __lane511);
+            let __lane513 = __lanes.mul(__lane496, __lanes.splat(__v10));
+            let __lane514 = __lanes.neg(__lane509);
+            let __lane515 = __lanes.sub(__lane512, __lane513);
+            let __lane516 = __lanes.mul(__lane506, __lanes.splat(__c3));
+            let __lane517 = __lanes.mul(__lane514, __lanes.splat(__s3));
+            let __lane518 = __lanes.add(__lane516, __lane517);
+            let __lane519 = __lanes.mul(__lane506, __lanes.splat(__v17));
+            let __lane520 = __lanes.mul(__lane514, __lanes.splat(__c3));
+            let __lane521 = __lanes.add(__lane519, __lane520);
+            let __lane522 = __lanes.mul(__lane488, __lanes.splat(__c3));
+            let __lane523 = __lanes.mul(__lane489, __lanes.splat(__s3));
+            let __lane524 = __lanes.add(__lane522, __lane523);
+            let __lane525 = __lanes.mul(__lane488, __lanes.splat(__v17));
+            let __lane526 = __lanes.mul(__lane489, __lanes.splat(__c3));
+            let __lane527 = __lanes.add(__lane525, __lane526);
+            let __lane528 = __lanes.neg(__lane2);
+            let __lane529 = __lanes.mul(__lane492, __lanes.splat(__c3));
+            let __lane530 = __lanes.mul(__lane496, __lanes.splat(__s3));
+            let __lane531 = __lanes.add(__lane529, __lane530);
+            let __lane532 = __lanes.mul(__lane492, __lanes.splat(__v17));
+            let __lane533 = __lanes.mul(__lane496, __lanes.splat(__c3));
+            let __lane534 = __lanes.add(__lane532, __lane533);
+            let __lane535 = __lanes.neg(__lane6);
+            let __lane536 = __lanes.sub(__lane528, __lane6);
+            let __lane537 = __lanes.mul(__lane527, __lanes.splat(__v20));
+            let __lane538 = __lanes.mul(__lane535, __lanes.splat(__v25));
+            let __lane539 = __lanes.add(__lane537, __lane538);
+            let __lane540 = __lanes.mul(__lane524, __lanes.splat(__v20));
+            let __lane541 = __lanes.mul(__lane535, __lanes.splat(__v28));
+            let __lane542 = __lanes.add(__lane540, __lane541);
+            let __lane543 = __lanes.sub(__lane531, __lane539);
+            let __lane544 = __lanes.add(__lane534, __lane542);
+            let __lane545 = __lanes.mul(__lane527, __lanes.splat(__v21));
+            let __lane546 = __lanes.neg(__lane545);
+            let __lane547 = __lanes.mul(__lane527, __lanes.splat(__v22));
+            let __lane548 = __lanes.mul(__lane524, __lanes.splat(__v21));
+            let __lane549 = __lanes.mul(__lane536, __lanes.splat(__v22));
+            let __lane550 = __lanes.sub(__lane548, __lane549);
+            let __lane551 = __lanes.mul(__lane536, __lanes.splat(__v27));
+            let __lane552 = __lanes.mul(__lane550, __lanes.splat(__v23));
+            let __lane553 = __lanes.add(__lane551, __lane552);
+            let __lane554 = __lanes.mul(__lane527, __lanes.splat(__v24));
+            let __lane555 = __lanes.mul(__lane547, __lanes.splat(__v25));
+            let __lane556 = __lanes.add(__lane554, __lane555);
+            let __lane557 = __lanes.sub(__lane553, __lane556);
+            let __lane558 = __lanes.mul(__lane527, __lanes.splat(__v26));
+            let __lane559 = __lanes.mul(__lane546, __lanes.splat(__v25));
+            let __lane560 = __lanes.add(__lane558, __lane559);
+            let __lane561 = __lanes.mul(__lane524, __lanes.splat(__v27));
+            let __lane562 = __lanes.mul(__lane550, __lanes.splat(__v28));
+            let __lane563 = __lanes.add(__lane561, __lane562);
+            let __lane564 = __lanes.sub(__lane560, __lane563);
+            let __lane565 = __lanes.mul(__lane524, __lanes.splat(__v24));
+            let __lane566 = __lanes.mul(__lane547, __lanes.splat(__v28));
+            let __lane567 = __lanes.add(__lane565, __lane566);
+            let __lane568 = __lanes.mul(__lane536, __lanes.splat(__v26));
+            let __lane569 = __lanes.mul(__lane546, __lanes.splat(__v23));
+            let __lane570 = __lanes.add(__lane568, __lane569);
+            let __lane571 = __lanes.sub(__lane567, __lane570);
+            let __lane572 = __lanes.mul(__lane544, __lanes.splat(__v21));
+            let __lane573 = __lanes.mul(__lane544, __lanes.splat(__v22));
+            let __lane574 = __lanes.mul(__lane543, __lanes.splat(__v21));
+            let __lane575 = __lanes.sub(__lane557, __lane572);
+            let __lane576 = __lanes.add(__lane564, __lane573);
+            let __lane577 = __lanes.add(__lane571, __lane574);
+            let __lane578 = __lanes.add(__lane518, __lane575);
+            let __lane579 = __lanes.sub(__lane576, __lane515);
+            let __lane580 = __lanes.add(__lane521, __lane577);
+            let __lane581 = __lanes.mul(__lane578, __lanes.splat(__c4));
+            let __lane582 = __lanes.mul(__lane579, __lanes.splat(__s4));
+            let __lane583 = __lanes.add(__lane581, __lane582);
+            let __lane584 = __lanes.mul(__lane578, __lanes.splat(__v31));
+            let __lane585 = __lanes.mul(__lane579, __lanes.splat(__c4));
+            let __lane586 = __lanes.add(__lane584, __lane585);
+            let __lane587 = __lanes.mul(__lane524, __lanes.splat(__c4));
+            let __lane588 = __lanes.mul(__lane536, __lanes.splat(__s4));
+            let __lane589 = __lanes.add(__lane587, __lane588);
+            let __lane590 = __lanes.mul(__lane524, __lanes.splat(__v31));
+            let __lane591 = __lanes.mul(__lane536, __lanes.splat(__c4));
+            let __lane592 = __lanes.add(__lane590, __lane591);
+            let __lane593 = __lanes.neg(__lane592);
+            let __lane594 = __lanes.mul(__lane543, __lanes.splat(__c4));
+            let __lane595 = __lanes.mul(__lane543, __lanes.splat(__v31));
+            let __lane596 = __lanes.add(__lane527, __lane11);
+            let __lane597 = __lanes.mul(__lane11, __lanes.splat(__v38));
+            let __lane598 = __lanes.mul(__lane593, __lanes.splat(__qd4));
+            let __lane599 = __lanes.add(__lane597, __lane598);
+            let __lane600 = __lanes.mul(__lane11, __lanes.splat(__v39));
+            let __lane601 = __lanes.mul(__lane589, __lanes.splat(__qd4));
+            let __lane602 = __lanes.add(__lane600, __lane601);
+            let __lane603 = __lanes.sub(__lane594, __lane599);
+            let __lane604 = __lanes.sub(__lane602, __lane595);
+            let __lane605 = __lanes.mul(__lane593, __lanes.splat(__v10));
+            let __lane606 = __lanes.neg(__lane605);
+            let __lane607 = __lanes.mul(__lane589, __lanes.splat(__v10));
+            let __lane608 = __lanes.mul(__lane596, __lanes.splat(__v35));
+            let __lane609 = __lanes.mul(__lane607, __lanes.splat(__v36));
+            let __lane610 = __lanes.add(__lane608, __lane609);
+            let __lane611 = __lanes.mul(__lane593, __lanes.splat(__v37));
+            let __lane612 = __lanes.mul(__lane606, __lanes.splat(__v38));
+            let __lane613 = __lanes.add(__lane611, __lane612);
+            let __lane614 = __lanes.mul(__lane589, __lanes.splat(__v35));
+            let __lane615 = __lanes.mul(__lane607, __lanes.splat(__v39));
+            let __lane616 = __lanes.add(__lane614, __lane615);
+            let __lane617 = __lanes.sub(__lane613, __lane616);
+            let __lane618 = __lanes.mul(__lane596, __lanes.splat(__v37));
+            let __lane619 = __lanes.mul(__lane606, __lanes.splat(__v36));
+            let __lane620 = __lanes.add(__lane618, __lane619);
+            let __lane621 = __lanes.mul(__lane604, __lanes.splat(__v10));
+            let __lane622 = __lanes.mul(__lane603, __lanes.splat(__v10));
+            let __lane623 = __lanes.sub(__lane610, __lane621);
+            let __lane624 = __lanes.sub(__lane622, __lane620);
+            let __lane625 = __lanes.add(__lane583, __lane623);
+            let __lane626 = __lanes.add(__lane580, __lane617);
+            let __lane627 = __lanes.sub(__lane624, __lane586);
+            let __lane628 = __lanes.mul(__lane625, __lanes.splat(__c5));
+            let __lane629 = __lanes.mul(__lane626, __lanes.splat(__s5));
+            let __lane630 = __lanes.add(__lane628, __lane629);
+            let __lane631 = __lanes.mul(__lane625, __lanes.splat(__v42));
+            let __lane632 = __lanes.mul(__lane626, __lanes.splat(__c5));
+            let __lane633 = __lanes.add(__lane631, __lane632);
+            let __lane634 = __lanes.neg(__lane627);
+            let __lane635 = __lanes.mul(__lane589, __lanes.splat(__c5));
+            let __lane636 = __lanes.mul(__lane596, __lanes.splat(__s5));
+            let __lane637 = __lanes.add(__lane635, __lane636);
+            let __lane638 = __lanes.mul(__lane589, __lanes.splat(__v42));
+            let __lane639 = __lanes.mul(__lane596, __lanes.splat(__c5));
+            let __lane640 = __lanes.add(__lane638, __lane639);
+            let __lane641 = __lanes.mul(__lane603, __lanes.splat(__c5));
+            let __lane642 = __lanes.mul(__lane544, __lanes.splat(__s5));
+            let __lane643 = __lanes.add(__lane641, __lane642);
+            let __lane644 = __lanes.neg(__lane604);
+            let __lane645 = __lanes.mul(__lane640, __lanes.splat(__v43));
+            let __lane646 = __lanes.sub(__lane643, __lane645);
+            let __lane647 = __lanes.mul(__lane630, __lanes.splat(__c6));
+            let __lane648 = __lanes.mul(__lane634, __lanes.splat(__s6));
+            let __lane649 = __lanes.add(__lane647, __lane648);
+            let __lane650 = __lanes.mul(__lane630, __lanes.splat(__v46));
+            let __lane651 = __lanes.mul(__lane634, __lanes.splat(__c6));
+            let __lane652 = __lanes.add(__lane650, __lane651);
+            let __lane653 = __lanes.mul(__lane637, __lanes.splat(__c6));
+            let __lane654 = __lanes.mul(__lane592, __lanes.splat(__s6));
+            let __lane655 = __lanes.add(__lane653, __lane654);
+            let __lane656 = __lanes.mul(__lane637, __lanes.splat(__v46));
+            let __lane657 = __lanes.mul(__lane592, __lanes.splat(__c6));
+            let __lane658 = __lanes.add(__lane656, __lane657);
+            let __lane659 = __lanes.mul(__lane646, __lanes.splat(__c6));
+            let __lane660 = __lanes.mul(__lane644, __lanes.splat(__s6));
+            let __lane661 = __lanes.add(__lane659, __lane660);
+            let __lane662 = __lanes.mul(__lane646, __lanes.splat(__v46));
+            let __lane663 = __lanes.mul(__lane644, __lanes.splat(__c6));
+            let __lane664 = __lanes.add(__lane662, __lane663);
+            let __lane665 = __lanes.mul(__lane658, __lanes.splat(__qd6));
+            let __lane666 = __lanes.mul(__lane655, __lanes.splat(__qd6));
+            let __lane667 = __lanes.add(__lane661, __lane665);
+            let __lane668 = __lanes.sub(__lane664, __lane666);
+            let __lane669 = __lanes.mul(__lane489, __lanes.splat(__v48));
+            let __lane670 = __lanes.mul(__lane2, __lanes.splat(__v49));
+            let __lane671 = __lanes.sub(__lane669, __lane670);
+            let __lane672 = __lanes.mul(__lane2, __lanes.splat(__v50));
+            let __lane673 = __lanes.mul(__lane488, __lanes.splat(__v48));
+            let __lane674 = __lanes.sub(__lane672, __lane673);
+            let __lane675 = __lanes.mul(__lane488, __lanes.splat(__v49));
+            let __lane676 = __lanes.mul(__lane489, __lanes.splat(__v50));
+            let __lane677 = __lanes.sub(__lane675, __lane676);
+            let __lane678 = __lanes.mul(__lane489, __lanes.splat(__v51));
+            let __lane679 = __lanes.mul(__lane677, __lanes.splat(__v12));
+            let __lane680 = __lanes.add(__lane678, __lane679);
+            let __lane681 = __lanes.mul(__lane2, __lanes.splat(__v52));
+            let __lane682 = __lanes.mul(__lane674, __lanes.splat(__qd2));
+            let __lane683 = __lanes.add(__lane681, __lane682);
+            let __lane684 = __lanes.sub(__lane680, __lane683);
+            let __lane685 = __lanes.mul(__lane2, __lanes.splat(__v53));
+            let __lane686 = __lanes.mul(__lane671, __lanes.splat(__qd2));
+            let __lane687 = __lanes.add(__lane685, __lane686);
+            let __lane688 = __lanes.mul(__lane488, __lanes.splat(__v51));
+            let __lane689 = __lanes.mul(__lane677, __lanes.splat(__v13));
+            let __lane690 = __lanes.add(__lane688, __lane689);
+            let __lane691 = __lanes.sub(__lane687, __lane690);
+            let __lane692 = __lanes.mul(__lane488, __lanes.splat(__v52));
+            let __lane693 = __lanes.mul(__lane674, __lanes.splat(__v13));
+            let __lane694 = __lanes.add(__lane692, __lane693);
+            let __lane695 = __lanes.mul(__lane489, __lanes.splat(__v53));
+            let __lane696 = __lanes.mul(__lane671, __lanes.splat(__v12));
+            let __lane697 = __lanes.add(__lane695, __lane696);
+            let __lane698 = __lanes.sub(__lane694, __lane697);
+            let __lane699 = __lanes.mul(__lane496, __lanes.splat(__v48));
+            let __lane700 = __lanes.mul(__lane492, __lanes.splat(__v48));
+            let __lane701 = __lanes.neg(__lane700);
+            let __lane702 = __lanes.mul(__lane492, __lanes.splat(__v49));
+            let __lane703 = __lanes.mul(__lane496, __lanes.splat(__v50));
+            let __lane704 = __lanes.sub(__lane702, __lane703);
+            let __lane705 = __lanes.add(__lane684, __lane699);
+            let __lane706 = __lanes.add(__lane691, __lane701);
+            let __lane707 = __lanes.add(__lane698, __lane704);
+            let __lane708 = __lanes.add(__lane506, __lane705);
+            let __lane709 = __lanes.add(__lane514, __lane706);
+            let __lane710 = __lanes.add(__lane515, __lane707);
+            let __lane711 = __lanes.mul(__lane708, __lanes.splat(__v54));
+            let __lane712 = __lanes.mul(__lane709, __lanes.splat(__v54));
+            let __lane713 = __lanes.mul(__lane710, __lanes.splat(__v54));
+            let __lane714 = __lanes.mul(__lane713, __lanes.splat(__v49));
+            let __lane715 = __lanes.mul(__lane712, __lanes.splat(__v48));
+            let __lane716 = __lanes.sub(__lane714, __lane715);
+            let __lane717 = __lanes.mul(__lane711, __lanes.splat(__v48));
+            let __lane718 = __lanes.mul(__lane713, __lanes.splat(__v50));
+            let __lane719 = __lanes.sub(__lane717, __lane718);
+            let __lane720 = __lanes.mul(__lane712, __lanes.splat(__v50));
+            let __lane721 = __lanes.mul(__lane711, __lanes.splat(__v49));
+            let __lane722 = __lanes.sub(__lane720, __lane721);
+            let __lane723 = __lanes.mul(__lane536, __lanes.splat(__v57));
+            let __lane724 = __lanes.mul(__lane527, __lanes.splat(__v55));
+            let __lane725 = __lanes.sub(__lane723, __lane724);
+            let __lane726 = __lanes.mul(__lane527, __lanes.splat(__v56));
+            let __lane727 = __lanes.mul(__lane524, __lanes.splat(__v57));
+            let __lane728 = __lanes.sub(__lane726, __lane727);
+            let __lane729 = __lanes.mul(__lane524, __lanes.splat(__v55));
+            let __lane730 = __lanes.mul(__lane536, __lanes.splat(__v56));
+            let __lane731 = __lanes.sub(__lane729, __lane730);
+            let __lane732 = __lanes.mul(__lane536, __lanes.splat(__v60));
+            let __lane733 = __lanes.mul(__lane731, __lanes.splat(__v23));
+            let __lane734 = __lanes.add(__lane732, __lane733);
+            let __lane735 = __lanes.mul(__lane527, __lanes.splat(__v58));
+            let __lane736 = __lanes.mul(__lane728, __lanes.splat(__v25));
+            let __lane737 = __lanes.add(__lane735, __lane736);
+            let __lane738 = __lanes.sub(__lane734, __lane737);
+            let __lane739 = __lanes.mul(__lane527, __lanes.splat(__v59));
+            let __lane740 = __lanes.mul(__lane725, __lanes.splat(__v25));
+            let __lane741 = __lanes.add(__lane739, __lane740);
+            let __lane742 = __lanes.mul(__lane524, __lanes.splat(__v60));
+            let __lane743 = __lanes.mul(__lane731, __lanes.splat(__v28));
+            let __lane744 = __lanes.add(__lane742, __lane743);
+            let __lane745 = __lanes.sub(__lane741, __lane744);
+            let __lane746 = __lanes.mul(__lane524, __lanes.splat(__v58));
+            let __lane747 = __lanes.mul(__lane728, __lanes.splat(__v28));
+            let __lane748 = __lanes.add(__lane746, __lane747);
+            let __lane749 = __lanes.mul(__lane536, __lanes.splat(__v59));
+            let __lane750 = __lanes.mul(__lane725, __lanes.splat(__v23));
+            let __lane751 = __lanes.add(__lane749, __lane750);
+            let __lane752 = __lanes.sub(__lane748, __lane751);
+            let __lane753 = __lanes.mul(__lane544, __lanes.splat(__v55));
+            let __lane754 = __lanes.neg(__lane753);
+            let __lane755 = __lanes.mul(__lane544, __lanes.splat(__v56));
+            let __lane756 = __lanes.mul(__lane543, __lanes.splat(__v57));
+            let __lane757 = __lanes.sub(__lane755, __lane756);
+            let __lane758 = __lanes.mul(__lane543, __lanes.splat(__v55));
+            let __lane759 = __lanes.add(__lane738, __lane754);
+            let __lane760 = __lanes.add(__lane745, __lane757);
+            let __lane761 = __lanes.add(__lane752, __lane758);
+            let __lane762 = __lanes.add(__lane578, __lane759);
+            let __lane763 = __lanes.add(__lane579, __lane760);
+            let __lane764 = __lanes.add(__lane580, __lane761);
+            let __lane765 = __lanes.mul(__lane762, __lanes.splat(__v61));
+            let __lane766 = __lanes.mul(__lane763, __lanes.splat(__v61));
+            let __lane767 = __lanes.mul(__lane764, __lanes.splat(__v61));
+            let __lane768 = __lanes.mul(__lane767, __lanes.splat(__v55));
+            let __lane769 = __lanes.mul(__lane766, __lanes.splat(__v57));
+            let __lane770 = __lanes.sub(__lane768, __lane769);
+            let __lane771 = __lanes.mul(__lane765, __lanes.splat(__v57));
+            let __lane772 = __lanes.mul(__lane767, __lanes.splat(__v56));
+            let __lane773 = __lanes.sub(__lane771, __lane772);
+            let __lane774 = __lanes.mul(__lane766, __lanes.splat(__v56));
+            let __lane775 = __lanes.mul(__lane765, __lanes.splat(__v55));
+            let __lane776 = __lanes.sub(__lane774, __lane775);
+            let __lane777 = __lanes.mul(__lane593, __lanes.splat(__v62));
+            let __lane778 = __lanes.neg(__lane777);
+            let __lane779 = __lanes.mul(__lane589, __lanes.splat(__v62));
+            let __lane780 = __lanes.mul(__lane596, __lanes.splat(__v63));
+            let __lane781 = __lanes.mul(__lane779, __lanes.splat(__v36));
+            let __lane782 = __lanes.add(__lane780, __lane781);
+            let __lane783 = __lanes.mul(__lane593, __lanes.splat(__v64));
+            let __lane784 = __lanes.mul(__lane778, __lanes.splat(__v38));
+            let __lane785 = __lanes.add(__lane783, __lane784);
+            let __lane786 = __lanes.mul(__lane589, __lanes.splat(__v63));
+            let __lane787 = __lanes.mul(__lane779, __lanes.splat(__v39));
+            let __lane788 = __lanes.add(__lane786, __lane787);
+            let __lane789 = __lanes.sub(__lane785, __lane788);
+            let __lane790 = __lanes.mul(__lane596, __lanes.splat(__v64));
+            let __lane791 = __lanes.mul(__lane778, __lanes.splat(__v36));
+            let __lane792 = __lanes.add(__lane790, __lane791);
+            let __lane793 = __lanes.mul(__lane604, __lanes.splat(__v62));
+            let __lane794 = __lanes.mul(__lane603, __lanes.splat(__v62));
+            let __lane795 = __lanes.sub(__lane782, __lane793);
+            let __lane796 = __lanes.sub(__lane794, __lane792);
+            let __lane797 = __lanes.add(__lane625, __lane795);
+            let __lane798 = __lanes.add(__lane626, __lane789);
+            let __lane799 = __lanes.add(__lane627, __lane796);
+            let __lane800 = __lanes.mul(__lane797, __lanes.splat(__v65));
+            let __lane801 = __lanes.mul(__lane798, __lanes.splat(__v65));
+            let __lane802 = __lanes.mul(__lane799, __lanes.splat(__v65));
+            let __lane803 = __lanes.mul(__lane802, __lanes.splat(__v62));
+            let __lane804 = __lanes.mul(__lane800, __lanes.splat(__v62));
+            let __lane805 = __lanes.neg(__lane804);
+            let __lane806 = __lanes.mul(__lane630, __lanes.splat(__v66));
+            let __lane807 = __lanes.mul(__lane634, __lanes.splat(__v66));
+            let __lane808 = __lanes.mul(__lane633, __lanes.splat(__v66));
+            let __lane809 = __lanes.mul(__lane658, __lanes.splat(__v67));
+            let __lane810 = __lanes.mul(__lane655, __lanes.splat(__v67));
+            let __lane811 = __lanes.neg(__lane810);
+            let __lane812 = __lanes.mul(__lane640, __lanes.splat(__v68));
+            let __lane813 = __lanes.mul(__lane811, __lanes.splat(__v69));
+            let __lane814 = __lanes.add(__lane812, __lane813);
+            let __lane815 = __lanes.mul(__lane640, __lanes.splat(__v70));
+            let __lane816 = __lanes.mul(__lane809, __lanes.splat(__v69));
+            let __lane817 = __lanes.add(__lane815, __lane816);
+            let __lane818 = __lanes.mul(__lane655, __lanes.splat(__v68));
+            let __lane819 = __lanes.mul(__lane811, __lanes.splat(__v71));
+            let __lane820 = __lanes.add(__lane818, __lane819);
+            let __lane821 = __lanes.mul(__lane658, __lanes.splat(__v70));
+            let __lane822 = __lanes.mul(__lane809, __lanes.splat(__v72));
+            let __lane823 = __lanes.add(__lane821, __lane822);
+            let __lane824 = __lanes.sub(__lane820, __lane823);
+            let __lane825 = __lanes.mul(__lane668, __lanes.splat(__v67));
+            let __lane826 = __lanes.mul(__lane667, __lanes.splat(__v67));
+            let __lane827 = __lanes.sub(__lane825, __lane814);
+            let __lane828 = __lanes.sub(__lane817, __lane826);
+            let __lane829 = __lanes.add(__lane649, __lane827);
+            let __lane830 = __lanes.add(__lane652, __lane828);
+            let __lane831 = __lanes.add(__lane633, __lane824);
+            let __lane832 = __lanes.mul(__lane829, __lanes.splat(__v73));
+            let __lane833 = __lanes.mul(__lane830, __lanes.splat(__v73));
+            let __lane834 = __lanes.mul(__lane831, __lanes.splat(__v73));
+            let __lane835 = __lanes.mul(__lane833, __lanes.splat(__v67));
+            let __lane836 = __lanes.neg(__lane835);
+            let __lane837 = __lanes.mul(__lane832, __lanes.splat(__v67));
+            let __lane838 = __lanes.mul(__lane832, __lanes.splat(__c6));
+            let __lane839 = __lanes.mul(__lane833, __lanes.splat(__v46));
+            let __lane840 = __lanes.add(__lane838, __lane839);
+            let __lane841 = __lanes.mul(__lane832, __lanes.splat(__s6));
+            let __lane842 = __lanes.mul(__lane833, __lanes.splat(__c6));
+            let __lane843 = __lanes.add(__lane841, __lane842);
+            let __lane844 = __lanes.mul(__lane836, __lanes.splat(__c6));
+            let __lane845 = __lanes.mul(__lane837, __lanes.splat(__v46));
+            let __lane846 = __lanes.add(__lane844, __lane845);
+            let __lane847 = __lanes.mul(__lane836, __lanes.splat(__s6));
+            let __lane848 = __lanes.mul(__lane837, __lanes.splat(__c6));
+            let __lane849 = __lanes.add(__lane847, __lane848);
+            let __lane850 = __lanes.add(__lane806, __lane840);
+            let __lane851 = __lanes.add(__lane807, __lane843);
+            let __lane852 = __lanes.add(__lane808, __lane834);
+            let __lane853 = __lanes.neg(__lane849);
+            let __lane854 = __lanes.mul(__lane850, __lanes.splat(__c5));
+            let __lane855 = __lanes.mul(__lane852, __lanes.splat(__v42));
+            let __lane856 = __lanes.add(__lane854, __lane855);
+            let __lane857 = __lanes.mul(__lane850, __lanes.splat(__s5));
+            let __lane858 = __lanes.mul(__lane852, __lanes.splat(__c5));
+            let __lane859 = __lanes.add(__lane857, __lane858);
+            let __lane860 = __lanes.mul(__lane846, __lanes.splat(__c5));
+            let __lane861 = __lanes.mul(__lane846, __lanes.splat(__s5));
+            let __lane862 = __lanes.add(__lane800, __lane856);
+            let __lane863 = __lanes.add(__lane801, __lane859);
+            let __lane864 = __lanes.sub(__lane802, __lane851);
+            let __lane865 = __lanes.add(__lane803, __lane860);
+            let __lane866 = __lanes.sub(__lane805, __lane849);
+            let __lane867 = __lanes.mul(__lane864, __lanes.splat(__v10));
+            let __lane868 = __lanes.mul(__lane862, __lanes.splat(__v10));
+            let __lane869 = __lanes.add(__lane865, __lane867);
+            let __lane870 = __lanes.sub(__lane866, __lane868);
+            let __lane871 = __lanes.neg(__lane864);
+            let __lane872 = __lanes.mul(__lane862, __lanes.splat(__c4));
+            let __lane873 = __lanes.mul(__lane871, __lanes.splat(__v31));
+            let __lane874 = __lanes.add(__lane872, __lane873);
+            let __lane875 = __lanes.mul(__lane862, __lanes.splat(__s4));
+            let __lane876 = __lanes.mul(__lane871, __lanes.splat(__c4));
+            let __lane877 = __lanes.add(__lane875, __lane876);
+            let __lane878 = __lanes.neg(__lane870);
+            let __lane879 = __lanes.mul(__lane869, __lanes.splat(__c4));
+            let __lane880 = __lanes.mul(__lane878, __lanes.splat(__v31));
+            let __lane881 = __lanes.add(__lane879, __lane880);
+            let __lane882 = __lanes.mul(__lane869, __lanes.splat(__s4));
+            let __lane883 = __lanes.mul(__lane878, __lanes.splat(__c4));
+            let __lane884 = __lanes.add(__lane882, __lane883);
+            let __lane885 = __lanes.add(__lane765, __lane874);
+            let __lane886 = __lanes.add(__lane766, __lane877);
+            let __lane887 = __lanes.add(__lane767, __lane863);
+            let __lane888 = __lanes.add(__lane770, __lane881);
+            let __lane889 = __lanes.add(__lane773, __lane884);
+            let __lane890 = __lanes.add(__lane776, __lane861);
+            let __lane891 = __lanes.mul(__lane887, __lanes.splat(__v21));
+            let __lane892 = __lanes.mul(__lane887, __lanes.splat(__v22));
+            let __lane893 = __lanes.mul(__lane886, __lanes.splat(__v22));
+            let __lane894 = __lanes.mul(__lane885, __lanes.splat(__v21));
+            let __lane895 = __lanes.sub(__lane893, __lane894);
+            let __lane896 = __lanes.add(__lane888, __lane891);
+            let __lane897 = __lanes.sub(__lane889, __lane892);
+            let __lane898 = __lanes.add(__lane890, __lane895);
+            let __lane899 = __lanes.neg(__lane897);
+            let __lane900 = __lanes.mul(__lane885, __lanes.splat(__s3));
+            let __lane901 = __lanes.mul(__lane887, __lanes.splat(__c3));
+            let __lane902 = __lanes.add(__lane900, __lane901);
+            let __lane903 = __lanes.mul(__lane896, __lanes.splat(__c3));
+            let __lane904 = __lanes.mul(__lane898, __lanes.splat(__v17));
+            let __lane905 = __lanes.add(__lane903, __lane904);
+            let __lane906 = __lanes.mul(__lane896, __lanes.splat(__s3));
+            let __lane907 = __lanes.mul(__lane898, __lanes.splat(__c3));
+            let __lane908 = __lanes.add(__lane906, __lane907);
+            let __lane909 = __lanes.add(__lane712, __lane902);
+            let __lane910 = __lanes.sub(__lane713, __lane886);
+            let __lane911 = __lanes.add(__lane716, __lane905);
+            let __lane912 = __lanes.add(__lane719, __lane908);
+            let __lane913 = __lanes.sub(__lane722, __lane897);
+            let __lane914 = __lanes.mul(__lane910, __lanes.splat(__v10));
+            let __lane915 = __lanes.mul(__lane909, __lanes.splat(__v10));
+            let __lane916 = __lanes.sub(__lane912, __lane914);
+            let __lane917 = __lanes.add(__lane913, __lane915);
+            let __lane918 = __lanes.mul(__lane911, __lanes.splat(__s2));
+            let __lane919 = __lanes.mul(__lane916, __lanes.splat(__c2));
+            let __lane920 = __lanes.add(__lane918, __lane919);
+            let __lane921 = __lanes.constant([-1.0, 0.0, 0.0, 0.0]);
+            let __lane922 = __lanes.mul(__lane921, __lanes.splat(__s5));
+            let __lane923 = __lanes.mul(__lane487, __lanes.splat(__c5));
+            let __lane924 = __lanes.neg(__lane923);
+            let __lane925 = __lanes.mul(__lane0, __lanes.splat(__s6));
+            let __lane926 = __lanes.mul(__lane2, __lanes.splat(__c6));
+            let __lane927 = __lanes.neg(__lane926);
+            let __lane928 = __lanes.mul(__lane922, __lanes.splat(__v84));
+            let __lane929 = __lanes.mul(__lane923, __lanes.splat(__v85));
+            let __lane930 = __lanes.add(__lane928, __lane929);
+            let __lane931 = __lanes.mul(__lane924, __lanes.splat(__v84));
+            let __lane932 = __lanes.mul(__lane922, __lanes.splat(__v85));
+            let __lane933 = __lanes.add(__lane931, __lane932);
+            let __lane934 = __lanes.mul(__lane922, __lanes.splat(__v39));
+            let __lane935 = __lanes.mul(__lane923, __lanes.splat(__v36));
+            let __lane936 = __lanes.add(__lane934, __lane935);
+            let __lane937 = __lanes.mul(__lane924, __lanes.splat(__v39));
+            let __lane938 = __lanes.mul(__lane922, __lanes.splat(__v36));
+            let __lane939 = __lanes.add(__lane937, __lane938);
+            let __lane940 = __lanes.mul(__lane922, __lanes.splat(__v86));
+            let __lane941 = __lanes.mul(__lane923, __lanes.splat(__v87));
+            let __lane942 = __lanes.add(__lane940, __lane941);
+            let __lane943 = __lanes.mul(__lane939, __lanes.splat(__v43));
+            let __lane944 = __lanes.mul(__lane535, __lanes.splat(__v88));
+            let __lane945 = __lanes.add(__lane943, __lane944);
+            let __lane946 = __lanes.sub(__lane942, __lane945);
+            let __lane947 = __lanes.mul(__lane925, __lanes.splat(__v89));
+            let __lane948 = __lanes.mul(__lane930, __lanes.splat(__c6));
+            let __lane949 = __lanes.add(__lane947, __lane948);
+            let __lane950 = __lanes.mul(__lane926, __lanes.splat(__v90));
+            let __lane951 = __lanes.add(__lane949, __lane950);
+            let __lane952 = __lanes.mul(__lane927, __lanes.splat(__v89));
+            let __lane953 = __lanes.mul(__lane930, __lanes.splat(__v46));
+            let __lane954 = __lanes.add(__lane952, __lane953);
+            let __lane955 = __lanes.mul(__lane925, __lanes.splat(__v90));
+            let __lane956 = __lanes.add(__lane954, __lane955);
+            let __lane957 = __lanes.mul(__lane925, __lanes.splat(__v91));
+            let __lane958 = __lanes.mul(__lane936, __lanes.splat(__c6));
+            let __lane959 = __lanes.add(__lane957, __lane958);
+            let __lane960 = __lanes.mul(__lane926, __lanes.splat(__v92));
+            let __lane961 = __lanes.mul(__lane535, __lanes.splat(__s6));
+            let __lane962 = __lanes.add(__lane960, __lane961);
+            let __lane963 = __lanes.add(__lane959, __lane962);
+            let __lane964 = __lanes.mul(__lane927, __lanes.splat(__v91));
+            let __lane965 = __lanes.mul(__lane936, __lanes.splat(__v46));
+            let __lane966 = __lanes.add(__lane964, __lane965);
+            let __lane967 = __lanes.mul(__lane925, __lanes.splat(__v92));
+            let __lane968 = __lanes.mul(__lane535, __lanes.splat(__c6));
+            let __lane969 = __lanes.add(__lane967, __lane968);
+            let __lane970 = __lanes.add(__lane966, __lane969);
+            let __lane971 = __lanes.mul(__lane925, __lanes.splat(__v93));
+            let __lane972 = __lanes.mul(__lane946, __lanes.splat(__c6));
+            let __lane973 = __lanes.add(__lane971, __lane972);
+            let __lane974 = __lanes.mul(__lane926, __lanes.splat(__v94));
+            let __lane975 = __lanes.add(__lane973, __lane974);
+            let __lane976 = __lanes.mul(__lane927, __lanes.splat(__v93));
+            let __lane977 = __lanes.mul(__lane946, __lanes.splat(__v46));
+            let __lane978 = __lanes.add(__lane976, __lane977);
+            let __lane979 = __lanes.mul(__lane925, __lanes.splat(__v94));
+            let __lane980 = __lanes.add(__lane978, __lane979);
+            let __lane981 = __lanes.add(__lane939, __lane11);
+            let __lane982 = __lanes.mul(__lane11, __lanes.splat(__v72));
+            let __lane983 = __lanes.mul(__lane970, __lanes.splat(__qd6));
+            let __lane984 = __lanes.add(__lane982, __lane983);
+            let __lane985 = __lanes.mul(__lane11, __lanes.splat(__v71));
+            let __lane986 = __lanes.mul(__lane963, __lanes.splat(__qd6));
+            let __lane987 = __lanes.add(__lane985, __lane986);
+            let __lane988 = __lanes.add(__lane975, __lane984);
+            let __lane989 = __lanes.sub(__lane980, __lane987);
+            let __lane990 = __lanes.mul(__lane930, __lanes.splat(__v66));
+            let __lane991 = __lanes.mul(__lane933, __lanes.splat(__v66));
+            let __lane992 = __lanes.mul(__lane970, __lanes.splat(__v67));
+            let __lane993 = __lanes.mul(__lane963, __lanes.splat(__v67));
+            let __lane994 = __lanes.neg(__lane993);
+            let __lane995 = __lanes.mul(__lane981, __lanes.splat(__v68));
+            let __lane996 = __lanes.mul(__lane994, __lanes.splat(__v69));
+            let __lane997 = __lanes.add(__lane995, __lane996);
+            let __lane998 = __lanes.mul(__lane981, __lanes.splat(__v70));
+            let __lane999 = __lanes.mul(__lane992, __lanes.splat(__v69));
+            (
+                __lane387,
+                __lane395,
+                __lane449,
+                __lane479,
+                __lane486,
+                __lane853,
+                __lane861,
+                __lane899,
+                __lane917,
+                __lane920,
+                __lane922,
+                __lane923,
+                __lane924,
+                __lane925,
+                __lane926,
+                __lane927,
+                __lane933,
+                __lane951,
+                __lane956,
+                __lane963,
+                __lane970,
+                __lane988,
+                __lane989,
+                __lane990,
+                __lane991,
+                __lane992,
+                __lane994,
+                __lane997,
+                __lane998,
+                __lane999,
+            )
+        };
+        let (
+            __lane486_0,
+            __lane486_1,
+            __lane486_2,
+            __lane486_3,
+            __lane1116_0,
+            __lane1116_1,
+            __lane479_0,
+            __lane479_1,
+            __lane479_2,
+            __lane479_3,
+            __lane1113_0,
+            __lane1113_1,
+            __lane449_0,
+            __lane449_1,
+            __lane449_2,
+            __lane449_3,
+            __lane1099_0,
+            __lane1099_1,
+            __lane395_0,
+            __lane395_1,
+            __lane395_2,
+            __lane395_3,
+            __lane1071_0,
+            __lane1071_1,
+            __lane387_0,
+            __lane387_1,
+            __lane387_2,
+            __lane387_3,
+            __lane1051_0,
+            __lane1051_1,
+            __lane_zero,
+            __lane920_0,
+            __lane920_1,
+            __lane920_2,
+            __lane920_3,
+            __lane1116_2,
+            __lane1116_3,
+            __lane917_0,
+            __lane917_1,
+            __lane917_2,
+            __lane917_3,
+            __lane1113_2,
+            __lane1113_3,
+            __lane899_0,
+            __lane899_1,
+            __lane899_2,
+            __lane899_3,
+            __lane1099_2,
+            __lane1099_3,
+            __lane861_0,
+            __lane861_1,
+            __lane861_2,
+            __lane861_3,
+            __lane1071_2,
+            __lane1071_3,
+            __lane853_0,
+            __lane853_1,
+            __lane853_2,
+            __lane853_3,
+            __lane1051_2,
+            __lane1051_3,
+        ) = {
+            let __lane1000 = __lanes.add(__lane998, __lane999);
+            let __lane1001 = __lanes.mul(__lane963, __lanes.splat(__v68));
+            let __lane1002 = __lanes.mul(__lane994, __lanes.splat(__v71));
+            let __lane1003 = __lanes.add(__lane1001, __lane1002);
+            let __lane1004 = __lanes.mul(__lane970, __lanes.splat(__v70));
+            let __lane1005 = __lanes.mul(__lane992, __lanes.splat(__v72));
+            let __lane1006 = __lanes.add(__lane1004, __lane1005);
+            let __lane1007 = __lanes.sub(__lane1003, __lane1006);
+            let __lane1008 = __lanes.mul(__lane989, __lanes.splat(__v67));
+            let __lane1009 = __lanes.mul(__lane988, __lanes.splat(__v67));
+            let __lane1010 = __lanes.sub(__lane1008, __lane997);
+            let __lane1011 = __lanes.sub(__lane1000, __lane1009);
+            let __lane1012 = __lanes.add(__lane951, __lane1010);
+            let __lane1013 = __lanes.add(__lane956, __lane1011);
+            let __lane1014 = __lanes.add(__lane933, __lane1007);
+            let __lane1015 = __lanes.mul(__lane1012, __lanes.splat(__v73));
+            let __lane1016 = __lanes.mul(__lane1013, __lanes.splat(__v73));
+            let __lane1017 = __lanes.mul(__lane1014, __lanes.splat(__v73));
+            let __lane1018 = __lanes.mul(__lane1016, __lanes.splat(__v67));
+            let __lane1019 = __lanes.neg(__lane1018);
+            let __lane1020 = __lanes.mul(__lane1015, __lanes.splat(__v67));
+            let __lane1021 = __lanes.mul(__lane925, __lanes.splat(__v95));
+            let __lane1022 = __lanes.mul(__lane1015, __lanes.splat(__c6));
+            let __lane1023 = __lanes.add(__lane1021, __lane1022);
+            let __lane1024 = __lanes.mul(__lane927, __lanes.splat(__v96));
+            let __lane1025 = __lanes.mul(__lane1016, __lanes.splat(__v46));
+            let __lane1026 = __lanes.add(__lane1024, __lane1025);
+            let __lane1027 = __lanes.add(__lane1023, __lane1026);
+            let __lane1028 = __lanes.mul(__lane926, __lanes.splat(__v95));
+            let __lane1029 = __lanes.mul(__lane1015, __lanes.splat(__s6));
+            let __lane1030 = __lanes.add(__lane1028, __lane1029);
+            let __lane1031 = __lanes.mul(__lane925, __lanes.splat(__v96));
+            let __lane1032 = __lanes.mul(__lane1016, __lanes.splat(__c6));
+            let __lane1033 = __lanes.add(__lane1031, __lane1032);
+            let __lane1034 = __lanes.add(__lane1030, __lane1033);
+            let __lane1035 = __lanes.mul(__lane925, __lanes.splat(__v97));
+            let __lane1036 = __lanes.mul(__lane1019, __lanes.splat(__c6));
+            let __lane1037 = __lanes.add(__lane1035, __lane1036);
+            let __lane1038 = __lanes.mul(__lane927, __lanes.splat(__v98));
+            let __lane1039 = __lanes.mul(__lane1020, __lanes.splat(__v46));
+            let __lane1040 = __lanes.add(__lane1038, __lane1039);
+            let __lane1041 = __lanes.add(__lane1037, __lane1040);
+            let __lane1042 = __lanes.mul(__lane926, __lanes.splat(__v97));
+            let __lane1043 = __lanes.mul(__lane1019, __lanes.splat(__s6));
+            let __lane1044 = __lanes.add(__lane1042, __lane1043);
+            let __lane1045 = __lanes.mul(__lane925, __lanes.splat(__v98));
+            let __lane1046 = __lanes.mul(__lane1020, __lanes.splat(__c6));
+            let __lane1047 = __lanes.add(__lane1045, __lane1046);
+            let __lane1048 = __lanes.add(__lane1044, __lane1047);
+            let __lane1049 = __lanes.add(__lane990, __lane1027);
+            let __lane1050 = __lanes.add(__lane991, __lane1017);
+            let __lane1051 = __lanes.neg(__lane1048);
+            let __lane1052 = __lanes.mul(__lane922, __lanes.splat(__v99));
+            let __lane1053 = __lanes.mul(__lane1049, __lanes.splat(__c5));
+            let __lane1054 = __lanes.add(__lane1052, __lane1053);
+            let __lane1055 = __lanes.mul(__lane924, __lanes.splat(__v100));
+            let __lane1056 = __lanes.mul(__lane1050, __lanes.splat(__v42));
+            let __lane1057 = __lanes.add(__lane1055, __lane1056);
+            let __lane1058 = __lanes.add(__lane1054, __lane1057);
+            let __lane1059 = __lanes.mul(__lane923, __lanes.splat(__v99));
+            let __lane1060 = __lanes.mul(__lane1049, __lanes.splat(__s5));
+            let __lane1061 = __lanes.add(__lane1059, __lane1060);
+            let __lane1062 = __lanes.mul(__lane922, __lanes.splat(__v100));
+            let __lane1063 = __lanes.mul(__lane1050, __lanes.splat(__c5));
+            let __lane1064 = __lanes.add(__lane1062, __lane1063);
+            let __lane1065 = __lanes.add(__lane1061, __lane1064);
+            let __lane1066 = __lanes.mul(__lane922, __lanes.splat(__v101));
+            let __lane1067 = __lanes.mul(__lane1041, __lanes.splat(__c5));
+            let __lane1068 = __lanes.add(__lane1066, __lane1067);
+            let __lane1069 = __lanes.mul(__lane923, __lanes.splat(__v101));
+            let __lane1070 = __lanes.mul(__lane1041, __lanes.splat(__s5));
+            let __lane1071 = __lanes.add(__lane1069, __lane1070);
+            let __lane1072 = __lanes.neg(__lane1034);
+            let __lane1073 = __lanes.mul(__lane1072, __lanes.splat(__v10));
+            let __lane1074 = __lanes.mul(__lane1058, __lanes.splat(__v10));
+            let __lane1075 = __lanes.add(__lane1068, __lane1073);
+            let __lane1076 = __lanes.sub(__lane1051, __lane1074);
+            let __lane1077 = __lanes.neg(__lane1072);
+            let __lane1078 = __lanes.mul(__lane1058, __lanes.splat(__c4));
+            let __lane1079 = __lanes.mul(__lane1077, __lanes.splat(__v31));
+            let __lane1080 = __lanes.add(__lane1078, __lane1079);
+            let __lane1081 = __lanes.mul(__lane1058, __lanes.splat(__s4));
+            let __lane1082 = __lanes.mul(__lane1077, __lanes.splat(__c4));
+            let __lane1083 = __lanes.add(__lane1081, __lane1082);
+            let __lane1084 = __lanes.neg(__lane1076);
+            let __lane1085 = __lanes.mul(__lane1075, __lanes.splat(__c4));
+            let __lane1086 = __lanes.mul(__lane1084, __lanes.splat(__v31));
+            let __lane1087 = __lanes.add(__lane1085, __lane1086);
+            let __lane1088 = __lanes.mul(__lane1075, __lanes.splat(__s4));
+            let __lane1089 = __lanes.mul(__lane1084, __lanes.splat(__c4));
+            let __lane1090 = __lanes.add(__lane1088, __lane1089);
+            let __lane1091 = __lanes.mul(__lane1065, __lanes.splat(__v21));
+            let __lane1092 = __lanes.mul(__lane1065, __lanes.splat(__v22));
+            let __lane1093 = __lanes.mul(__lane1083, __lanes.splat(__v22));
+            let __lane1094 = __lanes.mul(__lane1080, __lanes.splat(__v21));
+            let __lane1095 = __lanes.sub(__lane1093, __lane1094);
+            let __lane1096 = __lanes.add(__lane1087, __lane1091);
+            let __lane1097 = __lanes.sub(__lane1090, __lane1092);
+            let __lane1098 = __lanes.add(__lane1071, __lane1095);
+            let __lane1099 = __lanes.neg(__lane1097);
+            let __lane1100 = __lanes.mul(__lane1080, __lanes.splat(__s3));
+            let __lane1101 = __lanes.mul(__lane1065, __lanes.splat(__c3));
+            let __lane1102 = __lanes.add(__lane1100, __lane1101);
+            let __lane1103 = __lanes.mul(__lane1096, __lanes.splat(__c3));
+            let __lane1104 = __lanes.mul(__lane1098, __lanes.splat(__v17));
+            let __lane1105 = __lanes.add(__lane1103, __lane1104);
+            let __lane1106 = __lanes.mul(__lane1096, __lanes.splat(__s3));
+            let __lane1107 = __lanes.mul(__lane1098, __lanes.splat(__c3));
+            let __lane1108 = __lanes.add(__lane1106, __lane1107);
+            let __lane1109 = __lanes.neg(__lane1083);
+            let __lane1110 = __lanes.mul(__lane1109, __lanes.splat(__v10));
+            let __lane1111 = __lanes.mul(__lane1102, __lanes.splat(__v10));
+            let __lane1112 = __lanes.sub(__lane1108, __lane1110);
+            let __lane1113 = __lanes.add(__lane1099, __lane1111);
+            let __lane1114 = __lanes.mul(__lane1105, __lanes.splat(__s2));
+            let __lane1115 = __lanes.mul(__lane1112, __lanes.splat(__c2));
+            let __lane1116 = __lanes.add(__lane1114, __lane1115);
+            let __lane486_0 = __lanes.lanes(__lane486)[0];
+            let __lane486_1 = __lanes.lanes(__lane486)[1];
+            let __lane486_2 = __lanes.lanes(__lane486)[2];
+            let __lane486_3 = __lanes.lanes(__lane486)[3];
+            let __lane1116_0 = __lanes.lanes(__lane1116)[0];
+            let __lane1116_1 = __lanes.lanes(__lane1116)[1];
+            let __lane479_0 = __lanes.lanes(__lane479)[0];
+            let __lane479_1 = __lanes.lanes(__lane479)[1];
+            let __lane479_2 = __lanes.lanes(__lane479)[2];
+            let __lane479_3 = __lanes.lanes(__lane479)[3];
+            let __lane1113_0 = __lanes.lanes(__lane1113)[0];
+            let __lane1113_1 = __lanes.lanes(__lane1113)[1];
+            let __lane449_0 = __lanes.lanes(__lane449)[0];
+            let __lane449_1 = __lanes.lanes(__lane449)[1];
+            let __lane449_2 = __lanes.lanes(__lane449)[2];
+            let __lane449_3 = __lanes.lanes(__lane449)[3];
+            let __lane1099_0 = __lanes.lanes(__lane1099)[0];
+            let __lane1099_1 = __lanes.lanes(__lane1099)[1];
+            let __lane395_0 = __lanes.lanes(__lane395)[0];
+            let __lane395_1 = __lanes.lanes(__lane395)[1];
+            let __lane395_2 = __lanes.lanes(__lane395)[2];
+            let __lane395_3 = __lanes.lanes(__lane395)[3];
+            let __lane1071_0 = __lanes.lanes(__lane1071)[0];
+            let __lane1071_1 = __lanes.lanes(__lane1071)[1];
+            let __lane387_0 = __lanes.lanes(__lane387)[0];
+            let __lane387_1 = __lanes.lanes(__lane387)[1];
+            let __lane387_2 = __lanes.lanes(__lane387)[2];
+            let __lane387_3 = __lanes.lanes(__lane387)[3];
+            let __lane1051_0 = __lanes.lanes(__lane1051)[0];
+            let __lane1051_1 = __lanes.lanes(__lane1051)[1];
+            let __lane_zero = 0.0_f64;
+            let __lane920_0 = __lanes.lanes(__lane920)[0];
+            let __lane920_1 = __lanes.lanes(__lane920)[1];
+            let __lane920_2 = __lanes.lanes(__lane920)[2];
+            let __lane920_3 = __lanes.lanes(__lane920)[3];
+            let __lane1116_2 = __lanes.lanes(__lane1116)[2];
+            let __lane1116_3 = __lanes.lanes(__lane1116)[3];
+            let __lane917_0 = __lanes.lanes(__lane917)[0];
+            let __lane917_1 = __lanes.lanes(__lane917)[1];
+            let __lane917_2 = __lanes.lanes(__lane917)[2];
+            let __lane917_3 = __lanes.lanes(__lane917)[3];
+            let __lane1113_2 = __lanes.lanes(__lane1113)[2];
+            let __lane1113_3 = __lanes.lanes(__lane1113)[3];
+            let __lane899_0 = __lanes.lanes(__lane899)[0];
+            let __lane899_1 = __lanes.lanes(__lane899)[1];
+            let __lane899_2 = __lanes.lanes(__lane899)[2];
+            let __lane899_3 = __lanes.lanes(__lane899)[3];
+            let __lane1099_2 = __lanes.lanes(__lane1099)[2];
+            let __lane1099_3 = __lanes.lanes(__lane1099)[3];
+            let __lane861_0 = __lanes.lanes(__lane861)[0];
+            let __lane861_1 = __lanes.lanes(__lane861)[1];
+            let __lane861_2 = __lanes.lanes(__lane861)[2];
+            let __lane861_3 = __lanes.lanes(__lane861)[3];
+            let __lane1071_2 = __lanes.lanes(__lane1071)[2];
+            let __lane1071_3 = __lanes.lanes(__lane1071)[3];
+            let __lane853_0 = __lanes.lanes(__lane853)[0];
+            let __lane853_1 = __lanes.lanes(__lane853)[1];
+            let __lane853_2 = __lanes.lanes(__lane853)[2];
+            let __lane853_3 = __lanes.lanes(__lane853)[3];
+            let __lane1051_2 = __lanes.lanes(__lane1051)[2];
+            let __lane1051_3 = __lanes.lanes(__lane1051)[3];
+            (
+                __lane486_0,
+                __lane486_1,
+                __lane486_2,
+                __lane486_3,
+                __lane1116_0,
+                __lane1116_1,
+                __lane479_0,
+                __lane479_1,
+                __lane479_2,
+                __lane479_3,
+                __lane1113_0,
+                __lane1113_1,
+                __lane449_0,
+                __lane449_1,
+                __lane449_2,
+                __lane449_3,
+                __lane1099_0,
+                __lane1099_1,
+                __lane395_0,
+                __lane395_1,
+                __lane395_2,
+                __lane395_3,
+                __lane1071_0,
+                __lane1071_1,
+                __lane387_0,
+                __lane387_1,
+                __lane387_2,
+                __lane387_3,
+                __lane1051_0,
+                __lane1051_1,
+                __lane_zero,
+                __lane920_0,
+                __lane920_1,
+                __lane920_2,
+                __lane920_3,
+                __lane1116_2,
+                __lane1116_3,
+                __lane917_0,
+                __lane917_1,
+                __lane917_2,
+                __lane917_3,
+                __lane1113_2,
+                __lane1113_3,
+                __lane899_0,
+                __lane899_1,
+                __lane899_2,
+                __lane899_3,
+                __lane1099_2,
+                __lane1099_3,
+                __lane861_0,
+                __lane861_1,
+                __lane861_2,
+                __lane861_3,
+                __lane1071_2,
+                __lane1071_3,
+                __lane853_0,
+                __lane853_1,
+                __lane853_2,
+                __lane853_3,
+                __lane1051_2,
+                __lane1051_3,
+            )
+        };
+        (
+            ::planar_arm::__private::matrix([
+                [
+                    __lane486_0,
+                    __lane486_1,
+                    __lane486_2,
+                    __lane486_3,
+                    __lane1116_0,
+                    __lane1116_1,
+                ],
+                [
+                    __lane479_0,
+                    __lane479_1,
+                    __lane479_2,
+                    __lane479_3,
+                    __lane1113_0,
+                    __lane1113_1,
+                ],
+                [
+                    __lane449_0,
+                    __lane449_1,
+                    __lane449_2,
+                    __lane449_3,
+                    __lane1099_0,
+                    __lane1099_1,
+                ],
+                [
+                    __lane395_0,
+                    __lane395_1,
+                    __lane395_2,
+                    __lane395_3,
+                    __lane1071_0,
+                    __lane1071_1,
+                ],
+                [
+                    __lane387_0,
+                    __lane387_1,
+                    __lane387_2,
+                    __lane387_3,
+                    __lane1051_0,
+                    __lane1051_1,
+                ],
+                [
+                    __lane_zero,
+                    __lane_zero,
+                    __lane_zero,
+                    __lane_zero,
+                    __lane_zero,
+                    __lane_zero,
+                ],
+            ]),
+            ::planar_arm::__private::matrix([
+                [
+                    __lane920_0,
+                    __lane920_1,
+                    __lane920_2,
+                    __lane920_3,
+                    __lane1116_2,
+                    __lane1116_3,
+                ],
+                [
+                    __lane917_0,
+                    __lane917_1,
+                    __lane917_2,
+                    __lane917_3,
+                    __lane1113_2,
+                    __lane1113_3,
+                ],
+                [
+                    __lane899_0,
+                    __lane899_1,
+                    __lane899_2,
+                    __lane899_3,
+                    __lane1099_2,
+                    __lane1099_3,
+                ],
+                [
+                    __lane861_0,
+                    __lane861_1,
+                    __lane861_2,
+                    __lane861_3,
+                    __lane1071_2,
+                    __lane1071_3,
+                ],
+                [
+                    __lane853_0,
+                    __lane853_1,
+                    __lane853_2,
+                    __lane853_3,
+                    __lane1051_2,
+                    __lane1051_3,
+                ],
+                [
+                    __lane_zero,
+                    __lane_zero,
+                    __lane_zero,
+                    __lane_zero,
+                    __lane_zero,
+                    __lane_zero,
                 ],
             ]),
         )

@@ -539,6 +539,7 @@ pub fn coefficient_tokens<C: Emit>(c: &C) -> Result<TokenStream, EmitError> {
             program: p,
             outputs: vec![("value".into(), id)],
             evaluation: String::new(),
+            packed: None,
         },
         Scalar::F64,
     )?;

@@ -6,6 +6,7 @@ use quote::quote;
 
 use crate::emit::{input_name, local, render, EmitError, Rendered, Scalar};
 use crate::methods::Method;
+use crate::packed::Packed;
 use crate::paths::F64;
 use crate::slp::Input;
 
@@ -111,6 +112,12 @@ pub(crate) fn emit_fn(
     } else {
         Scalar::F64
     };
+    // A dispatched method with a packed program gets it as a second hidden body, which the
+    // dispatch runs where its lanes are registers.
+    let packed = method
+        .packed
+        .as_deref()
+        .filter(|_| frozen.is_none() && f.kernel.is_some());
     let rendered = render(method, scalar)?;
     let (mut params, unpack) = parameters(n, f, &rendered);
     if let Some(v) = frozen {
@@ -138,7 +145,16 @@ pub(crate) fn emit_fn(
         } else {
             format!("{}\n\n", method.evaluation)
         };
-        let doc = format!("{}\n\n{evaluation}Cost: {}.", f.doc, method.op_count());
+        let cost = match packed {
+            Some(pk) => format!(
+                "{}; where the processor has AVX2, {} on scalars and {} four-lane operations",
+                method.op_count(),
+                pk.values.op_count(),
+                pk.lane_op_count(),
+            ),
+            None => method.op_count().to_string(),
+        };
+        let doc = format!("{}\n\n{evaluation}Cost: {cost}.", f.doc);
         (quote::format_ident!("{}", f.name), doc, TokenStream::new())
     };
     let generics = if f.generic {
@@ -146,6 +162,7 @@ pub(crate) fn emit_fn(
     } else {
         TokenStream::new()
     };
+
     let inline = if frozen.is_some_and(|v| v.is_body) {
         quote!(#[inline(always)])
     } else {
@@ -171,10 +188,41 @@ pub(crate) fn emit_fn(
             TokenStream::new(),
         ),
     };
+    let packed = match packed {
+        Some(pk) => packed_body(n, f, pk)?,
+        None => TokenStream::new(),
+    };
     Ok(quote! {
         #wrapper
         #attrs
         fn #body #generics(&self, #(#params),*) -> #ret {
+            #touch
+            #(#unpack)*
+            #(#statements)*
+            #result
+        }
+        #packed
+    })
+}
+
+/// The hidden `__NAME_packed(&self, __lanes, inputs)`: `f`'s outputs from the packed program
+/// `pk`, in the lanes the dispatch passes.
+fn packed_body(n: usize, f: &Fn<'_>, pk: &Packed) -> Result<TokenStream, EmitError> {
+    let rendered = super::packed::render_packed(pk)?;
+    let (params, unpack) = parameters(n, f, &rendered);
+    let (touch, statements, ret) = (&f.touch, &rendered.statements, &f.ret);
+    let result = (f.finish)(&rendered.outputs);
+    let name = quote::format_ident!("__{}_packed", f.name);
+    let lanes = local("lanes");
+    let generics = if f.generic {
+        quote!(<__T: ::planar_arm::Real, __L: ::planar_arm::__private::Lanes>)
+    } else {
+        quote!(<__L: ::planar_arm::__private::Lanes>)
+    };
+    Ok(quote! {
+        #[doc(hidden)]
+        #[inline(always)]
+        fn #name #generics(&self, #lanes: __L, #(#params),*) -> #ret {
             #touch
             #(#unpack)*
             #(#statements)*

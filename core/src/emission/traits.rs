@@ -17,6 +17,7 @@ const DYNAMICS: &[&str] = &[
     "forward_dynamics",
     "inverse_dynamics_derivatives",
     "__inverse_dynamics_derivatives_kernel",
+    "__inverse_dynamics_derivatives_packed",
     "forward_dynamics_derivatives",
     "__forward_dynamics_derivatives_kernel",
     "kinetic_energy",

@@ -89,6 +89,7 @@ impl<C: Emit> Derived<C> {
                          arm, once per standard parameter with that parameter one and the \
                          others zero (the torques are linear in them), the kinematics shared."
                 .into(),
+            packed: None,
         }
     }
 
@@ -136,6 +137,7 @@ impl<C: Emit> Derived<C> {
             program: p,
             outputs,
             evaluation: String::new(),
+            packed: None,
         }
     }
 }

@@ -61,6 +61,7 @@ pub fn freeze(methods: &[Method]) -> Option<Frozen> {
             program: block,
             outputs,
             evaluation: String::new(),
+            packed: None,
         },
         methods: split,
     })
@@ -163,6 +164,7 @@ fn rebuild(m: &Method, slot: &BTreeMap<Id, usize>) -> Method {
             .map(|(name, id)| (name.clone(), memo[id]))
             .collect(),
         evaluation: m.evaluation.clone(),
+        packed: None,
     }
 }
 

@@ -13,6 +13,9 @@ pub struct Method {
     /// How the program evaluates the method, for its doc comment (empty when it evaluates the
     /// documented formulas term by term).
     pub evaluation: String,
+    /// The same outputs as derivatives computed four directions at a time, which the method
+    /// emits instead of `program` (see [`crate::packed`]).
+    pub packed: Option<Box<crate::programs::packed::Packed>>,
 }
 
 impl Method {
@@ -45,6 +48,7 @@ impl Method {
             program,
             outputs,
             evaluation: String::new(),
+            packed: None,
         }
     }
 

@@ -381,6 +381,7 @@ pub(crate) fn inverse_dynamics_derivatives(arm: &SpatialArmSpec) -> Option<Metho
     let mut p = Program::new();
     let torques = newton_euler(&mut p, arm, Terms::ALL, true);
     let directions: Vec<Input> = (0..n).map(Input::Q).chain((0..n).map(Input::Qd)).collect();
+    let packed = crate::programs::packed::pack(&p, &torques, &directions);
     let jacobian =
         crate::programs::derivative::differentiate(&mut p, &torques, &directions).ok()?;
     let mut outputs = Vec::with_capacity(2 * n * n);
@@ -391,9 +392,20 @@ pub(crate) fn inverse_dynamics_derivatives(arm: &SpatialArmSpec) -> Option<Metho
             }
         }
     }
-    let method = Method::new(p, outputs).described(
-        "the unrolled recursive Newton-Euler algorithm differentiated at compile time, operation by operation",
+    let mut method = Method::new(p, outputs).described(
+        "the unrolled recursive Newton-Euler algorithm differentiated at compile time, operation by operation, four directions at a time",
     );
+    // In the outputs' order: d/dq row by row, then d/dqd.
+    method.packed = packed.map(|mut pk| {
+        let by_torque = std::mem::take(&mut pk.derivatives);
+        for offset in [0, n] {
+            for i in 0..n {
+                pk.derivatives
+                    .extend_from_slice(&by_torque[i * 2 * n + offset..i * 2 * n + offset + n]);
+            }
+        }
+        Box::new(pk)
+    });
     let ops = method.op_count();
     (ops.mul + ops.add <= MAX_DERIVATIVE_OPS).then_some(method)
 }

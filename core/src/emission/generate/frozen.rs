@@ -90,6 +90,7 @@ fn frozen_wrapper(
         program: block.program.clone(),
         outputs: read.iter().map(|&k| block.outputs[k].clone()).collect(),
         evaluation: String::new(),
+        packed: None,
     };
     let rendered = render(&part, Scalar::F64)?;
     let mut values = rendered.outputs.iter();

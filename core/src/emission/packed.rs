@@ -1,0 +1,126 @@
+//! A packed derivative program ([`crate::packed`]) as statements: its values as
+//! [`render`] writes any program, then one `let` per lane operation through the method's
+//! `__lanes: __L` (`::planar_arm::__private::Lanes`: four `f64` in an AVX2 register in the
+//! AVX2 copy of the method, an array of four elsewhere), then each derivative read from its
+//! lane.
+
+use proc_macro2::{Ident, Literal, TokenStream, TokenTree};
+use quote::quote;
+
+use super::chunks::chunked;
+use crate::emit::{local, render, EmitError, Rendered, Scalar};
+use crate::programs::packed::{Lane, Packed};
+
+/// The statements of `pk` and one identifier per derivative.
+pub(crate) fn render_packed(pk: &Packed) -> Result<Rendered, EmitError> {
+    let values = render(&pk.values, Scalar::F64)?;
+    let live = pk.live();
+    let lanes = local("lanes");
+    let name = |k: usize| local(&format!("lane{k}"));
+    let mut statements: Vec<Vec<TokenTree>> = Vec::new();
+    let mut defined: Vec<(usize, Ident)> = Vec::new();
+    let mut last_read: Vec<usize> = Vec::new();
+    let mut statement_of = vec![usize::MAX; pk.ops.len()];
+    let mut bind = |statements: &mut Vec<Vec<TokenTree>>,
+                    last_read: &mut Vec<usize>,
+                    id: Ident,
+                    value: TokenStream,
+                    reads: &[usize],
+                    last: usize| {
+        let at = statements.len();
+        for &r in reads {
+            last_read[r] = at;
+        }
+        statements.push(quote!(let #id = #value;).into_iter().collect());
+        last_read.push(last);
+        defined.push((at, id));
+        at
+    };
+    for (k, op) in pk.ops.iter().enumerate() {
+        if !live[k] {
+            continue;
+        }
+        let s = |x: usize| values.outputs[x].clone();
+        let (value, reads) = match *op {
+            Lane::Const(c) => {
+                let c = c.map(|x| Literal::f64_unsuffixed(f64::from(x)));
+                (quote!(#lanes.constant([#(#c),*])), vec![])
+            }
+            Lane::Add(a, b) => {
+                let (x, y) = (name(a), name(b));
+                (
+                    quote!(#lanes.add(#x, #y)),
+                    vec![statement_of[a], statement_of[b]],
+                )
+            }
+            Lane::Sub(a, b) => {
+                let (x, y) = (name(a), name(b));
+                (
+                    quote!(#lanes.sub(#x, #y)),
+                    vec![statement_of[a], statement_of[b]],
+                )
+            }
+            Lane::Neg(a) => {
+                let x = name(a);
+                (quote!(#lanes.neg(#x)), vec![statement_of[a]])
+            }
+            Lane::Scale(a, v) => {
+                let (x, v) = (name(a), s(v));
+                (
+                    quote!(#lanes.mul(#x, #lanes.splat(#v))),
+                    vec![statement_of[a]],
+                )
+            }
+        };
+        statement_of[k] = bind(&mut statements, &mut last_read, name(k), value, &reads, 0);
+    }
+    let zero = local("lane_zero");
+    let mut outputs = Vec::with_capacity(pk.derivatives.len());
+    let mut read_lanes: std::collections::BTreeMap<(usize, usize), Ident> =
+        std::collections::BTreeMap::new();
+    let mut zero_bound = false;
+    for d in &pk.derivatives {
+        match *d {
+            Some((op, l)) => {
+                if let Some(id) = read_lanes.get(&(op, l)) {
+                    outputs.push(id.clone());
+                    continue;
+                }
+                let id = local(&format!("lane{op}_{l}"));
+                let (x, lit) = (name(op), Literal::usize_unsuffixed(l));
+                let reads = [statement_of[op]];
+                bind(
+                    &mut statements,
+                    &mut last_read,
+                    id.clone(),
+                    quote!(#lanes.lanes(#x)[#lit]),
+                    &reads,
+                    usize::MAX,
+                );
+                read_lanes.insert((op, l), id.clone());
+                outputs.push(id);
+            }
+            None => {
+                if !zero_bound {
+                    bind(
+                        &mut statements,
+                        &mut last_read,
+                        zero.clone(),
+                        quote!(0.0_f64),
+                        &[],
+                        usize::MAX,
+                    );
+                    zero_bound = true;
+                }
+                outputs.push(zero.clone());
+            }
+        }
+    }
+    let mut all = values.statements;
+    all.extend(chunked(statements, 0, &defined, &last_read));
+    Ok(Rendered {
+        statements: all,
+        outputs,
+        inputs_used: values.inputs_used,
+    })
+}
