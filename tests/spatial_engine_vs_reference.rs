@@ -402,6 +402,7 @@ fn compare<const N: usize>(d: &ArmDraw, derived: &SpatialDerived) -> Result<(), 
             "tau{i}: {got} vs {expected}"
         );
     }
+    derivatives(derived, &model, (&q, &qd, &qdd), reach)?;
     let m = outputs(&derived.mass_matrix, qs, reach);
     let expected = reference::mass_matrix(&model, &q);
     let scale = 1.0 + expected.amax();
@@ -475,6 +476,68 @@ fn compare<const N: usize>(d: &ArmDraw, derived: &SpatialDerived) -> Result<(), 
         (skew + skew.transpose()).amax() < 1e-6 * scale,
         "Mdot - 2C not skew: {skew}"
     );
+    Ok(())
+}
+
+/// `inverse_dynamics_derivatives`, one direction at a time and packed four directions at a
+/// time, against central differences of the reference's inverse dynamics, and the two
+/// programs against each other.
+fn derivatives<const N: usize>(
+    derived: &SpatialDerived,
+    model: &SpatialModel<N>,
+    (q, qd, qdd): (&SVector<f64, N>, &SVector<f64, N>, &SVector<f64, N>),
+    reach: f64,
+) -> Result<(), TestCaseError> {
+    let Some(method) = &derived.inverse_dynamics_derivatives else {
+        return Ok(());
+    };
+    let scalar = outputs_at(method, q.as_slice(), qd.as_slice(), qdd.as_slice(), reach);
+    let packed = method.packed.as_ref().map(|pk| {
+        let input = |i: Input| match i {
+            Input::Q(k) => q[k],
+            Input::Qd(k) => qd[k],
+            Input::Qdd(k) => qdd[k],
+            Input::Param(_) => reach,
+            other => panic!("the derivatives read {other:?}"),
+        };
+        pk.eval(&input)
+    });
+    let h = 1e-6;
+    let central = |dq: bool, j: usize| {
+        let shifted = |delta: f64| {
+            let (mut a, mut b) = (*q, *qd);
+            if dq {
+                a[j] += delta;
+            } else {
+                b[j] += delta;
+            }
+            reference::inverse_dynamics(model, &a, &b, qdd)
+        };
+        (shifted(h) - shifted(-h)) / (2.0 * h)
+    };
+    let scale = 1.0 + reference::inverse_dynamics(model, q, qd, qdd).amax();
+    for (block, wrt) in ["q", "qd"].into_iter().enumerate() {
+        for j in 0..N {
+            let expected = central(block == 0, j);
+            for i in 0..N {
+                let name = format!("dtau{}_d{wrt}{}", i + 1, j + 1);
+                let got = scalar[&name];
+                prop_assert!(
+                    (got - expected[i]).abs() < 1e-6 * scale,
+                    "{name}: {got} vs central difference {}",
+                    expected[i]
+                );
+                if let Some(packed) = &packed {
+                    let k = block * N * N + i * N + j;
+                    prop_assert!(
+                        (packed[k] - got).abs() < 1e-12 * scale,
+                        "{name}: packed {} vs {got}",
+                        packed[k]
+                    );
+                }
+            }
+        }
+    }
     Ok(())
 }
 

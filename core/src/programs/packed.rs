@@ -71,6 +71,29 @@ impl Packed {
         live
     }
 
+    /// The derivatives evaluated by an interpreter of the lanes (zero where structurally zero),
+    /// given the inputs as [`Program::eval`] takes them.
+    #[must_use]
+    pub fn eval(&self, input: &dyn Fn(Input) -> f64) -> Vec<f64> {
+        let scalars = self.values.eval(input);
+        let mut lanes: Vec<[f64; 4]> = Vec::with_capacity(self.ops.len());
+        for op in &self.ops {
+            let lane = |f: &dyn Fn(usize) -> f64| -> [f64; 4] { core::array::from_fn(f) };
+            let v = match *op {
+                Lane::Const(c) => c.map(f64::from),
+                Lane::Add(a, b) => lane(&|l| lanes[a][l] + lanes[b][l]),
+                Lane::Sub(a, b) => lane(&|l| lanes[a][l] - lanes[b][l]),
+                Lane::Neg(a) => lane(&|l| -lanes[a][l]),
+                Lane::Scale(a, s) => lane(&|l| lanes[a][l] * scalars[s]),
+            };
+            lanes.push(v);
+        }
+        self.derivatives
+            .iter()
+            .map(|d| d.map_or(0.0, |(op, l)| lanes[op][l]))
+            .collect()
+    }
+
     /// The four-lane additions, subtractions, negations and products the derivatives cost.
     #[must_use]
     pub fn lane_op_count(&self) -> usize {
