@@ -124,10 +124,8 @@ pub(crate) fn emit_fn(
         let (block, slots) = (local("block"), Literal::usize_unsuffixed(v.slots));
         params.insert(0, quote!(#block: &::planar_arm::__private::Block<#slots>));
     }
-    let touch = &f.touch;
     let statements = &rendered.statements;
     let result = (f.finish)(&rendered.outputs);
-    let ret = &f.ret;
     let (name, doc, hidden) = if frozen.is_some() {
         let doc = format!(
             "`{}` with the parameter-only values read from a block computed by `__freeze`. Cost: {}.",
@@ -162,7 +160,6 @@ pub(crate) fn emit_fn(
     } else {
         TokenStream::new()
     };
-
     let inline = if frozen.is_some_and(|v| v.is_body) {
         quote!(#[inline(always)])
     } else {
@@ -192,43 +189,56 @@ pub(crate) fn emit_fn(
         Some(pk) => packed_body(n, f, pk)?,
         None => TokenStream::new(),
     };
-    Ok(quote! {
-        #wrapper
-        #attrs
-        fn #body #generics(&self, #(#params),*) -> #ret {
+    let body = function(
+        quote!(#attrs fn #body #generics),
+        &params,
+        f,
+        (&unpack, statements),
+        &result,
+    );
+    Ok(quote!(#wrapper #body #packed))
+}
+
+/// `head(&self, params) -> RET { touch; unpack; statements; result }`: a method body.
+fn function(
+    head: TokenStream,
+    params: &[TokenStream],
+    f: &Fn<'_>,
+    (unpack, statements): (&[TokenStream], &[TokenStream]),
+    result: &TokenStream,
+) -> TokenStream {
+    let (touch, ret) = (&f.touch, &f.ret);
+    quote! {
+        #head(&self, #(#params),*) -> #ret {
             #touch
             #(#unpack)*
             #(#statements)*
             #result
         }
-        #packed
-    })
+    }
 }
 
 /// The hidden `__NAME_packed(&self, __lanes, inputs)`: `f`'s outputs from the packed program
 /// `pk`, in the lanes the dispatch passes.
 fn packed_body(n: usize, f: &Fn<'_>, pk: &Packed) -> Result<TokenStream, EmitError> {
     let rendered = super::packed::render_packed(pk)?;
-    let (params, unpack) = parameters(n, f, &rendered);
-    let (touch, statements, ret) = (&f.touch, &rendered.statements, &f.ret);
+    let (mut params, unpack) = parameters(n, f, &rendered);
+    let lanes = local("lanes");
+    params.insert(0, quote!(#lanes: __L));
     let result = (f.finish)(&rendered.outputs);
     let name = quote::format_ident!("__{}_packed", f.name);
-    let lanes = local("lanes");
     let generics = if f.generic {
         quote!(<__T: ::planar_arm::Real, __L: ::planar_arm::__private::Lanes>)
     } else {
         quote!(<__L: ::planar_arm::__private::Lanes>)
     };
-    Ok(quote! {
-        #[doc(hidden)]
-        #[inline(always)]
-        fn #name #generics(&self, #lanes: __L, #(#params),*) -> #ret {
-            #touch
-            #(#unpack)*
-            #(#statements)*
-            #result
-        }
-    })
+    Ok(function(
+        quote!(#[doc(hidden)] #[inline(always)] fn #name #generics),
+        &params,
+        f,
+        (&unpack, &rendered.statements),
+        &result,
+    ))
 }
 
 /// `head(&self, inputs) -> RET { dispatch(KERNEL::<Self, ARGS> { arm: self, inputs }) }`: the
