@@ -33,11 +33,14 @@ pub fn vector<T: Real, const N: usize>(v: [T; N]) -> SVector<T, N> {
     SVector::from_array_storage(nalgebra::ArrayStorage([v]))
 }
 
-/// Rows in, nalgebra's column-major storage out.
+/// A matrix from its columns: nalgebra's storage as it is, so that the generated values are
+/// stored where the matrix is returned. Built from rows, large matrices (the regressors') went
+/// through a temporary and a copy, whose wide loads waited for the values' narrow stores
+/// (docs/performance.md).
 #[inline(always)]
 #[must_use]
-pub fn matrix<T: Real, const R: usize, const C: usize>(rows: [[T; C]; R]) -> SMatrix<T, R, C> {
-    SMatrix::from_fn(|r, c| rows[r][c])
+pub const fn columns<T, const R: usize, const C: usize>(columns: [[T; R]; C]) -> SMatrix<T, R, C> {
+    SMatrix::from_array_storage(nalgebra::ArrayStorage(columns))
 }
 
 /// The pose from the tip position and the cosine and sine of the last link's angle (already

@@ -22,7 +22,7 @@ Cost: 1 multiplications, 2 additions, 0 divisions, 1 sin_cos pairs.*/
         let __m11 = __T::from_f64(5.0 / 3.0) + __c2;
         let __m12 = __T::from_f64(1.0 / 3.0) + __T::from_f64(1.0 / 2.0) * __c2;
         let __m22 = __T::from_f64(1.0 / 3.0);
-        ::planar_arm::__private::matrix([[__m11, __m12], [__m12, __m22]])
+        ::planar_arm::__private::columns([[__m11, __m12], [__m12, __m22]])
     }
     /**The velocity-product torques c(q, qd).
 
@@ -75,7 +75,7 @@ Cost: 3 multiplications, 3 additions, 0 divisions, 1 sin_cos pairs.*/
         let __cm21 = __qd1 * __t1;
         let __cm11 = __cm21 - __t2;
         let __cm22 = __T::from_f64(0.0);
-        ::planar_arm::__private::matrix([[__cm11, __cm12], [__cm21, __cm22]])
+        ::planar_arm::__private::columns([[__cm11, __cm21], [__cm12, __cm22]])
     }
     /**The gravity torques g(q) = dV/dq.
 
@@ -169,7 +169,7 @@ Cost: 12 multiplications, 7 additions, 0 divisions, 2 sin_cos pairs.*/
         let __h2 = __t1 + __t2 * __qd1 * __qd1;
         let __m22 = __T::from_f64(1.0 / 3.0);
         (
-            ::planar_arm::__private::matrix([[__m11, __m12], [__m12, __m22]]),
+            ::planar_arm::__private::columns([[__m11, __m12], [__m12, __m22]]),
             ::planar_arm::__private::vector([__h1, __h2]),
         )
     }
@@ -342,13 +342,13 @@ Cost: 17 multiplications, 13 additions, 0 divisions, 2 sin_cos pairs.*/
         let __dtau1_dqd2 = -__dtau2_dqd1 - __t4;
         let __dtau2_dqd2 = 0.0;
         (
-            ::planar_arm::__private::matrix([
-                [__dtau1_dq1, __dtau1_dq2],
-                [__dtau2_dq1, __dtau2_dq2],
+            ::planar_arm::__private::columns([
+                [__dtau1_dq1, __dtau2_dq1],
+                [__dtau1_dq2, __dtau2_dq2],
             ]),
-            ::planar_arm::__private::matrix([
-                [__dtau1_dqd1, __dtau1_dqd2],
-                [__dtau2_dqd1, __dtau2_dqd2],
+            ::planar_arm::__private::columns([
+                [__dtau1_dqd1, __dtau2_dqd1],
+                [__dtau1_dqd2, __dtau2_dqd2],
             ]),
         )
     }
@@ -439,15 +439,15 @@ Cost: 47 multiplications, 36 additions, 3 divisions, 2 sin_cos pairs.*/
         let __dqdd1_dqd2 = __t18 * __t19;
         let __dqdd2_dqd2 = __t18 * __t20;
         (
-            ::planar_arm::__private::matrix([
-                [__dqdd1_dq1, __dqdd1_dq2],
-                [__dqdd2_dq1, __dqdd2_dq2],
+            ::planar_arm::__private::columns([
+                [__dqdd1_dq1, __dqdd2_dq1],
+                [__dqdd1_dq2, __dqdd2_dq2],
             ]),
-            ::planar_arm::__private::matrix([
-                [__dqdd1_dqd1, __dqdd1_dqd2],
-                [__dqdd2_dqd1, __dqdd2_dqd2],
+            ::planar_arm::__private::columns([
+                [__dqdd1_dqd1, __dqdd2_dqd1],
+                [__dqdd1_dqd2, __dqdd2_dqd2],
             ]),
-            ::planar_arm::__private::matrix([
+            ::planar_arm::__private::columns([
                 [__dqdd1_dtau1, __dqdd1_dtau2],
                 [__dqdd1_dtau2, __dqdd2_dtau2],
             ]),
@@ -585,7 +585,7 @@ Cost: 4 multiplications, 6 additions, 0 divisions, 2 sin_cos pairs.*/
         let __j12 = -__s12;
         let __j21 = __c1 + __j22;
         let __j31 = __T::from_f64(1.0);
-        ::planar_arm::__private::matrix([[__j11, __j12], [__j21, __j22], [__j31, __j31]])
+        ::planar_arm::__private::columns([[__j11, __j21, __j31], [__j12, __j22, __j31]])
     }
     /**The position of each joint, joint 1 at the origin.
 

@@ -35,7 +35,7 @@ Cost: 6 multiplications, 11 additions, 0 divisions, 2 sin_cos pairs.*/
         let __m22 = __c3 + __T::from_f64(5.0 / 3.0);
         let __m23 = __T::from_f64(1.0 / 3.0) + __t2;
         let __m33 = __T::from_f64(1.0 / 3.0);
-        ::planar_arm::__private::matrix([
+        ::planar_arm::__private::columns([
             [__m11, __m12, __m13],
             [__m12, __m22, __m23],
             [__m13, __m23, __m33],
@@ -134,10 +134,10 @@ Cost: 11 multiplications, 13 additions, 0 divisions, 2 sin_cos pairs.*/
         let __cm12 = __t7 + __cm22;
         let __cm13 = __t6 - __t8;
         let __cm33 = __T::from_f64(0.0);
-        ::planar_arm::__private::matrix([
-            [__cm11, __cm12, __cm13],
-            [__cm21, __cm22, __cm23],
-            [__cm31, __cm32, __cm33],
+        ::planar_arm::__private::columns([
+            [__cm11, __cm21, __cm31],
+            [__cm12, __cm22, __cm32],
+            [__cm13, __cm23, __cm33],
         ])
     }
     /**The gravity torques g(q) = dV/dq.
@@ -279,7 +279,7 @@ Cost: 31 multiplications, 28 additions, 0 divisions, 3 sin_cos pairs.*/
         let __h1 = __h2 + __T::from_f64(1.0 / 2.0) * __ay1 + __s2 * __fx2 + __c2 * __fy2;
         let __m33 = __T::from_f64(1.0 / 3.0);
         (
-            ::planar_arm::__private::matrix([
+            ::planar_arm::__private::columns([
                 [__m11, __m12, __m13],
                 [__m12, __m22, __m23],
                 [__m13, __m23, __m33],
@@ -502,15 +502,15 @@ Cost: 68 multiplications, 76 additions, 0 divisions, 3 sin_cos pairs.*/
         let __dtau3_dqd1 = __t27 + __qd1 * (__s3 + __s23);
         let __dtau3_dqd3 = 0.0;
         (
-            ::planar_arm::__private::matrix([
-                [__dtau1_dq1, __dtau1_dq2, __dtau1_dq3],
-                [__dtau2_dq1, __dtau2_dq2, __dtau2_dq3],
-                [__dtau3_dq1, __dtau3_dq2, __dtau3_dq3],
+            ::planar_arm::__private::columns([
+                [__dtau1_dq1, __dtau2_dq1, __dtau3_dq1],
+                [__dtau1_dq2, __dtau2_dq2, __dtau3_dq2],
+                [__dtau1_dq3, __dtau2_dq3, __dtau3_dq3],
             ]),
-            ::planar_arm::__private::matrix([
-                [__dtau1_dqd1, __dtau1_dqd2, __dtau1_dqd3],
-                [__dtau2_dqd1, __dtau2_dqd2, __dtau2_dqd3],
-                [__dtau3_dqd1, __dtau3_dqd2, __dtau3_dqd3],
+            ::planar_arm::__private::columns([
+                [__dtau1_dqd1, __dtau2_dqd1, __dtau3_dqd1],
+                [__dtau1_dqd2, __dtau2_dqd2, __dtau3_dqd2],
+                [__dtau1_dqd3, __dtau2_dqd3, __dtau3_dqd3],
             ]),
         )
     }
@@ -691,20 +691,20 @@ Cost: 171 multiplications, 178 additions, 3 divisions, 3 sin_cos pairs.*/
         let __dqdd2_dqd3 = __t51 * __t62 + __t58 * __t64;
         let __dqdd3_dqd3 = __t51 * __t63 + __t58 * __t65;
         (
-            ::planar_arm::__private::matrix([
-                [__dqdd1_dq1, __dqdd1_dq2, __dqdd1_dq3],
-                [__dqdd2_dq1, __dqdd2_dq2, __dqdd2_dq3],
-                [__dqdd3_dq1, __dqdd3_dq2, __dqdd3_dq3],
+            ::planar_arm::__private::columns([
+                [__dqdd1_dq1, __dqdd2_dq1, __dqdd3_dq1],
+                [__dqdd1_dq2, __dqdd2_dq2, __dqdd3_dq2],
+                [__dqdd1_dq3, __dqdd2_dq3, __dqdd3_dq3],
             ]),
-            ::planar_arm::__private::matrix([
-                [__dqdd1_dqd1, __dqdd1_dqd2, __dqdd1_dqd3],
-                [__dqdd2_dqd1, __dqdd2_dqd2, __dqdd2_dqd3],
-                [__dqdd3_dqd1, __dqdd3_dqd2, __dqdd3_dqd3],
+            ::planar_arm::__private::columns([
+                [__dqdd1_dqd1, __dqdd2_dqd1, __dqdd3_dqd1],
+                [__dqdd1_dqd2, __dqdd2_dqd2, __dqdd3_dqd2],
+                [__dqdd1_dqd3, __dqdd2_dqd3, __dqdd3_dqd3],
             ]),
-            ::planar_arm::__private::matrix([
-                [__dqdd1_dtau1, __dqdd1_dtau2, __dqdd1_dtau3],
-                [__dqdd2_dtau1, __dqdd2_dtau2, __dqdd2_dtau3],
-                [__dqdd3_dtau1, __dqdd3_dtau2, __dqdd3_dtau3],
+            ::planar_arm::__private::columns([
+                [__dqdd1_dtau1, __dqdd2_dtau1, __dqdd3_dtau1],
+                [__dqdd1_dtau2, __dqdd2_dtau2, __dqdd3_dtau2],
+                [__dqdd1_dtau3, __dqdd2_dtau3, __dqdd3_dtau3],
             ]),
         )
     }
@@ -921,10 +921,10 @@ Cost: 8 multiplications, 13 additions, 0 divisions, 3 sin_cos pairs.*/
         let __j21 = __j23 + __c1 + __c12;
         let __j22 = __c12 + __j23;
         let __j31 = __T::from_f64(1.0);
-        ::planar_arm::__private::matrix([
-            [__j11, __j12, __j13],
-            [__j21, __j22, __j23],
-            [__j31, __j31, __j31],
+        ::planar_arm::__private::columns([
+            [__j11, __j21, __j31],
+            [__j12, __j22, __j31],
+            [__j13, __j23, __j31],
         ])
     }
     /**The position of each joint, joint 1 at the origin.

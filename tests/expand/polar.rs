@@ -22,7 +22,7 @@ Cost: 3 multiplications, 2 additions, 0 divisions, 0 sin_cos pairs.*/
             + __T::from_f64(27.0 / 20.0) * __q2;
         let __m12 = __T::from_f64(0.0);
         let __m22 = __T::from_f64(3.0 / 2.0);
-        ::planar_arm::__private::matrix([[__m11, __m12], [__m12, __m22]])
+        ::planar_arm::__private::columns([[__m11, __m12], [__m12, __m22]])
     }
     /**The velocity-product torques c(q, qd).
 
@@ -75,7 +75,7 @@ Cost: 6 multiplications, 4 additions, 0 divisions, 0 sin_cos pairs.*/
         let __cm12 = __t1 + __t2;
         let __cm21 = -__t1 - __t2;
         let __cm22 = __T::from_f64(0.0);
-        ::planar_arm::__private::matrix([[__cm11, __cm12], [__cm21, __cm22]])
+        ::planar_arm::__private::columns([[__cm11, __cm21], [__cm12, __cm22]])
     }
     /**The gravity torques g(q) = dV/dq.
 
@@ -165,7 +165,7 @@ Cost: 15 multiplications, 7 additions, 0 divisions, 1 sin_cos pairs.*/
         let __m12 = __T::from_f64(0.0);
         let __m22 = __T::from_f64(3.0 / 2.0);
         (
-            ::planar_arm::__private::matrix([[__m11, __m12], [__m12, __m22]]),
+            ::planar_arm::__private::columns([[__m11, __m12], [__m12, __m22]]),
             ::planar_arm::__private::vector([__h1, __h2]),
         )
     }
@@ -328,13 +328,13 @@ Cost: 17 multiplications, 10 additions, 0 divisions, 1 sin_cos pairs.*/
         let __dtau2_dqd1 = -__t1 - __t2;
         let __dtau2_dqd2 = 0.0;
         (
-            ::planar_arm::__private::matrix([
-                [__dtau1_dq1, __dtau1_dq2],
-                [__dtau2_dq1, __dtau2_dq2],
+            ::planar_arm::__private::columns([
+                [__dtau1_dq1, __dtau2_dq1],
+                [__dtau1_dq2, __dtau2_dq2],
             ]),
-            ::planar_arm::__private::matrix([
-                [__dtau1_dqd1, __dtau1_dqd2],
-                [__dtau2_dqd1, __dtau2_dqd2],
+            ::planar_arm::__private::columns([
+                [__dtau1_dqd1, __dtau2_dqd1],
+                [__dtau1_dqd2, __dtau2_dqd2],
             ]),
         )
     }
@@ -405,15 +405,15 @@ Cost: 36 multiplications, 18 additions, 2 divisions, 1 sin_cos pairs.*/
         let __dqdd1_dqd2 = (__t5 + __t6) * __t7;
         let __dqdd2_dqd2 = 0.0;
         (
-            ::planar_arm::__private::matrix([
-                [__dqdd1_dq1, __dqdd1_dq2],
-                [__dqdd2_dq1, __dqdd2_dq2],
+            ::planar_arm::__private::columns([
+                [__dqdd1_dq1, __dqdd2_dq1],
+                [__dqdd1_dq2, __dqdd2_dq2],
             ]),
-            ::planar_arm::__private::matrix([
-                [__dqdd1_dqd1, __dqdd1_dqd2],
-                [__dqdd2_dqd1, __dqdd2_dqd2],
+            ::planar_arm::__private::columns([
+                [__dqdd1_dqd1, __dqdd2_dqd1],
+                [__dqdd1_dqd2, __dqdd2_dqd2],
             ]),
-            ::planar_arm::__private::matrix([
+            ::planar_arm::__private::columns([
                 [__dqdd1_dtau1, __dqdd2_dqd2],
                 [__dqdd2_dqd2, __dqdd2_dtau2],
             ]),
@@ -544,7 +544,7 @@ Cost: 4 multiplications, 3 additions, 0 divisions, 1 sin_cos pairs.*/
         let __j21 = __T::from_f64(7.0 / 10.0) * __c1 + __c1 * __q2;
         let __j31 = __T::from_f64(1.0);
         let __j32 = __T::from_f64(0.0);
-        ::planar_arm::__private::matrix([[__j11, __c1], [__j21, __s1], [__j31, __j32]])
+        ::planar_arm::__private::columns([[__j11, __j21, __j31], [__c1, __s1, __j32]])
     }
     /**The position of each joint, joint 1 at the origin.
 

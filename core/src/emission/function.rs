@@ -327,13 +327,14 @@ fn parameters(n: usize, f: &Fn<'_>, rendered: &Rendered) -> (Vec<TokenStream>, V
     (params, unpack)
 }
 
-/// `::planar_arm::__private::matrix` of the row-major outputs of a `rows x cols` matrix.
+/// `::planar_arm::__private::columns` of the row-major outputs of a `rows x cols` matrix, column
+/// by column as nalgebra stores it.
 pub(crate) fn matrix(rows: usize, cols: usize, ids: &[proc_macro2::Ident]) -> TokenStream {
-    let rows = (0..rows).map(|r| {
-        let row = &ids[r * cols..(r + 1) * cols];
-        quote!([#(#row),*])
+    let columns = (0..cols).map(|c| {
+        let column = (0..rows).map(|r| &ids[r * cols + c]);
+        quote!([#(#column),*])
     });
-    quote!(::planar_arm::__private::matrix([#(#rows),*]))
+    quote!(::planar_arm::__private::columns([#(#columns),*]))
 }
 
 /// `::planar_arm::__private::vector` of the outputs.
