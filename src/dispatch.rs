@@ -27,8 +27,12 @@
 //! already targets AVX2 (`-C target-cpu=native`), there is one copy, with AVX2 lanes, and no
 //! question asked.
 //!
-//! The regressors were tried too and measured 5-25 % slower in the AVX2 copy (probably because
-//! their results, 1.7 KB and more, come back through one more call), so they have one copy.
+//! A spatial arm's `regressor` and `base_regressor` run through it too, with a packed program
+//! that carries four joints per register (`programs::spatial_regressor` in the engine). Their
+//! results are large (the PUMA's base regressor 1.7 KB), which is why each copy writes its
+//! result through a pointer: returned by value, it was copied once more after the call, and
+//! with the one-direction program in both copies the dispatched regressors were then 5-25 %
+//! slower than one baseline copy (docs/performance.md).
 
 use crate::lanes::{Lanes, Portable};
 
@@ -166,6 +170,14 @@ kernels! {
             nalgebra::SMatrix<f64, N, N>,
             nalgebra::SMatrix<f64, N, N>,
         );
+    /// `Identification::regressor` of an arm whose regressor has a packed program.
+    Regressor<N, P, B>: crate::Identification<N, P, B>
+        => __regressor_kernel, __regressor_packed(q, qd, qdd)
+        -> nalgebra::SMatrix<f64, N, P>;
+    /// `Identification::base_regressor`, as `Regressor`.
+    BaseRegressor<N, P, B>: crate::Identification<N, P, B>
+        => __base_regressor_kernel, __base_regressor_packed(q, qd, qdd)
+        -> nalgebra::SMatrix<f64, N, B>;
 }
 
 #[cfg(test)]

@@ -168,7 +168,7 @@ fn run_frozen(m: &Method, s: &[Vec<f64>; 4], params: &[f64], block: &[f64]) -> V
         Input::Qd(j) => s[1][j],
         Input::Qdd(j) => s[2][j],
         Input::Tau(j) => s[3][j],
-        Input::Force(_) | Input::TipTorque => f64::NAN,
+        Input::Force(_) | Input::TipTorque | Input::Virtual(_) => f64::NAN,
         Input::Param(k) => names[k].name()[1..]
             .parse::<usize>()
             .map_or(f64::NAN, |v| params[v]),

@@ -227,7 +227,8 @@ mod random_arms {
     //! length, a payload at a turned tool frame, armature and friction on some joints): the
     //! number of base parameters is the numeric rank of the regressor stacked over random
     //! states, and `Y theta` and `Y_b theta_b` are the engine's inverse dynamics (which
-    //! `spatial_engine_vs_reference.rs` checks against the reference).
+    //! `spatial_engine_vs_reference.rs` checks against the reference). The regressors' packed
+    //! programs, four joints per lane, give the same entries.
 
     use planar_arm::nalgebra::DMatrix;
     use planar_arm::symbolic::ring::{ratio, to_f64};
@@ -409,6 +410,18 @@ mod random_arms {
                 let yb = yb_method.eval(&input);
                 let tau = tau_method.eval(&input);
                 let scale = tau.iter().fold(1.0_f64, |m, t| m.max(t.abs()));
+                // The packed programs (four joints per lane, what the AVX2 copy runs) give the
+                // same entries to rounding.
+                for (method, values) in [(&y_method, &y), (&yb_method, &yb)] {
+                    let packed = method.packed.as_ref().expect("a packed program").eval(&input);
+                    prop_assert_eq!(packed.len(), values.len());
+                    for (k, (a, b)) in packed.iter().zip(values).enumerate() {
+                        prop_assert!(
+                            (a - b).abs() <= 1e-12 * (1.0 + b.abs()),
+                            "entry {} (row-major): packed {} against {}", k, a, b
+                        );
+                    }
+                }
                 for i in 0..n {
                     let full: f64 = (0..p).map(|k| y[i * p + k] * theta[k]).sum();
                     let reduced: f64 = (0..b).map(|k| yb[i * b + k] * base[k]).sum();

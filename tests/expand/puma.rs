@@ -5202,9 +5202,29 @@ impl ::planar_arm::Identification<6, 60, 36> for Puma560 {
 
 the recursive Newton-Euler algorithm unrolled, each link in its own frame, the joints' constant transformations folded in: once per standard parameter, that parameter one and the others zero (the forces are linear in them), the motion of the links shared
 
-Cost: 573 multiplications, 496 additions, 0 divisions, 5 sin_cos pairs.*/
+Cost: 573 multiplications, 496 additions, 0 divisions, 5 sin_cos pairs; where the processor has AVX2, 150 multiplications, 205 additions, 0 divisions, 5 sin_cos pairs on scalars and 418 four-lane operations.*/
     #[inline]
     fn regressor(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+        __qdd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+    ) -> ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 6, 60> {
+        ::planar_arm::__private::dispatch(::planar_arm::__private::Regressor::<
+            Self,
+            6,
+            60,
+            36,
+        > {
+            arm: self,
+            q: __q,
+            qd: __qd,
+            qdd: __qdd,
+        })
+    }
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __regressor_kernel(
         &self,
         __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
         __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
@@ -5682,6 +5702,1350 @@ Cost: 573 multiplications, 496 additions, 0 divisions, 5 sin_cos pairs.*/
             [__y1_60, __y2_60, __y2_60, __y4_60, __y5_60, __y6_60],
         ])
     }
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __regressor_packed<__L: ::planar_arm::__private::Lanes>(
+        &self,
+        __lanes: __L,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+        __qdd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+    ) -> ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 6, 60> {
+        let [_, __q2, __q3, __q4, __q5, __q6] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2, __qd3, __qd4, __qd5, __qd6] = ::planar_arm::__private::unpack(
+            __qd,
+        );
+        let [__qdd1, __qdd2, __qdd3, __qdd4, __qdd5, __qdd6] = ::planar_arm::__private::unpack(
+            __qdd,
+        );
+        let [(__s2, __c2), (__s3, __c3), (__s4, __c4), (__s5, __c5), (__s6, __c6)] = ::planar_arm::__private::sin_cos([
+            __q2,
+            __q3,
+            __q4,
+            __q5,
+            __q6,
+        ]);
+        let __v5 = -__s3;
+        let __v10 = -__s4;
+        let __v13 = -__s5;
+        let __v16 = -__s6;
+        let __t1 = __s2 * __qd1;
+        let __t2 = __c2 * __qd1;
+        let __v45 = __qd2 * __t2;
+        let __v31 = __qd2 * __t1;
+        let __v46 = -__v31;
+        let __v30 = __s2 * __qdd1 + __v45;
+        let __v37 = __c2 * __qdd1 - __v31;
+        let __t3 = (2159.0 / 5000.0) * __qd2;
+        let __t4 = -((2159.0 / 5000.0) * __t2);
+        let __v19 = __t1 * __t3 - (2159.0 / 5000.0) * __v37;
+        let __v29 = (981.0 / 100.0) * __s2 + __t2 * __t4 - __qd2 * __t3;
+        let __v18 = (981.0 / 100.0) * __c2 + (2159.0 / 5000.0) * __qdd2 - __t1 * __t4;
+        let __v22 = -__v19;
+        let __t5 = __c3 * __t1 + __s3 * __t2;
+        let __t6 = __v5 * __t1 + __c3 * __t2;
+        let __t7 = -__qd2;
+        let __t8 = -__qd3;
+        let __t9 = __t7 - __qd3;
+        let __v70 = -__qdd2 - __qdd3;
+        let __v63 = __c3 * __v30 + __s3 * __v37 - __t6 * __t8;
+        let __v80 = __v5 * __v30 + __c3 * __v37 + __t5 * __t8;
+        let __t10 = -((-(3001.0 / 20000.0)) * __t6);
+        let __t11 = (203.0 / 10000.0) * __t6;
+        let __t12 = (-(3001.0 / 20000.0)) * __t5 - (203.0 / 10000.0) * __t9;
+        let __v48 = __c3 * __v29 + __s3 * __v18 + __t9 * __t12 - __t6 * __t11
+            - (-(3001.0 / 20000.0)) * __v80;
+        let __v49 = __t6 * __t10 - __t5 * __t12 + (203.0 / 10000.0) * __v80 - __v19;
+        let __v50 = __v5 * __v29 + __c3 * __v18 + __t5 * __t11 - __t9 * __t10
+            + (-(3001.0 / 20000.0)) * __v63 - (203.0 / 10000.0) * __v70;
+        let __t13 = __c4 * __t5 + __s4 * __t9;
+        let __t14 = __v10 * __t5 + __c4 * __t9;
+        let __t15 = -__t14;
+        let __t16 = __t6 + __qd4;
+        let __v103 = __v80 + __qdd4;
+        let __v96 = __c4 * __v63 + __s4 * __v70 - __qd4 * __t15;
+        let __v113 = __qd4 * __t13 - (__v10 * __v63 + __c4 * __v70);
+        let __t17 = -((2159.0 / 5000.0) * __t15);
+        let __t18 = (2159.0 / 5000.0) * __t13;
+        let __v81 = __c4 * __v48 + __s4 * __v49 + __t16 * __t18
+            - (2159.0 / 5000.0) * __v113;
+        let __v82 = __v50 + __t15 * __t17 - __t13 * __t18;
+        let __v83 = (2159.0 / 5000.0) * __v96 - __t16 * __t17
+            - (__v10 * __v48 + __c4 * __v49);
+        let __v114 = __c5 * __v81 + __s5 * __v82;
+        let __v115 = __v13 * __v81 + __c5 * __v82;
+        let __v87 = -__v83;
+        let __t19 = __c5 * __t13 + __s5 * __t16;
+        let __t20 = __v13 * __t13 + __c5 * __t16;
+        let __t21 = -__qd5;
+        let __t22 = __t14 - __qd5;
+        let __v134 = -__v113 - __qdd5;
+        let __v127 = __c5 * __v96 + __s5 * __v103 - __t20 * __t21;
+        let __v144 = __v13 * __v96 + __c5 * __v103 + __t19 * __t21;
+        let __v145 = __c6 * __v114 + __s6 * __v87;
+        let __v146 = __v16 * __v114 + __c6 * __v87;
+        let __t23 = __c6 * __t19 + __s6 * __t22;
+        let __t24 = __v16 * __t19 + __c6 * __t22;
+        let __t25 = __t20 + __qd6;
+        let __v175 = __v144 + __qdd6;
+        let __v158 = __c6 * __v127 + __s6 * __v134 + __qd6 * __t24;
+        let __v165 = __v16 * __v127 + __c6 * __v134 - __qd6 * __t23;
+        let __t26 = __qd2 * __qd2;
+        let __v20 = __qdd2 - __t1 * (-__t2);
+        let __v21 = __v31 - __v37;
+        let __v38 = __t1 * __t2;
+        let __t27 = __t1 * __t1;
+        let __v23 = __qd2 * __t7 - __t27;
+        let __v24 = __v30 - __t2 * __t7;
+        let __v25 = -__v29;
+        let __t28 = __t2 * __t2;
+        let __v27 = __t1 * (-__t1) - __t28;
+        let __v26 = __v45 - __v30;
+        let __v28 = -__v18;
+        let __v32 = -__v38;
+        let __v35 = __t27 - __t28;
+        let __v33 = __v37 - __v31;
+        let __v34 = __v45 + __v30;
+        let __v36 = -__v45;
+        let __v40 = __t26 - __t27;
+        let __v39 = __qdd2 + __v38;
+        let __v41 = __v30 - __v45;
+        let __v42 = __t28 - __t26;
+        let __v43 = __qdd2 - __v38;
+        let __v44 = __v31 + __v37;
+        let __t29 = -__t9;
+        let __t30 = __t6 * __t6;
+        let __v51 = __t9 * __t29 - __t30;
+        let __v64 = __t5 * __t6;
+        let __v52 = __v80 - __t5 * __t29;
+        let __v53 = __v64 - __v70;
+        let __v54 = -__v50;
+        let __t31 = -__t6;
+        let __v71 = __t5 * __t9;
+        let __t32 = __t5 * __t5;
+        let __v56 = __t6 * __t31 - __t32;
+        let __v55 = __v71 - __v80;
+        let __v57 = __v63 - __t9 * __t31;
+        let __v58 = -__v48;
+        let __t33 = -__t5;
+        let __v78 = __t6 * __t9;
+        let __t34 = __t9 * __t9;
+        let __v61 = __t5 * __t33 - __t34;
+        let __v59 = __v70 - __t6 * __t33;
+        let __v60 = __v78 - __v63;
+        let __v62 = -__v49;
+        let __v65 = -__v71;
+        let __v79 = -__v64;
+        let __v68 = __t32 - __t34;
+        let __v66 = __v70 - __v64;
+        let __v67 = __v63 + __v78;
+        let __v69 = -__v78;
+        let __v73 = __t30 - __t32;
+        let __v72 = __v80 + __v71;
+        let __v74 = __v63 - __v78;
+        let __v75 = __t34 - __t30;
+        let __v76 = __v80 - __v71;
+        let __v77 = __v70 + __v64;
+        let __t35 = -__t16;
+        let __t36 = __t15 * __t15;
+        let __v84 = __t16 * __t35 - __t36;
+        let __v97 = __t13 * __t15;
+        let __v85 = __v113 - __t13 * __t35;
+        let __v86 = __v97 - __v103;
+        let __v104 = __t13 * __t16;
+        let __t37 = __t13 * __t13;
+        let __v89 = __t14 * __t15 - __t37;
+        let __v88 = __v104 - __v113;
+        let __v90 = __v96 - __t14 * __t16;
+        let __v91 = -__v81;
+        let __t38 = -__t13;
+        let __v111 = __t15 * __t16;
+        let __t39 = __t16 * __t16;
+        let __v94 = __t13 * __t38 - __t39;
+        let __v92 = __v103 - __t15 * __t38;
+        let __v93 = __v111 - __v96;
+        let __v95 = -__v82;
+        let __v98 = -__v104;
+        let __v112 = -__v97;
+        let __v101 = __t37 - __t39;
+        let __v99 = __v103 - __v97;
+        let __v100 = __v96 + __v111;
+        let __v102 = -__v111;
+        let __v106 = __t36 - __t37;
+        let __v105 = __v113 + __v104;
+        let __v107 = __v96 - __v111;
+        let __v108 = __t39 - __t36;
+        let __v109 = __v113 - __v104;
+        let __v110 = __v103 + __v97;
+        let __t40 = -__t22;
+        let __t41 = __t20 * __t20;
+        let __v116 = __t22 * __t40 - __t41;
+        let __v128 = __t19 * __t20;
+        let __v117 = __v144 - __t19 * __t40;
+        let __v118 = __v128 - __v134;
+        let __v119 = -__v115;
+        let __t42 = -__t20;
+        let __v135 = __t19 * __t22;
+        let __t43 = __t19 * __t19;
+        let __v121 = __t20 * __t42 - __t43;
+        let __v120 = __v135 - __v144;
+        let __v122 = __v127 - __t22 * __t42;
+        let __v123 = -__v114;
+        let __t44 = -__t19;
+        let __v142 = __t20 * __t22;
+        let __t45 = __t22 * __t22;
+        let __v126 = __t19 * __t44 - __t45;
+        let __v124 = __v134 - __t20 * __t44;
+        let __v125 = __v142 - __v127;
+        let __v129 = -__v135;
+        let __v143 = -__v128;
+        let __v132 = __t43 - __t45;
+        let __v130 = __v134 - __v128;
+        let __v131 = __v127 + __v142;
+        let __v133 = -__v142;
+        let __v137 = __t41 - __t43;
+        let __v136 = __v144 + __v135;
+        let __v138 = __v127 - __v142;
+        let __v139 = __t45 - __t41;
+        let __v140 = __v144 - __v135;
+        let __v141 = __v134 + __v128;
+        let __t46 = -__t24;
+        let __t47 = __t25 * __t25;
+        let __v147 = __t24 * __t46 - __t47;
+        let __v159 = __t23 * __t25;
+        let __v148 = __v175 - __t23 * __t46;
+        let __v149 = __v159 - __v165;
+        let __t48 = -__t25;
+        let __v166 = __t23 * __t24;
+        let __t49 = __t23 * __t23;
+        let __v151 = __t25 * __t48 - __t49;
+        let __v150 = __v166 - __v175;
+        let __v152 = __v158 - __t24 * __t48;
+        let __v153 = -__v145;
+        let __t50 = -__t23;
+        let __v173 = __t24 * __t25;
+        let __t51 = __t24 * __t24;
+        let __v156 = __t23 * __t50 - __t51;
+        let __v154 = __v165 - __t25 * __t50;
+        let __v155 = __v173 - __v158;
+        let __v157 = -__v146;
+        let __v160 = -__v166;
+        let __v174 = -__v159;
+        let __v163 = __t49 - __t51;
+        let __v161 = __v165 - __v159;
+        let __v162 = __v158 + __v173;
+        let __v164 = -__v173;
+        let __v168 = __t47 - __t49;
+        let __v167 = __v175 + __v166;
+        let __v169 = __v158 - __v173;
+        let __v170 = __t51 - __t47;
+        let __v171 = __v175 - __v166;
+        let __v172 = __v165 + __v159;
+        let __v2 = (2159.0 / 5000.0);
+        let __v6 = (-(3001.0 / 20000.0));
+        let __v7 = (203.0 / 10000.0);
+        let __lane0 = __lanes.constant([1.0, 0.0, 0.0, 0.0]);
+        let __lane1 = __lanes.constant([0.0, 1.0, 0.0, 0.0]);
+        let __lane2 = __lanes.mul(__lane0, __lanes.splat(__s2));
+        let __lane3 = __lanes.mul(__lane0, __lanes.splat(__c2));
+        let __lane4 = __lanes.mul(__lane1, __lanes.splat(__v2));
+        let __lane5 = __lanes.mul(__lane3, __lanes.splat(__v2));
+        let __lane6 = __lanes.neg(__lane5);
+        let __lane7 = __lanes.constant([0.0, 0.0, 1.0, 0.0]);
+        let __lane8 = __lanes.mul(__lane2, __lanes.splat(__c3));
+        let __lane9 = __lanes.mul(__lane3, __lanes.splat(__s3));
+        let __lane10 = __lanes.add(__lane8, __lane9);
+        let __lane11 = __lanes.mul(__lane2, __lanes.splat(__v5));
+        let __lane12 = __lanes.mul(__lane3, __lanes.splat(__c3));
+        let __lane13 = __lanes.add(__lane11, __lane12);
+        let __lane14 = __lanes.neg(__lane1);
+        let __lane15 = __lanes.mul(__lane4, __lanes.splat(__s3));
+        let __lane16 = __lanes.mul(__lane4, __lanes.splat(__c3));
+        let __lane17 = __lanes.sub(__lane14, __lane7);
+        let __lane18 = __lanes.mul(__lane13, __lanes.splat(__v6));
+        let __lane19 = __lanes.mul(__lane13, __lanes.splat(__v7));
+        let __lane20 = __lanes.mul(__lane10, __lanes.splat(__v6));
+        let __lane21 = __lanes.mul(__lane17, __lanes.splat(__v7));
+        let __lane22 = __lanes.sub(__lane20, __lane21);
+        let __lane23 = __lanes.sub(__lane15, __lane18);
+        let __lane24 = __lanes.add(__lane5, __lane19);
+        let __lane25 = __lanes.add(__lane16, __lane22);
+        let __lane26 = __lanes.constant([0.0, 0.0, 0.0, 1.0]);
+        let __lane27 = __lanes.mul(__lane10, __lanes.splat(__c4));
+        let __lane28 = __lanes.mul(__lane17, __lanes.splat(__s4));
+        let __lane29 = __lanes.add(__lane27, __lane28);
+        let __lane30 = __lanes.mul(__lane10, __lanes.splat(__v10));
+        let __lane31 = __lanes.mul(__lane17, __lanes.splat(__c4));
+        let __lane32 = __lanes.add(__lane30, __lane31);
+        let __lane33 = __lanes.neg(__lane32);
+        let __lane34 = __lanes.mul(__lane23, __lanes.splat(__c4));
+        let __lane35 = __lanes.mul(__lane24, __lanes.splat(__s4));
+        let __lane36 = __lanes.add(__lane34, __lane35);
+        let __lane37 = __lanes.mul(__lane23, __lanes.splat(__v10));
+        let __lane38 = __lanes.mul(__lane24, __lanes.splat(__c4));
+        let __lane39 = __lanes.add(__lane37, __lane38);
+        let __lane40 = __lanes.add(__lane13, __lane26);
+        let __lane41 = __lanes.mul(__lane33, __lanes.splat(__v2));
+        let __lane42 = __lanes.mul(__lane29, __lanes.splat(__v2));
+        let __lane43 = __lanes.sub(__lane36, __lane41);
+        let __lane44 = __lanes.sub(__lane42, __lane39);
+        let __lane45 = __lanes.mul(__lane29, __lanes.splat(__c5));
+        let __lane46 = __lanes.mul(__lane40, __lanes.splat(__s5));
+        let __lane47 = __lanes.add(__lane45, __lane46);
+        let __lane48 = __lanes.mul(__lane29, __lanes.splat(__v13));
+        let __lane49 = __lanes.mul(__lane40, __lanes.splat(__c5));
+        let __lane50 = __lanes.add(__lane48, __lane49);
+        let __lane51 = __lanes.mul(__lane43, __lanes.splat(__c5));
+        let __lane52 = __lanes.mul(__lane25, __lanes.splat(__s5));
+        let __lane53 = __lanes.add(__lane51, __lane52);
+        let __lane54 = __lanes.mul(__lane43, __lanes.splat(__v13));
+        let __lane55 = __lanes.mul(__lane25, __lanes.splat(__c5));
+        let __lane56 = __lanes.add(__lane54, __lane55);
+        let __lane57 = __lanes.neg(__lane44);
+        let __lane58 = __lanes.mul(__lane47, __lanes.splat(__c6));
+        let __lane59 = __lanes.mul(__lane32, __lanes.splat(__s6));
+        let __lane60 = __lanes.add(__lane58, __lane59);
+        let __lane61 = __lanes.mul(__lane47, __lanes.splat(__v16));
+        let __lane62 = __lanes.mul(__lane32, __lanes.splat(__c6));
+        let __lane63 = __lanes.add(__lane61, __lane62);
+        let __lane64 = __lanes.mul(__lane53, __lanes.splat(__c6));
+        let __lane65 = __lanes.mul(__lane57, __lanes.splat(__s6));
+        let __lane66 = __lanes.add(__lane64, __lane65);
+        let __lane67 = __lanes.mul(__lane53, __lanes.splat(__v16));
+        let __lane68 = __lanes.mul(__lane57, __lanes.splat(__c6));
+        let __lane69 = __lanes.add(__lane67, __lane68);
+        let __lane70 = __lanes.mul(__lane0, __lanes.splat(__qdd1));
+        let __lane71 = __lanes.mul(__lane4, __lanes.splat(__v18));
+        let __lane72 = __lanes.mul(__lane6, __lanes.splat(__v19));
+        let __lane73 = __lanes.add(__lane71, __lane72);
+        let __lane74 = __lanes.mul(__lane4, __lanes.splat(__v20));
+        let __lane75 = __lanes.mul(__lane6, __lanes.splat(__v21));
+        let __lane76 = __lanes.add(__lane74, __lane75);
+        let __lane77 = __lanes.mul(__lane3, __lanes.splat(__v22));
+        let __lane78 = __lanes.mul(__lane1, __lanes.splat(__v18));
+        let __lane79 = __lanes.add(__lane77, __lane78);
+        let __lane80 = __lanes.add(__lane76, __lane79);
+        let __lane81 = __lanes.mul(__lane4, __lanes.splat(__v23));
+        let __lane82 = __lanes.mul(__lane6, __lanes.splat(__v24));
+        let __lane83 = __lanes.add(__lane81, __lane82);
+        let __lane84 = __lanes.mul(__lane2, __lanes.splat(__v19));
+        let __lane85 = __lanes.mul(__lane1, __lanes.splat(__v25));
+        let __lane86 = __lanes.add(__lane84, __lane85);
+        let __lane87 = __lanes.add(__lane83, __lane86);
+        let __lane88 = __lanes.mul(__lane4, __lanes.splat(__v26));
+        let __lane89 = __lanes.mul(__lane6, __lanes.splat(__v27));
+        let __lane90 = __lanes.add(__lane88, __lane89);
+        let __lane91 = __lanes.mul(__lane2, __lanes.splat(__v28));
+        let __lane92 = __lanes.mul(__lane3, __lanes.splat(__v29));
+        let __lane93 = __lanes.add(__lane91, __lane92);
+        let __lane94 = __lanes.add(__lane90, __lane93);
+        let __lane95 = __lanes.mul(__lane2, __lanes.splat(__v30));
+        let __lane96 = __lanes.mul(__lane3, __lanes.splat(__v31));
+        let __lane97 = __lanes.mul(__lane1, __lanes.splat(__v32));
+        let __lane98 = __lanes.add(__lane95, __lane96);
+        let __lane99 = __lanes.add(__lane97, __lane98);
+        let __lane100 = __lanes.mul(__lane2, __lanes.splat(__v33));
+        let __lane101 = __lanes.mul(__lane3, __lanes.splat(__v34));
+        let __lane102 = __lanes.mul(__lane1, __lanes.splat(__v35));
+        let __lane103 = __lanes.add(__lane100, __lane101);
+        let __lane104 = __lanes.add(__lane102, __lane103);
+        let __lane105 = __lanes.mul(__lane2, __lanes.splat(__v36));
+        let __lane106 = __lanes.mul(__lane3, __lanes.splat(__v37));
+        let __lane107 = __lanes.mul(__lane1, __lanes.splat(__v38));
+        let __lane108 = __lanes.add(__lane105, __lane106);
+        let __lane109 = __lanes.add(__lane107, __lane108);
+        let __lane110 = __lanes.mul(__lane2, __lanes.splat(__v39));
+        let __lane111 = __lanes.mul(__lane3, __lanes.splat(__v40));
+        let __lane112 = __lanes.mul(__lane1, __lanes.splat(__v41));
+        let __lane113 = __lanes.add(__lane110, __lane111);
+        let __lane114 = __lanes.add(__lane112, __lane113);
+        let __lane115 = __lanes.mul(__lane2, __lanes.splat(__v42));
+        let __lane116 = __lanes.mul(__lane3, __lanes.splat(__v43));
+        let __lane117 = __lanes.mul(__lane1, __lanes.splat(__v44));
+        let __lane118 = __lanes.add(__lane115, __lane116);
+        let __lane119 = __lanes.add(__lane117, __lane118);
+        let __lane120 = __lanes.mul(__lane2, __lanes.splat(__v45));
+        let __lane121 = __lanes.mul(__lane3, __lanes.splat(__v46));
+        let __lane122 = __lanes.mul(__lane1, __lanes.splat(__qdd2));
+        let __lane123 = __lanes.add(__lane120, __lane121);
+        let __lane124 = __lanes.add(__lane122, __lane123);
+        let __lane125 = __lanes.mul(__lane23, __lanes.splat(__v48));
+        let __lane126 = __lanes.mul(__lane24, __lanes.splat(__v49));
+        let __lane127 = __lanes.mul(__lane25, __lanes.splat(__v50));
+        let __lane128 = __lanes.add(__lane125, __lane126);
+        let __lane129 = __lanes.add(__lane127, __lane128);
+        let __lane130 = __lanes.mul(__lane23, __lanes.splat(__v51));
+        let __lane131 = __lanes.mul(__lane24, __lanes.splat(__v52));
+        let __lane132 = __lanes.mul(__lane25, __lanes.splat(__v53));
+        let __lane133 = __lanes.add(__lane130, __lane131);
+        let __lane134 = __lanes.add(__lane132, __lane133);
+        let __lane135 = __lanes.mul(__lane17, __lanes.splat(__v54));
+        let __lane136 = __lanes.mul(__lane13, __lanes.splat(__v49));
+        let __lane137 = __lanes.add(__lane135, __lane136);
+        let __lane138 = __lanes.add(__lane134, __lane137);
+        let __lane139 = __lanes.mul(__lane23, __lanes.splat(__v55));
+        let __lane140 = __lanes.mul(__lane24, __lanes.splat(__v56));
+        let __lane141 = __lanes.mul(__lane25, __lanes.splat(__v57));
+        let __lane142 = __lanes.add(__lane139, __lane140);
+        let __lane143 = __lanes.add(__lane141, __lane142);
+        let __lane144 = __lanes.mul(__lane10, __lanes.splat(__v50));
+        let __lane145 = __lanes.mul(__lane13, __lanes.splat(__v58));
+        let __lane146 = __lanes.add(__lane144, __lane145);
+        let __lane147 = __lanes.add(__lane143, __lane146);
+        let __lane148 = __lanes.mul(__lane23, __lanes.splat(__v59));
+        let __lane149 = __lanes.mul(__lane24, __lanes.splat(__v60));
+        let __lane150 = __lanes.mul(__lane25, __lanes.splat(__v61));
+        let __lane151 = __lanes.add(__lane148, __lane149);
+        let __lane152 = __lanes.add(__lane150, __lane151);
+        let __lane153 = __lanes.mul(__lane10, __lanes.splat(__v62));
+        let __lane154 = __lanes.mul(__lane17, __lanes.splat(__v48));
+        let __lane155 = __lanes.add(__lane153, __lane154);
+        let __lane156 = __lanes.add(__lane152, __lane155);
+        let __lane157 = __lanes.mul(__lane10, __lanes.splat(__v63));
+        let __lane158 = __lanes.mul(__lane17, __lanes.splat(__v64));
+        let __lane159 = __lanes.mul(__lane13, __lanes.splat(__v65));
+        let __lane160 = __lanes.add(__lane157, __lane158);
+        let __lane161 = __lanes.add(__lane159, __lane160);
+        let __lane162 = __lanes.mul(__lane10, __lanes.splat(__v66));
+        let __lane163 = __lanes.mul(__lane17, __lanes.splat(__v67));
+        let __lane164 = __lanes.mul(__lane13, __lanes.splat(__v68));
+        let __lane165 = __lanes.add(__lane162, __lane163);
+        let __lane166 = __lanes.add(__lane164, __lane165);
+        let __lane167 = __lanes.mul(__lane10, __lanes.splat(__v69));
+        let __lane168 = __lanes.mul(__lane17, __lanes.splat(__v70));
+        let __lane169 = __lanes.mul(__lane13, __lanes.splat(__v71));
+        let __lane170 = __lanes.add(__lane167, __lane168);
+        let __lane171 = __lanes.add(__lane169, __lane170);
+        let __lane172 = __lanes.mul(__lane10, __lanes.splat(__v72));
+        let __lane173 = __lanes.mul(__lane17, __lanes.splat(__v73));
+        let __lane174 = __lanes.mul(__lane13, __lanes.splat(__v74));
+        let __lane175 = __lanes.add(__lane172, __lane173);
+        let __lane176 = __lanes.add(__lane174, __lane175);
+        let __lane177 = __lanes.mul(__lane10, __lanes.splat(__v75));
+        let __lane178 = __lanes.mul(__lane17, __lanes.splat(__v76));
+        let __lane179 = __lanes.mul(__lane13, __lanes.splat(__v77));
+        let __lane180 = __lanes.add(__lane177, __lane178);
+        let __lane181 = __lanes.add(__lane179, __lane180);
+        let __lane182 = __lanes.mul(__lane10, __lanes.splat(__v78));
+        let __lane183 = __lanes.mul(__lane17, __lanes.splat(__v79));
+        let __lane184 = __lanes.mul(__lane13, __lanes.splat(__v80));
+        let __lane185 = __lanes.add(__lane182, __lane183);
+        let __lane186 = __lanes.add(__lane184, __lane185);
+        let __lane187 = __lanes.mul(__lane43, __lanes.splat(__v81));
+        let __lane188 = __lanes.mul(__lane25, __lanes.splat(__v82));
+        let __lane189 = __lanes.mul(__lane44, __lanes.splat(__v83));
+        let __lane190 = __lanes.add(__lane187, __lane188);
+        let __lane191 = __lanes.add(__lane189, __lane190);
+        let __lane192 = __lanes.mul(__lane43, __lanes.splat(__v84));
+        let __lane193 = __lanes.mul(__lane25, __lanes.splat(__v85));
+        let __lane194 = __lanes.mul(__lane44, __lanes.splat(__v86));
+        let __lane195 = __lanes.add(__lane192, __lane193);
+        let __lane196 = __lanes.add(__lane194, __lane195);
+        let __lane197 = __lanes.mul(__lane40, __lanes.splat(__v87));
+        let __lane198 = __lanes.mul(__lane33, __lanes.splat(__v82));
+        let __lane199 = __lanes.add(__lane197, __lane198);
+        let __lane200 = __lanes.add(__lane196, __lane199);
+        let __lane201 = __lanes.mul(__lane43, __lanes.splat(__v88));
+        let __lane202 = __lanes.mul(__lane25, __lanes.splat(__v89));
+        let __lane203 = __lanes.mul(__lane44, __lanes.splat(__v90));
+        let __lane204 = __lanes.add(__lane201, __lane202);
+        let __lane205 = __lanes.add(__lane203, __lane204);
+        let __lane206 = __lanes.mul(__lane29, __lanes.splat(__v83));
+        let __lane207 = __lanes.mul(__lane33, __lanes.splat(__v91));
+        let __lane208 = __lanes.add(__lane206, __lane207);
+        let __lane209 = __lanes.add(__lane205, __lane208);
+        let __lane210 = __lanes.mul(__lane43, __lanes.splat(__v92));
+        let __lane211 = __lanes.mul(__lane25, __lanes.splat(__v93));
+        let __lane212 = __lanes.mul(__lane44, __lanes.splat(__v94));
+        let __lane213 = __lanes.add(__lane210, __lane211);
+        let __lane214 = __lanes.add(__lane212, __lane213);
+        let __lane215 = __lanes.mul(__lane29, __lanes.splat(__v95));
+        let __lane216 = __lanes.mul(__lane40, __lanes.splat(__v81));
+        let __lane217 = __lanes.add(__lane215, __lane216);
+        let __lane218 = __lanes.add(__lane214, __lane217);
+        let __lane219 = __lanes.mul(__lane29, __lanes.splat(__v96));
+        let __lane220 = __lanes.mul(__lane40, __lanes.splat(__v97));
+        let __lane221 = __lanes.mul(__lane33, __lanes.splat(__v98));
+        let __lane222 = __lanes.add(__lane219, __lane220);
+        let __lane223 = __lanes.add(__lane221, __lane222);
+        let __lane224 = __lanes.mul(__lane29, __lanes.splat(__v99));
+        let __lane225 = __lanes.mul(__lane40, __lanes.splat(__v100));
+        let __lane226 = __lanes.mul(__lane33, __lanes.splat(__v101));
+        let __lane227 = __lanes.add(__lane224, __lane225);
+        let __lane228 = __lanes.add(__lane226, __lane227);
+        let __lane229 = __lanes.mul(__lane29, __lanes.splat(__v102));
+        let __lane230 = __lanes.mul(__lane40, __lanes.splat(__v103));
+        let __lane231 = __lanes.mul(__lane33, __lanes.splat(__v104));
+        let __lane232 = __lanes.add(__lane229, __lane230);
+        let __lane233 = __lanes.add(__lane231, __lane232);
+        let __lane234 = __lanes.mul(__lane29, __lanes.splat(__v105));
+        let __lane235 = __lanes.mul(__lane40, __lanes.splat(__v106));
+        let __lane236 = __lanes.mul(__lane33, __lanes.splat(__v107));
+        let __lane237 = __lanes.add(__lane234, __lane235);
+        let __lane238 = __lanes.add(__lane236, __lane237);
+        let __lane239 = __lanes.mul(__lane29, __lanes.splat(__v108));
+        let __lane240 = __lanes.mul(__lane40, __lanes.splat(__v109));
+        let __lane241 = __lanes.mul(__lane33, __lanes.splat(__v110));
+        let __lane242 = __lanes.add(__lane239, __lane240);
+        let __lane243 = __lanes.add(__lane241, __lane242);
+        let __lane244 = __lanes.mul(__lane29, __lanes.splat(__v111));
+        let __lane245 = __lanes.mul(__lane40, __lanes.splat(__v112));
+        let __lane246 = __lanes.mul(__lane33, __lanes.splat(__v113));
+        let __lane247 = __lanes.add(__lane244, __lane245);
+        let __lane248 = __lanes.add(__lane246, __lane247);
+        let __lane249 = __lanes.mul(__lane53, __lanes.splat(__v114));
+        let __lane250 = __lanes.mul(__lane57, __lanes.splat(__v87));
+        let __lane251 = __lanes.mul(__lane56, __lanes.splat(__v115));
+        let __lane252 = __lanes.add(__lane249, __lane250);
+        let __lane253 = __lanes.add(__lane251, __lane252);
+        let __lane254 = __lanes.mul(__lane53, __lanes.splat(__v116));
+        let __lane255 = __lanes.mul(__lane57, __lanes.splat(__v117));
+        let __lane256 = __lanes.mul(__lane56, __lanes.splat(__v118));
+        let __lane257 = __lanes.add(__lane254, __lane255);
+        let __lane258 = __lanes.add(__lane256, __lane257);
+        let __lane259 = __lanes.mul(__lane32, __lanes.splat(__v119));
+        let __lane260 = __lanes.mul(__lane50, __lanes.splat(__v87));
+        let __lane261 = __lanes.add(__lane259, __lane260);
+        let __lane262 = __lanes.add(__lane258, __lane261);
+        let __lane263 = __lanes.mul(__lane53, __lanes.splat(__v120));
+        let __lane264 = __lanes.mul(__lane57, __lanes.splat(__v121));
+        let __lane265 = __lanes.mul(__lane56, __lanes.splat(__v122));
+        let __lane266 = __lanes.add(__lane263, __lane264);
+        let __lane267 = __lanes.add(__lane265, __lane266);
+        let __lane268 = __lanes.mul(__lane47, __lanes.splat(__v115));
+        let __lane269 = __lanes.mul(__lane50, __lanes.splat(__v123));
+        let __lane270 = __lanes.add(__lane268, __lane269);
+        let __lane271 = __lanes.add(__lane267, __lane270);
+        let __lane272 = __lanes.mul(__lane53, __lanes.splat(__v124));
+        let __lane273 = __lanes.mul(__lane57, __lanes.splat(__v125));
+        let __lane274 = __lanes.mul(__lane56, __lanes.splat(__v126));
+        let __lane275 = __lanes.add(__lane272, __lane273);
+        let __lane276 = __lanes.add(__lane274, __lane275);
+        let __lane277 = __lanes.mul(__lane47, __lanes.splat(__v83));
+        let __lane278 = __lanes.mul(__lane32, __lanes.splat(__v114));
+        let __lane279 = __lanes.add(__lane277, __lane278);
+        let __lane280 = __lanes.add(__lane276, __lane279);
+        let __lane281 = __lanes.mul(__lane47, __lanes.splat(__v127));
+        let __lane282 = __lanes.mul(__lane32, __lanes.splat(__v128));
+        let __lane283 = __lanes.mul(__lane50, __lanes.splat(__v129));
+        let __lane284 = __lanes.add(__lane281, __lane282);
+        let __lane285 = __lanes.add(__lane283, __lane284);
+        let __lane286 = __lanes.mul(__lane47, __lanes.splat(__v130));
+        let __lane287 = __lanes.mul(__lane32, __lanes.splat(__v131));
+        let __lane288 = __lanes.mul(__lane50, __lanes.splat(__v132));
+        let __lane289 = __lanes.add(__lane286, __lane287);
+        let __lane290 = __lanes.add(__lane288, __lane289);
+        let __lane291 = __lanes.mul(__lane47, __lanes.splat(__v133));
+        let __lane292 = __lanes.mul(__lane32, __lanes.splat(__v134));
+        let __lane293 = __lanes.mul(__lane50, __lanes.splat(__v135));
+        let __lane294 = __lanes.add(__lane291, __lane292);
+        let __lane295 = __lanes.add(__lane293, __lane294);
+        let __lane296 = __lanes.mul(__lane47, __lanes.splat(__v136));
+        let __lane297 = __lanes.mul(__lane32, __lanes.splat(__v137));
+        let __lane298 = __lanes.mul(__lane50, __lanes.splat(__v138));
+        let __lane299 = __lanes.add(__lane296, __lane297);
+        let __lane300 = __lanes.add(__lane298, __lane299);
+        let __lane301 = __lanes.mul(__lane47, __lanes.splat(__v139));
+        let __lane302 = __lanes.mul(__lane32, __lanes.splat(__v140));
+        let __lane303 = __lanes.mul(__lane50, __lanes.splat(__v141));
+        let __lane304 = __lanes.add(__lane301, __lane302);
+        let __lane305 = __lanes.add(__lane303, __lane304);
+        let __lane306 = __lanes.mul(__lane47, __lanes.splat(__v142));
+        let __lane307 = __lanes.mul(__lane32, __lanes.splat(__v143));
+        let __lane308 = __lanes.mul(__lane50, __lanes.splat(__v144));
+        let __lane309 = __lanes.add(__lane306, __lane307);
+        let __lane310 = __lanes.add(__lane308, __lane309);
+        let __lane311 = __lanes.mul(__lane66, __lanes.splat(__v145));
+        let __lane312 = __lanes.mul(__lane69, __lanes.splat(__v146));
+        let __lane313 = __lanes.add(__lane311, __lane312);
+        let __lane314 = __lanes.add(__lane251, __lane313);
+        let __lane315 = __lanes.mul(__lane66, __lanes.splat(__v147));
+        let __lane316 = __lanes.mul(__lane69, __lanes.splat(__v148));
+        let __lane317 = __lanes.mul(__lane56, __lanes.splat(__v149));
+        let __lane318 = __lanes.add(__lane315, __lane316);
+        let __lane319 = __lanes.add(__lane317, __lane318);
+        let __lane320 = __lanes.mul(__lane63, __lanes.splat(__v119));
+        let __lane321 = __lanes.mul(__lane50, __lanes.splat(__v146));
+        let __lane322 = __lanes.add(__lane320, __lane321);
+        let __lane323 = __lanes.add(__lane319, __lane322);
+        let __lane324 = __lanes.mul(__lane66, __lanes.splat(__v150));
+        let __lane325 = __lanes.mul(__lane69, __lanes.splat(__v151));
+        let __lane326 = __lanes.mul(__lane56, __lanes.splat(__v152));
+        let __lane327 = __lanes.add(__lane324, __lane325);
+        let __lane328 = __lanes.add(__lane326, __lane327);
+        let __lane329 = __lanes.mul(__lane60, __lanes.splat(__v115));
+        let __lane330 = __lanes.mul(__lane50, __lanes.splat(__v153));
+        let __lane331 = __lanes.add(__lane329, __lane330);
+        let __lane332 = __lanes.add(__lane328, __lane331);
+        let __lane333 = __lanes.mul(__lane66, __lanes.splat(__v154));
+        let __lane334 = __lanes.mul(__lane69, __lanes.splat(__v155));
+        let __lane335 = __lanes.mul(__lane56, __lanes.splat(__v156));
+        let __lane336 = __lanes.add(__lane333, __lane334);
+        let __lane337 = __lanes.add(__lane335, __lane336);
+        let __lane338 = __lanes.mul(__lane60, __lanes.splat(__v157));
+        let __lane339 = __lanes.mul(__lane63, __lanes.splat(__v145));
+        let __lane340 = __lanes.add(__lane338, __lane339);
+        let __lane341 = __lanes.add(__lane337, __lane340);
+        let __lane342 = __lanes.mul(__lane60, __lanes.splat(__v158));
+        let __lane343 = __lanes.mul(__lane63, __lanes.splat(__v159));
+        let __lane344 = __lanes.mul(__lane50, __lanes.splat(__v160));
+        let __lane345 = __lanes.add(__lane342, __lane343);
+        let __lane346 = __lanes.add(__lane344, __lane345);
+        let __lane347 = __lanes.mul(__lane60, __lanes.splat(__v161));
+        let __lane348 = __lanes.mul(__lane63, __lanes.splat(__v162));
+        let __lane349 = __lanes.mul(__lane50, __lanes.splat(__v163));
+        let __lane350 = __lanes.add(__lane347, __lane348);
+        let __lane351 = __lanes.add(__lane349, __lane350);
+        let __lane352 = __lanes.mul(__lane60, __lanes.splat(__v164));
+        let __lane353 = __lanes.mul(__lane63, __lanes.splat(__v165));
+        let __lane354 = __lanes.mul(__lane50, __lanes.splat(__v166));
+        let __lane355 = __lanes.add(__lane352, __lane353);
+        let __lane356 = __lanes.add(__lane354, __lane355);
+        let __lane357 = __lanes.mul(__lane60, __lanes.splat(__v167));
+        let __lane358 = __lanes.mul(__lane63, __lanes.splat(__v168));
+        let __lane359 = __lanes.mul(__lane50, __lanes.splat(__v169));
+        let __lane360 = __lanes.add(__lane357, __lane358);
+        let __lane361 = __lanes.add(__lane359, __lane360);
+        let __lane362 = __lanes.mul(__lane60, __lanes.splat(__v170));
+        let __lane363 = __lanes.mul(__lane63, __lanes.splat(__v171));
+        let __lane364 = __lanes.mul(__lane50, __lanes.splat(__v172));
+        let __lane365 = __lanes.add(__lane362, __lane363);
+        let __lane366 = __lanes.add(__lane364, __lane365);
+        let __lane367 = __lanes.mul(__lane60, __lanes.splat(__v173));
+        let __lane368 = __lanes.mul(__lane63, __lanes.splat(__v174));
+        let __lane369 = __lanes.mul(__lane50, __lanes.splat(__v175));
+        let __lane370 = __lanes.add(__lane367, __lane368);
+        let __lane371 = __lanes.add(__lane369, __lane370);
+        let __lane372 = __lanes.neg(__lane0);
+        let __lane373 = __lanes.mul(__lane372, __lanes.splat(__s6));
+        let __lane374 = __lanes.mul(__lane372, __lanes.splat(__c6));
+        let __lane375 = __lanes.mul(__lane372, __lanes.splat(__v119));
+        let __lane376 = __lanes.mul(__lane372, __lanes.splat(__v114));
+        let __lane377 = __lanes.mul(__lane372, __lanes.splat(__v128));
+        let __lane378 = __lanes.mul(__lane372, __lanes.splat(__v131));
+        let __lane379 = __lanes.mul(__lane372, __lanes.splat(__v134));
+        let __lane380 = __lanes.mul(__lane372, __lanes.splat(__v137));
+        let __lane381 = __lanes.mul(__lane372, __lanes.splat(__v140));
+        let __lane382 = __lanes.mul(__lane372, __lanes.splat(__v143));
+        let __lane383 = __lanes.mul(__lane374, __lanes.splat(__v119));
+        let __lane384 = __lanes.mul(__lane1, __lanes.splat(__v146));
+        let __lane385 = __lanes.add(__lane383, __lane384);
+        let __lane386 = __lanes.mul(__lane373, __lanes.splat(__v115));
+        let __lane387 = __lanes.mul(__lane1, __lanes.splat(__v153));
+        let __lane388 = __lanes.add(__lane386, __lane387);
+        let __lane389 = __lanes.mul(__lane373, __lanes.splat(__v157));
+        let __lane390 = __lanes.mul(__lane374, __lanes.splat(__v145));
+        let __lane391 = __lanes.add(__lane389, __lane390);
+        let __lane392 = __lanes.mul(__lane373, __lanes.splat(__v158));
+        let __lane393 = __lanes.mul(__lane374, __lanes.splat(__v159));
+        let __lane394 = __lanes.mul(__lane1, __lanes.splat(__v160));
+        let __lane395 = __lanes.add(__lane392, __lane393);
+        let __lane396 = __lanes.add(__lane394, __lane395);
+        let __lane397 = __lanes.mul(__lane373, __lanes.splat(__v161));
+        let __lane398 = __lanes.mul(__lane374, __lanes.splat(__v162));
+        let __lane399 = __lanes.mul(__lane1, __lanes.splat(__v163));
+        let __lane400 = __lanes.add(__lane397, __lane398);
+        let __lane401 = __lanes.add(__lane399, __lane400);
+        let __lane402 = __lanes.mul(__lane373, __lanes.splat(__v164));
+        let __lane403 = __lanes.mul(__lane374, __lanes.splat(__v165));
+        let __lane404 = __lanes.mul(__lane1, __lanes.splat(__v166));
+        let __lane405 = __lanes.add(__lane402, __lane403);
+        let __lane406 = __lanes.add(__lane404, __lane405);
+        let __lane407 = __lanes.mul(__lane373, __lanes.splat(__v167));
+        let __lane408 = __lanes.mul(__lane374, __lanes.splat(__v168));
+        let __lane409 = __lanes.mul(__lane1, __lanes.splat(__v169));
+        let __lane410 = __lanes.add(__lane407, __lane408);
+        let __lane411 = __lanes.add(__lane409, __lane410);
+        let __lane412 = __lanes.mul(__lane373, __lanes.splat(__v170));
+        let __lane413 = __lanes.mul(__lane374, __lanes.splat(__v171));
+        let __lane414 = __lanes.mul(__lane1, __lanes.splat(__v172));
+        let __lane415 = __lanes.add(__lane412, __lane413);
+        let __lane416 = __lanes.add(__lane414, __lane415);
+        let __lane417 = __lanes.mul(__lane373, __lanes.splat(__v173));
+        let __lane418 = __lanes.mul(__lane374, __lanes.splat(__v174));
+        let __lane419 = __lanes.mul(__lane1, __lanes.splat(__v175));
+        let __lane420 = __lanes.add(__lane417, __lane418);
+        let __lane421 = __lanes.add(__lane419, __lane420);
+        let __lane_zero = 0.0_f64;
+        let __lane70_0 = __lanes.lanes(__lane70)[0];
+        let __lane73_0 = __lanes.lanes(__lane73)[0];
+        let __lane80_0 = __lanes.lanes(__lane80)[0];
+        let __lane87_0 = __lanes.lanes(__lane87)[0];
+        let __lane94_0 = __lanes.lanes(__lane94)[0];
+        let __lane99_0 = __lanes.lanes(__lane99)[0];
+        let __lane104_0 = __lanes.lanes(__lane104)[0];
+        let __lane109_0 = __lanes.lanes(__lane109)[0];
+        let __lane114_0 = __lanes.lanes(__lane114)[0];
+        let __lane119_0 = __lanes.lanes(__lane119)[0];
+        let __lane124_0 = __lanes.lanes(__lane124)[0];
+        let __lane129_0 = __lanes.lanes(__lane129)[0];
+        let __lane138_0 = __lanes.lanes(__lane138)[0];
+        let __lane147_0 = __lanes.lanes(__lane147)[0];
+        let __lane156_0 = __lanes.lanes(__lane156)[0];
+        let __lane161_0 = __lanes.lanes(__lane161)[0];
+        let __lane166_0 = __lanes.lanes(__lane166)[0];
+        let __lane171_0 = __lanes.lanes(__lane171)[0];
+        let __lane176_0 = __lanes.lanes(__lane176)[0];
+        let __lane181_0 = __lanes.lanes(__lane181)[0];
+        let __lane186_0 = __lanes.lanes(__lane186)[0];
+        let __lane191_0 = __lanes.lanes(__lane191)[0];
+        let __lane200_0 = __lanes.lanes(__lane200)[0];
+        let __lane209_0 = __lanes.lanes(__lane209)[0];
+        let __lane218_0 = __lanes.lanes(__lane218)[0];
+        let __lane223_0 = __lanes.lanes(__lane223)[0];
+        let __lane228_0 = __lanes.lanes(__lane228)[0];
+        let __lane233_0 = __lanes.lanes(__lane233)[0];
+        let __lane238_0 = __lanes.lanes(__lane238)[0];
+        let __lane243_0 = __lanes.lanes(__lane243)[0];
+        let __lane248_0 = __lanes.lanes(__lane248)[0];
+        let __lane253_0 = __lanes.lanes(__lane253)[0];
+        let __lane262_0 = __lanes.lanes(__lane262)[0];
+        let __lane271_0 = __lanes.lanes(__lane271)[0];
+        let __lane280_0 = __lanes.lanes(__lane280)[0];
+        let __lane285_0 = __lanes.lanes(__lane285)[0];
+        let __lane290_0 = __lanes.lanes(__lane290)[0];
+        let __lane295_0 = __lanes.lanes(__lane295)[0];
+        let __lane300_0 = __lanes.lanes(__lane300)[0];
+        let __lane305_0 = __lanes.lanes(__lane305)[0];
+        let __lane310_0 = __lanes.lanes(__lane310)[0];
+        let __lane314_0 = __lanes.lanes(__lane314)[0];
+        let __lane323_0 = __lanes.lanes(__lane323)[0];
+        let __lane332_0 = __lanes.lanes(__lane332)[0];
+        let __lane341_0 = __lanes.lanes(__lane341)[0];
+        let __lane346_0 = __lanes.lanes(__lane346)[0];
+        let __lane351_0 = __lanes.lanes(__lane351)[0];
+        let __lane356_0 = __lanes.lanes(__lane356)[0];
+        let __lane361_0 = __lanes.lanes(__lane361)[0];
+        let __lane366_0 = __lanes.lanes(__lane366)[0];
+        let __lane371_0 = __lanes.lanes(__lane371)[0];
+        let __lane70_1 = __lanes.lanes(__lane70)[1];
+        let __lane73_1 = __lanes.lanes(__lane73)[1];
+        let __lane80_1 = __lanes.lanes(__lane80)[1];
+        let __lane87_1 = __lanes.lanes(__lane87)[1];
+        let __lane94_1 = __lanes.lanes(__lane94)[1];
+        let __lane99_1 = __lanes.lanes(__lane99)[1];
+        let __lane104_1 = __lanes.lanes(__lane104)[1];
+        let __lane109_1 = __lanes.lanes(__lane109)[1];
+        let __lane114_1 = __lanes.lanes(__lane114)[1];
+        let __lane119_1 = __lanes.lanes(__lane119)[1];
+        let __lane124_1 = __lanes.lanes(__lane124)[1];
+        let __lane129_1 = __lanes.lanes(__lane129)[1];
+        let __lane138_1 = __lanes.lanes(__lane138)[1];
+        let __lane147_1 = __lanes.lanes(__lane147)[1];
+        let __lane156_1 = __lanes.lanes(__lane156)[1];
+        let __lane161_1 = __lanes.lanes(__lane161)[1];
+        let __lane166_1 = __lanes.lanes(__lane166)[1];
+        let __lane171_1 = __lanes.lanes(__lane171)[1];
+        let __lane176_1 = __lanes.lanes(__lane176)[1];
+        let __lane181_1 = __lanes.lanes(__lane181)[1];
+        let __lane186_1 = __lanes.lanes(__lane186)[1];
+        let __lane191_1 = __lanes.lanes(__lane191)[1];
+        let __lane200_1 = __lanes.lanes(__lane200)[1];
+        let __lane209_1 = __lanes.lanes(__lane209)[1];
+        let __lane218_1 = __lanes.lanes(__lane218)[1];
+        let __lane223_1 = __lanes.lanes(__lane223)[1];
+        let __lane228_1 = __lanes.lanes(__lane228)[1];
+        let __lane233_1 = __lanes.lanes(__lane233)[1];
+        let __lane238_1 = __lanes.lanes(__lane238)[1];
+        let __lane243_1 = __lanes.lanes(__lane243)[1];
+        let __lane248_1 = __lanes.lanes(__lane248)[1];
+        let __lane253_1 = __lanes.lanes(__lane253)[1];
+        let __lane262_1 = __lanes.lanes(__lane262)[1];
+        let __lane271_1 = __lanes.lanes(__lane271)[1];
+        let __lane280_1 = __lanes.lanes(__lane280)[1];
+        let __lane285_1 = __lanes.lanes(__lane285)[1];
+        let __lane290_1 = __lanes.lanes(__lane290)[1];
+        let __lane295_1 = __lanes.lanes(__lane295)[1];
+        let __lane300_1 = __lanes.lanes(__lane300)[1];
+        let __lane305_1 = __lanes.lanes(__lane305)[1];
+        let __lane310_1 = __lanes.lanes(__lane310)[1];
+        let __lane314_1 = __lanes.lanes(__lane314)[1];
+        let __lane323_1 = __lanes.lanes(__lane323)[1];
+        let __lane332_1 = __lanes.lanes(__lane332)[1];
+        let __lane341_1 = __lanes.lanes(__lane341)[1];
+        let __lane346_1 = __lanes.lanes(__lane346)[1];
+        let __lane351_1 = __lanes.lanes(__lane351)[1];
+        let __lane356_1 = __lanes.lanes(__lane356)[1];
+        let __lane361_1 = __lanes.lanes(__lane361)[1];
+        let __lane366_1 = __lanes.lanes(__lane366)[1];
+        let __lane371_1 = __lanes.lanes(__lane371)[1];
+        let __lane70_2 = __lanes.lanes(__lane70)[2];
+        let __lane73_2 = __lanes.lanes(__lane73)[2];
+        let __lane80_2 = __lanes.lanes(__lane80)[2];
+        let __lane87_2 = __lanes.lanes(__lane87)[2];
+        let __lane94_2 = __lanes.lanes(__lane94)[2];
+        let __lane99_2 = __lanes.lanes(__lane99)[2];
+        let __lane104_2 = __lanes.lanes(__lane104)[2];
+        let __lane109_2 = __lanes.lanes(__lane109)[2];
+        let __lane114_2 = __lanes.lanes(__lane114)[2];
+        let __lane119_2 = __lanes.lanes(__lane119)[2];
+        let __lane124_2 = __lanes.lanes(__lane124)[2];
+        let __lane129_2 = __lanes.lanes(__lane129)[2];
+        let __lane138_2 = __lanes.lanes(__lane138)[2];
+        let __lane147_2 = __lanes.lanes(__lane147)[2];
+        let __lane156_2 = __lanes.lanes(__lane156)[2];
+        let __lane161_2 = __lanes.lanes(__lane161)[2];
+        let __lane166_2 = __lanes.lanes(__lane166)[2];
+        let __lane171_2 = __lanes.lanes(__lane171)[2];
+        let __lane176_2 = __lanes.lanes(__lane176)[2];
+        let __lane181_2 = __lanes.lanes(__lane181)[2];
+        let __lane186_2 = __lanes.lanes(__lane186)[2];
+        let __lane191_2 = __lanes.lanes(__lane191)[2];
+        let __lane200_2 = __lanes.lanes(__lane200)[2];
+        let __lane209_2 = __lanes.lanes(__lane209)[2];
+        let __lane218_2 = __lanes.lanes(__lane218)[2];
+        let __lane223_2 = __lanes.lanes(__lane223)[2];
+        let __lane228_2 = __lanes.lanes(__lane228)[2];
+        let __lane233_2 = __lanes.lanes(__lane233)[2];
+        let __lane238_2 = __lanes.lanes(__lane238)[2];
+        let __lane243_2 = __lanes.lanes(__lane243)[2];
+        let __lane248_2 = __lanes.lanes(__lane248)[2];
+        let __lane253_2 = __lanes.lanes(__lane253)[2];
+        let __lane262_2 = __lanes.lanes(__lane262)[2];
+        let __lane271_2 = __lanes.lanes(__lane271)[2];
+        let __lane280_2 = __lanes.lanes(__lane280)[2];
+        let __lane285_2 = __lanes.lanes(__lane285)[2];
+        let __lane290_2 = __lanes.lanes(__lane290)[2];
+        let __lane295_2 = __lanes.lanes(__lane295)[2];
+        let __lane300_2 = __lanes.lanes(__lane300)[2];
+        let __lane305_2 = __lanes.lanes(__lane305)[2];
+        let __lane310_2 = __lanes.lanes(__lane310)[2];
+        let __lane314_2 = __lanes.lanes(__lane314)[2];
+        let __lane323_2 = __lanes.lanes(__lane323)[2];
+        let __lane332_2 = __lanes.lanes(__lane332)[2];
+        let __lane341_2 = __lanes.lanes(__lane341)[2];
+        let __lane346_2 = __lanes.lanes(__lane346)[2];
+        let __lane351_2 = __lanes.lanes(__lane351)[2];
+        let __lane356_2 = __lanes.lanes(__lane356)[2];
+        let __lane361_2 = __lanes.lanes(__lane361)[2];
+        let __lane366_2 = __lanes.lanes(__lane366)[2];
+        let __lane371_2 = __lanes.lanes(__lane371)[2];
+        let __lane70_3 = __lanes.lanes(__lane70)[3];
+        let __lane73_3 = __lanes.lanes(__lane73)[3];
+        let __lane80_3 = __lanes.lanes(__lane80)[3];
+        let __lane87_3 = __lanes.lanes(__lane87)[3];
+        let __lane94_3 = __lanes.lanes(__lane94)[3];
+        let __lane99_3 = __lanes.lanes(__lane99)[3];
+        let __lane104_3 = __lanes.lanes(__lane104)[3];
+        let __lane109_3 = __lanes.lanes(__lane109)[3];
+        let __lane114_3 = __lanes.lanes(__lane114)[3];
+        let __lane119_3 = __lanes.lanes(__lane119)[3];
+        let __lane124_3 = __lanes.lanes(__lane124)[3];
+        let __lane129_3 = __lanes.lanes(__lane129)[3];
+        let __lane138_3 = __lanes.lanes(__lane138)[3];
+        let __lane147_3 = __lanes.lanes(__lane147)[3];
+        let __lane156_3 = __lanes.lanes(__lane156)[3];
+        let __lane161_3 = __lanes.lanes(__lane161)[3];
+        let __lane166_3 = __lanes.lanes(__lane166)[3];
+        let __lane171_3 = __lanes.lanes(__lane171)[3];
+        let __lane176_3 = __lanes.lanes(__lane176)[3];
+        let __lane181_3 = __lanes.lanes(__lane181)[3];
+        let __lane186_3 = __lanes.lanes(__lane186)[3];
+        let __lane191_3 = __lanes.lanes(__lane191)[3];
+        let __lane200_3 = __lanes.lanes(__lane200)[3];
+        let __lane209_3 = __lanes.lanes(__lane209)[3];
+        let __lane218_3 = __lanes.lanes(__lane218)[3];
+        let __lane223_3 = __lanes.lanes(__lane223)[3];
+        let __lane228_3 = __lanes.lanes(__lane228)[3];
+        let __lane233_3 = __lanes.lanes(__lane233)[3];
+        let __lane238_3 = __lanes.lanes(__lane238)[3];
+        let __lane243_3 = __lanes.lanes(__lane243)[3];
+        let __lane248_3 = __lanes.lanes(__lane248)[3];
+        let __lane253_3 = __lanes.lanes(__lane253)[3];
+        let __lane262_3 = __lanes.lanes(__lane262)[3];
+        let __lane271_3 = __lanes.lanes(__lane271)[3];
+        let __lane280_3 = __lanes.lanes(__lane280)[3];
+        let __lane285_3 = __lanes.lanes(__lane285)[3];
+        let __lane290_3 = __lanes.lanes(__lane290)[3];
+        let __lane295_3 = __lanes.lanes(__lane295)[3];
+        let __lane300_3 = __lanes.lanes(__lane300)[3];
+        let __lane305_3 = __lanes.lanes(__lane305)[3];
+        let __lane310_3 = __lanes.lanes(__lane310)[3];
+        let __lane314_3 = __lanes.lanes(__lane314)[3];
+        let __lane323_3 = __lanes.lanes(__lane323)[3];
+        let __lane332_3 = __lanes.lanes(__lane332)[3];
+        let __lane341_3 = __lanes.lanes(__lane341)[3];
+        let __lane346_3 = __lanes.lanes(__lane346)[3];
+        let __lane351_3 = __lanes.lanes(__lane351)[3];
+        let __lane356_3 = __lanes.lanes(__lane356)[3];
+        let __lane361_3 = __lanes.lanes(__lane361)[3];
+        let __lane366_3 = __lanes.lanes(__lane366)[3];
+        let __lane371_3 = __lanes.lanes(__lane371)[3];
+        let __lane375_0 = __lanes.lanes(__lane375)[0];
+        let __lane376_0 = __lanes.lanes(__lane376)[0];
+        let __lane377_0 = __lanes.lanes(__lane377)[0];
+        let __lane378_0 = __lanes.lanes(__lane378)[0];
+        let __lane379_0 = __lanes.lanes(__lane379)[0];
+        let __lane380_0 = __lanes.lanes(__lane380)[0];
+        let __lane381_0 = __lanes.lanes(__lane381)[0];
+        let __lane382_0 = __lanes.lanes(__lane382)[0];
+        let __lane385_0 = __lanes.lanes(__lane385)[0];
+        let __lane388_0 = __lanes.lanes(__lane388)[0];
+        let __lane391_0 = __lanes.lanes(__lane391)[0];
+        let __lane396_0 = __lanes.lanes(__lane396)[0];
+        let __lane401_0 = __lanes.lanes(__lane401)[0];
+        let __lane406_0 = __lanes.lanes(__lane406)[0];
+        let __lane411_0 = __lanes.lanes(__lane411)[0];
+        let __lane416_0 = __lanes.lanes(__lane416)[0];
+        let __lane421_0 = __lanes.lanes(__lane421)[0];
+        let __lane375_1 = __lanes.lanes(__lane375)[1];
+        let __lane376_1 = __lanes.lanes(__lane376)[1];
+        let __lane377_1 = __lanes.lanes(__lane377)[1];
+        let __lane378_1 = __lanes.lanes(__lane378)[1];
+        let __lane379_1 = __lanes.lanes(__lane379)[1];
+        let __lane380_1 = __lanes.lanes(__lane380)[1];
+        let __lane381_1 = __lanes.lanes(__lane381)[1];
+        let __lane382_1 = __lanes.lanes(__lane382)[1];
+        let __lane385_1 = __lanes.lanes(__lane385)[1];
+        let __lane388_1 = __lanes.lanes(__lane388)[1];
+        let __lane391_1 = __lanes.lanes(__lane391)[1];
+        let __lane396_1 = __lanes.lanes(__lane396)[1];
+        let __lane401_1 = __lanes.lanes(__lane401)[1];
+        let __lane406_1 = __lanes.lanes(__lane406)[1];
+        let __lane411_1 = __lanes.lanes(__lane411)[1];
+        let __lane416_1 = __lanes.lanes(__lane416)[1];
+        let __lane421_1 = __lanes.lanes(__lane421)[1];
+        ::planar_arm::__private::columns([
+            [
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [__lane70_0, __lane70_1, __lane70_2, __lane70_3, __lane_zero, __lane_zero],
+            [
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [__lane73_0, __lane73_1, __lane73_2, __lane73_3, __lane_zero, __lane_zero],
+            [__lane80_0, __lane80_1, __lane80_2, __lane80_3, __lane_zero, __lane_zero],
+            [__lane87_0, __lane87_1, __lane87_2, __lane87_3, __lane_zero, __lane_zero],
+            [__lane94_0, __lane94_1, __lane94_2, __lane94_3, __lane_zero, __lane_zero],
+            [__lane99_0, __lane99_1, __lane99_2, __lane99_3, __lane_zero, __lane_zero],
+            [
+                __lane104_0,
+                __lane104_1,
+                __lane104_2,
+                __lane104_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane109_0,
+                __lane109_1,
+                __lane109_2,
+                __lane109_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane114_0,
+                __lane114_1,
+                __lane114_2,
+                __lane114_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane119_0,
+                __lane119_1,
+                __lane119_2,
+                __lane119_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane124_0,
+                __lane124_1,
+                __lane124_2,
+                __lane124_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane129_0,
+                __lane129_1,
+                __lane129_2,
+                __lane129_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane138_0,
+                __lane138_1,
+                __lane138_2,
+                __lane138_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane147_0,
+                __lane147_1,
+                __lane147_2,
+                __lane147_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane156_0,
+                __lane156_1,
+                __lane156_2,
+                __lane156_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane161_0,
+                __lane161_1,
+                __lane161_2,
+                __lane161_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane166_0,
+                __lane166_1,
+                __lane166_2,
+                __lane166_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane171_0,
+                __lane171_1,
+                __lane171_2,
+                __lane171_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane176_0,
+                __lane176_1,
+                __lane176_2,
+                __lane176_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane181_0,
+                __lane181_1,
+                __lane181_2,
+                __lane181_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane186_0,
+                __lane186_1,
+                __lane186_2,
+                __lane186_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane191_0,
+                __lane191_1,
+                __lane191_2,
+                __lane191_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane200_0,
+                __lane200_1,
+                __lane200_2,
+                __lane200_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane209_0,
+                __lane209_1,
+                __lane209_2,
+                __lane209_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane218_0,
+                __lane218_1,
+                __lane218_2,
+                __lane218_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane223_0,
+                __lane223_1,
+                __lane223_2,
+                __lane223_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane228_0,
+                __lane228_1,
+                __lane228_2,
+                __lane228_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane233_0,
+                __lane233_1,
+                __lane233_2,
+                __lane233_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane238_0,
+                __lane238_1,
+                __lane238_2,
+                __lane238_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane243_0,
+                __lane243_1,
+                __lane243_2,
+                __lane243_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane248_0,
+                __lane248_1,
+                __lane248_2,
+                __lane248_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane253_0,
+                __lane253_1,
+                __lane253_2,
+                __lane253_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane262_0,
+                __lane262_1,
+                __lane262_2,
+                __lane262_3,
+                __lane375_0,
+                __lane375_1,
+            ],
+            [
+                __lane271_0,
+                __lane271_1,
+                __lane271_2,
+                __lane271_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane280_0,
+                __lane280_1,
+                __lane280_2,
+                __lane280_3,
+                __lane376_0,
+                __lane376_1,
+            ],
+            [
+                __lane285_0,
+                __lane285_1,
+                __lane285_2,
+                __lane285_3,
+                __lane377_0,
+                __lane377_1,
+            ],
+            [
+                __lane290_0,
+                __lane290_1,
+                __lane290_2,
+                __lane290_3,
+                __lane378_0,
+                __lane378_1,
+            ],
+            [
+                __lane295_0,
+                __lane295_1,
+                __lane295_2,
+                __lane295_3,
+                __lane379_0,
+                __lane379_1,
+            ],
+            [
+                __lane300_0,
+                __lane300_1,
+                __lane300_2,
+                __lane300_3,
+                __lane380_0,
+                __lane380_1,
+            ],
+            [
+                __lane305_0,
+                __lane305_1,
+                __lane305_2,
+                __lane305_3,
+                __lane381_0,
+                __lane381_1,
+            ],
+            [
+                __lane310_0,
+                __lane310_1,
+                __lane310_2,
+                __lane310_3,
+                __lane382_0,
+                __lane382_1,
+            ],
+            [
+                __lane314_0,
+                __lane314_1,
+                __lane314_2,
+                __lane314_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane323_0,
+                __lane323_1,
+                __lane323_2,
+                __lane323_3,
+                __lane385_0,
+                __lane385_1,
+            ],
+            [
+                __lane332_0,
+                __lane332_1,
+                __lane332_2,
+                __lane332_3,
+                __lane388_0,
+                __lane388_1,
+            ],
+            [
+                __lane341_0,
+                __lane341_1,
+                __lane341_2,
+                __lane341_3,
+                __lane391_0,
+                __lane391_1,
+            ],
+            [
+                __lane346_0,
+                __lane346_1,
+                __lane346_2,
+                __lane346_3,
+                __lane396_0,
+                __lane396_1,
+            ],
+            [
+                __lane351_0,
+                __lane351_1,
+                __lane351_2,
+                __lane351_3,
+                __lane401_0,
+                __lane401_1,
+            ],
+            [
+                __lane356_0,
+                __lane356_1,
+                __lane356_2,
+                __lane356_3,
+                __lane406_0,
+                __lane406_1,
+            ],
+            [
+                __lane361_0,
+                __lane361_1,
+                __lane361_2,
+                __lane361_3,
+                __lane411_0,
+                __lane411_1,
+            ],
+            [
+                __lane366_0,
+                __lane366_1,
+                __lane366_2,
+                __lane366_3,
+                __lane416_0,
+                __lane416_1,
+            ],
+            [
+                __lane371_0,
+                __lane371_1,
+                __lane371_2,
+                __lane371_3,
+                __lane421_0,
+                __lane421_1,
+            ],
+        ])
+    }
     /**The arm's standard parameters now (run-time parameters read from their fields). The standard parameters, in column order: per link, in Pinocchio's order, the mass `m` (kg), the first moments `mx`, `my`, `mz` (m c in the link's frame, kg m) and the inertia about the link frame's origin in its axes `xx`, `xy`, `yy`, `xz`, `yz`, `zz` (kg m^2); per joint that has them armature `ia`, damping `fv` and Coulomb friction `fc`; then the payload's ten in the tool frame (`mp`, ..., `zzp`):
 
 1. `m1`
@@ -5884,9 +7248,29 @@ Cost: 0 multiplications, 0 additions, 0 divisions, 0 sin_cos pairs.*/
 
 the recursive Newton-Euler algorithm unrolled, each link in its own frame, the joints' constant transformations folded in: once per standard parameter, that parameter one and the others zero (the forces are linear in them), the motion of the links shared
 
-Cost: 464 multiplications, 398 additions, 0 divisions, 5 sin_cos pairs.*/
+Cost: 464 multiplications, 398 additions, 0 divisions, 5 sin_cos pairs; where the processor has AVX2, 141 multiplications, 177 additions, 0 divisions, 5 sin_cos pairs on scalars and 324 four-lane operations.*/
     #[inline]
     fn base_regressor(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+        __qdd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+    ) -> ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 6, 36> {
+        ::planar_arm::__private::dispatch(::planar_arm::__private::BaseRegressor::<
+            Self,
+            6,
+            60,
+            36,
+        > {
+            arm: self,
+            q: __q,
+            qd: __qd,
+            qdd: __qdd,
+        })
+    }
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __base_regressor_kernel(
         &self,
         __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
         __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
@@ -6270,6 +7654,979 @@ Cost: 464 multiplications, 398 additions, 0 divisions, 5 sin_cos pairs.*/
             [__y1_34, __y2_34, __y2_34, __y4_34, __y5_34, __y6_34],
             [__y1_35, __y2_35, __y2_35, __y4_35, __y5_35, __y6_35],
             [__y1_36, __y2_36, __y2_36, __y4_36, __y5_36, __y6_36],
+        ])
+    }
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __base_regressor_packed<__L: ::planar_arm::__private::Lanes>(
+        &self,
+        __lanes: __L,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+        __qdd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+    ) -> ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 6, 36> {
+        let [_, __q2, __q3, __q4, __q5, __q6] = ::planar_arm::__private::unpack(__q);
+        let [__qd1, __qd2, __qd3, __qd4, __qd5, __qd6] = ::planar_arm::__private::unpack(
+            __qd,
+        );
+        let [__qdd1, __qdd2, __qdd3, __qdd4, __qdd5, __qdd6] = ::planar_arm::__private::unpack(
+            __qdd,
+        );
+        let [(__s2, __c2), (__s3, __c3), (__s4, __c4), (__s5, __c5), (__s6, __c6)] = ::planar_arm::__private::sin_cos([
+            __q2,
+            __q3,
+            __q4,
+            __q5,
+            __q6,
+        ]);
+        let __v5 = -__s3;
+        let __v10 = -__s4;
+        let __v13 = -__s5;
+        let __v16 = -__s6;
+        let __t1 = __s2 * __qd1;
+        let __t2 = __c2 * __qd1;
+        let __v37 = __qd2 * __t2;
+        let __v26 = __qd2 * __t1;
+        let __v38 = -__v26;
+        let __v25 = __s2 * __qdd1 + __v37;
+        let __t3 = __c2 * __qdd1 - __v26;
+        let __t4 = (2159.0 / 5000.0) * __qd2;
+        let __t5 = -((2159.0 / 5000.0) * __t2);
+        let __v23 = __t1 * __t4 - (2159.0 / 5000.0) * __t3;
+        let __t6 = (981.0 / 100.0) * __s2 + __t2 * __t5 - __qd2 * __t4;
+        let __v20 = (981.0 / 100.0) * __c2 + (2159.0 / 5000.0) * __qdd2 - __t1 * __t5;
+        let __v19 = -__v23;
+        let __t7 = __c3 * __t1 + __s3 * __t2;
+        let __t8 = __v5 * __t1 + __c3 * __t2;
+        let __t9 = -__qd2;
+        let __t10 = -__qd3;
+        let __t11 = __t9 - __qd3;
+        let __t12 = -__qdd2 - __qdd3;
+        let __v45 = __c3 * __v25 + __s3 * __t3 - __t8 * __t10;
+        let __v59 = __v5 * __v25 + __c3 * __t3 + __t7 * __t10;
+        let __t13 = -((-(3001.0 / 20000.0)) * __t8);
+        let __t14 = (203.0 / 10000.0) * __t8;
+        let __t15 = (-(3001.0 / 20000.0)) * __t7 - (203.0 / 10000.0) * __t11;
+        let __t16 = __c3 * __t6 + __s3 * __v20 + __t11 * __t15 - __t8 * __t14
+            - (-(3001.0 / 20000.0)) * __v59;
+        let __v44 = __t8 * __t13 - __t7 * __t15 + (203.0 / 10000.0) * __v59 - __v23;
+        let __t17 = __v5 * __t6 + __c3 * __v20 + __t7 * __t14 - __t11 * __t13
+            + (-(3001.0 / 20000.0)) * __v45 - (203.0 / 10000.0) * __t12;
+        let __t18 = __c4 * __t7 + __s4 * __t11;
+        let __t19 = __v10 * __t7 + __c4 * __t11;
+        let __t20 = -__t19;
+        let __t21 = __t8 + __qd4;
+        let __t22 = __v59 + __qdd4;
+        let __v70 = __c4 * __v45 + __s4 * __t12 - __qd4 * __t20;
+        let __v84 = __qd4 * __t18 - (__v10 * __v45 + __c4 * __t12);
+        let __t23 = -((2159.0 / 5000.0) * __t20);
+        let __t24 = (2159.0 / 5000.0) * __t18;
+        let __t25 = __c4 * __t16 + __s4 * __v44 + __t21 * __t24
+            - (2159.0 / 5000.0) * __v84;
+        let __v64 = __t17 + __t20 * __t23 - __t18 * __t24;
+        let __v68 = (2159.0 / 5000.0) * __v70 - __t21 * __t23
+            - (__v10 * __t16 + __c4 * __v44);
+        let __v97 = __c5 * __t25 + __s5 * __v64;
+        let __v92 = __v13 * __t25 + __c5 * __v64;
+        let __v63 = -__v68;
+        let __t26 = __c5 * __t18 + __s5 * __t21;
+        let __t27 = __v13 * __t18 + __c5 * __t21;
+        let __t28 = -__qd5;
+        let __t29 = __t19 - __qd5;
+        let __v105 = -__v84 - __qdd5;
+        let __v98 = __c5 * __v70 + __s5 * __t22 - __t27 * __t28;
+        let __v115 = __v13 * __v70 + __c5 * __t22 + __t26 * __t28;
+        let __v119 = __v16 * __v97 + __c6 * __v63;
+        let __t30 = __c6 * __t26 + __s6 * __t29;
+        let __t31 = __v16 * __t26 + __c6 * __t29;
+        let __t32 = __t27 + __qd6;
+        let __v138 = __v115 + __qdd6;
+        let __v124 = __c6 * __v98 + __s6 * __v105 + __qd6 * __t31;
+        let __t33 = __v16 * __v98 + __c6 * __v105 - __qd6 * __t30;
+        let __t34 = __qd2 * __qd2;
+        let __v17 = __qdd2 - __t1 * (-__t2);
+        let __v18 = __v26 - __t3;
+        let __t35 = __t1 * __t2;
+        let __t36 = __t1 * __t1;
+        let __v21 = __qd2 * __t9 - __t36;
+        let __v22 = __v25 - __t2 * __t9;
+        let __v24 = -__t6;
+        let __v27 = -__t35;
+        let __t37 = __t2 * __t2;
+        let __v30 = __t36 - __t37;
+        let __v28 = __t3 - __v26;
+        let __v29 = __v37 + __v25;
+        let __v32 = __t34 - __t36;
+        let __v31 = __qdd2 + __t35;
+        let __v33 = __v25 - __v37;
+        let __v34 = __t37 - __t34;
+        let __v35 = __qdd2 - __t35;
+        let __v36 = __v26 + __t3;
+        let __t38 = -__t11;
+        let __t39 = __t8 * __t8;
+        let __v40 = __t11 * __t38 - __t39;
+        let __v46 = __t7 * __t8;
+        let __v41 = __v59 - __t7 * __t38;
+        let __v42 = __v46 - __t12;
+        let __v43 = -__t17;
+        let __t40 = __t7 * __t11;
+        let __v47 = -__t40;
+        let __v58 = -__v46;
+        let __v57 = __t8 * __t11;
+        let __t41 = __t7 * __t7;
+        let __t42 = __t11 * __t11;
+        let __v50 = __t41 - __t42;
+        let __v48 = __t12 - __v46;
+        let __v49 = __v45 + __v57;
+        let __v52 = __t39 - __t41;
+        let __v51 = __v59 + __t40;
+        let __v53 = __v45 - __v57;
+        let __v54 = __t42 - __t39;
+        let __v55 = __v59 - __t40;
+        let __v56 = __t12 + __v46;
+        let __t43 = -__t21;
+        let __t44 = __t20 * __t20;
+        let __v60 = __t21 * __t43 - __t44;
+        let __v71 = __t18 * __t20;
+        let __v61 = __v84 - __t18 * __t43;
+        let __v62 = __v71 - __t22;
+        let __t45 = __t18 * __t21;
+        let __t46 = __t18 * __t18;
+        let __v66 = __t19 * __t20 - __t46;
+        let __v65 = __t45 - __v84;
+        let __v67 = __v70 - __t19 * __t21;
+        let __v69 = -__t25;
+        let __v72 = -__t45;
+        let __v83 = -__v71;
+        let __v82 = __t20 * __t21;
+        let __t47 = __t21 * __t21;
+        let __v75 = __t46 - __t47;
+        let __v73 = __t22 - __v71;
+        let __v74 = __v70 + __v82;
+        let __v77 = __t44 - __t46;
+        let __v76 = __v84 + __t45;
+        let __v78 = __v70 - __v82;
+        let __v79 = __t47 - __t44;
+        let __v80 = __v84 - __t45;
+        let __v81 = __t22 + __v71;
+        let __t48 = -__t29;
+        let __t49 = __t27 * __t27;
+        let __v85 = __t29 * __t48 - __t49;
+        let __v99 = __t26 * __t27;
+        let __v86 = __v115 - __t26 * __t48;
+        let __v87 = __v99 - __v105;
+        let __v88 = -__v92;
+        let __t50 = -__t27;
+        let __v106 = __t26 * __t29;
+        let __t51 = __t26 * __t26;
+        let __v90 = __t27 * __t50 - __t51;
+        let __v89 = __v106 - __v115;
+        let __v91 = __v98 - __t29 * __t50;
+        let __v93 = -__v97;
+        let __t52 = -__t26;
+        let __v113 = __t27 * __t29;
+        let __t53 = __t29 * __t29;
+        let __v96 = __t26 * __t52 - __t53;
+        let __v94 = __v105 - __t27 * __t52;
+        let __v95 = __v113 - __v98;
+        let __v100 = -__v106;
+        let __v114 = -__v99;
+        let __v103 = __t51 - __t53;
+        let __v101 = __v105 - __v99;
+        let __v102 = __v98 + __v113;
+        let __v104 = -__v113;
+        let __v108 = __t49 - __t51;
+        let __v107 = __v115 + __v106;
+        let __v109 = __v98 - __v113;
+        let __v110 = __t53 - __t49;
+        let __v111 = __v115 - __v106;
+        let __v112 = __v105 + __v99;
+        let __t54 = -__t31;
+        let __t55 = __t32 * __t32;
+        let __v116 = __t31 * __t54 - __t55;
+        let __v125 = __t30 * __t32;
+        let __v117 = __v138 - __t30 * __t54;
+        let __v118 = __v125 - __t33;
+        let __t56 = -__t32;
+        let __t57 = __t30 * __t31;
+        let __t58 = __t30 * __t30;
+        let __v121 = __t32 * __t56 - __t58;
+        let __v120 = __t57 - __v138;
+        let __v122 = __v124 - __t31 * __t56;
+        let __v123 = -(__c6 * __v97 + __s6 * __v63);
+        let __v126 = -__t57;
+        let __v137 = -__v125;
+        let __v136 = __t31 * __t32;
+        let __t59 = __t31 * __t31;
+        let __v129 = __t58 - __t59;
+        let __v127 = __t33 - __v125;
+        let __v128 = __v124 + __v136;
+        let __v131 = __t55 - __t58;
+        let __v130 = __v138 + __t57;
+        let __v132 = __v124 - __v136;
+        let __v133 = __t59 - __t55;
+        let __v134 = __v138 - __t57;
+        let __v135 = __t33 + __v125;
+        let __v2 = (2159.0 / 5000.0);
+        let __v6 = (-(3001.0 / 20000.0));
+        let __v7 = (203.0 / 10000.0);
+        let __lane0 = __lanes.constant([1.0, 0.0, 0.0, 0.0]);
+        let __lane1 = __lanes.constant([0.0, 1.0, 0.0, 0.0]);
+        let __lane2 = __lanes.mul(__lane0, __lanes.splat(__s2));
+        let __lane3 = __lanes.mul(__lane0, __lanes.splat(__c2));
+        let __lane4 = __lanes.mul(__lane1, __lanes.splat(__v2));
+        let __lane5 = __lanes.mul(__lane3, __lanes.splat(__v2));
+        let __lane6 = __lanes.neg(__lane5);
+        let __lane7 = __lanes.constant([0.0, 0.0, 1.0, 0.0]);
+        let __lane8 = __lanes.mul(__lane2, __lanes.splat(__c3));
+        let __lane9 = __lanes.mul(__lane3, __lanes.splat(__s3));
+        let __lane10 = __lanes.add(__lane8, __lane9);
+        let __lane11 = __lanes.mul(__lane2, __lanes.splat(__v5));
+        let __lane12 = __lanes.mul(__lane3, __lanes.splat(__c3));
+        let __lane13 = __lanes.add(__lane11, __lane12);
+        let __lane14 = __lanes.neg(__lane1);
+        let __lane15 = __lanes.mul(__lane4, __lanes.splat(__s3));
+        let __lane16 = __lanes.mul(__lane4, __lanes.splat(__c3));
+        let __lane17 = __lanes.sub(__lane14, __lane7);
+        let __lane18 = __lanes.mul(__lane13, __lanes.splat(__v6));
+        let __lane19 = __lanes.mul(__lane13, __lanes.splat(__v7));
+        let __lane20 = __lanes.mul(__lane10, __lanes.splat(__v6));
+        let __lane21 = __lanes.mul(__lane17, __lanes.splat(__v7));
+        let __lane22 = __lanes.sub(__lane20, __lane21);
+        let __lane23 = __lanes.sub(__lane15, __lane18);
+        let __lane24 = __lanes.add(__lane5, __lane19);
+        let __lane25 = __lanes.add(__lane16, __lane22);
+        let __lane26 = __lanes.constant([0.0, 0.0, 0.0, 1.0]);
+        let __lane27 = __lanes.mul(__lane10, __lanes.splat(__c4));
+        let __lane28 = __lanes.mul(__lane17, __lanes.splat(__s4));
+        let __lane29 = __lanes.add(__lane27, __lane28);
+        let __lane30 = __lanes.mul(__lane10, __lanes.splat(__v10));
+        let __lane31 = __lanes.mul(__lane17, __lanes.splat(__c4));
+        let __lane32 = __lanes.add(__lane30, __lane31);
+        let __lane33 = __lanes.neg(__lane32);
+        let __lane34 = __lanes.mul(__lane23, __lanes.splat(__c4));
+        let __lane35 = __lanes.mul(__lane24, __lanes.splat(__s4));
+        let __lane36 = __lanes.add(__lane34, __lane35);
+        let __lane37 = __lanes.mul(__lane23, __lanes.splat(__v10));
+        let __lane38 = __lanes.mul(__lane24, __lanes.splat(__c4));
+        let __lane39 = __lanes.add(__lane37, __lane38);
+        let __lane40 = __lanes.add(__lane13, __lane26);
+        let __lane41 = __lanes.mul(__lane33, __lanes.splat(__v2));
+        let __lane42 = __lanes.mul(__lane29, __lanes.splat(__v2));
+        let __lane43 = __lanes.sub(__lane36, __lane41);
+        let __lane44 = __lanes.sub(__lane42, __lane39);
+        let __lane45 = __lanes.mul(__lane29, __lanes.splat(__c5));
+        let __lane46 = __lanes.mul(__lane40, __lanes.splat(__s5));
+        let __lane47 = __lanes.add(__lane45, __lane46);
+        let __lane48 = __lanes.mul(__lane29, __lanes.splat(__v13));
+        let __lane49 = __lanes.mul(__lane40, __lanes.splat(__c5));
+        let __lane50 = __lanes.add(__lane48, __lane49);
+        let __lane51 = __lanes.mul(__lane43, __lanes.splat(__c5));
+        let __lane52 = __lanes.mul(__lane25, __lanes.splat(__s5));
+        let __lane53 = __lanes.add(__lane51, __lane52);
+        let __lane54 = __lanes.mul(__lane43, __lanes.splat(__v13));
+        let __lane55 = __lanes.mul(__lane25, __lanes.splat(__c5));
+        let __lane56 = __lanes.add(__lane54, __lane55);
+        let __lane57 = __lanes.neg(__lane44);
+        let __lane58 = __lanes.mul(__lane47, __lanes.splat(__c6));
+        let __lane59 = __lanes.mul(__lane32, __lanes.splat(__s6));
+        let __lane60 = __lanes.add(__lane58, __lane59);
+        let __lane61 = __lanes.mul(__lane47, __lanes.splat(__v16));
+        let __lane62 = __lanes.mul(__lane32, __lanes.splat(__c6));
+        let __lane63 = __lanes.add(__lane61, __lane62);
+        let __lane64 = __lanes.mul(__lane53, __lanes.splat(__c6));
+        let __lane65 = __lanes.mul(__lane57, __lanes.splat(__s6));
+        let __lane66 = __lanes.add(__lane64, __lane65);
+        let __lane67 = __lanes.mul(__lane53, __lanes.splat(__v16));
+        let __lane68 = __lanes.mul(__lane57, __lanes.splat(__c6));
+        let __lane69 = __lanes.add(__lane67, __lane68);
+        let __lane70 = __lanes.mul(__lane4, __lanes.splat(__v17));
+        let __lane71 = __lanes.mul(__lane6, __lanes.splat(__v18));
+        let __lane72 = __lanes.add(__lane70, __lane71);
+        let __lane73 = __lanes.mul(__lane3, __lanes.splat(__v19));
+        let __lane74 = __lanes.mul(__lane1, __lanes.splat(__v20));
+        let __lane75 = __lanes.add(__lane73, __lane74);
+        let __lane76 = __lanes.add(__lane72, __lane75);
+        let __lane77 = __lanes.mul(__lane4, __lanes.splat(__v21));
+        let __lane78 = __lanes.mul(__lane6, __lanes.splat(__v22));
+        let __lane79 = __lanes.add(__lane77, __lane78);
+        let __lane80 = __lanes.mul(__lane2, __lanes.splat(__v23));
+        let __lane81 = __lanes.mul(__lane1, __lanes.splat(__v24));
+        let __lane82 = __lanes.add(__lane80, __lane81);
+        let __lane83 = __lanes.add(__lane79, __lane82);
+        let __lane84 = __lanes.mul(__lane2, __lanes.splat(__v25));
+        let __lane85 = __lanes.mul(__lane3, __lanes.splat(__v26));
+        let __lane86 = __lanes.mul(__lane1, __lanes.splat(__v27));
+        let __lane87 = __lanes.add(__lane84, __lane85);
+        let __lane88 = __lanes.add(__lane86, __lane87);
+        let __lane89 = __lanes.mul(__lane2, __lanes.splat(__v28));
+        let __lane90 = __lanes.mul(__lane3, __lanes.splat(__v29));
+        let __lane91 = __lanes.mul(__lane1, __lanes.splat(__v30));
+        let __lane92 = __lanes.add(__lane89, __lane90);
+        let __lane93 = __lanes.add(__lane91, __lane92);
+        let __lane94 = __lanes.mul(__lane2, __lanes.splat(__v31));
+        let __lane95 = __lanes.mul(__lane3, __lanes.splat(__v32));
+        let __lane96 = __lanes.mul(__lane1, __lanes.splat(__v33));
+        let __lane97 = __lanes.add(__lane94, __lane95);
+        let __lane98 = __lanes.add(__lane96, __lane97);
+        let __lane99 = __lanes.mul(__lane2, __lanes.splat(__v34));
+        let __lane100 = __lanes.mul(__lane3, __lanes.splat(__v35));
+        let __lane101 = __lanes.mul(__lane1, __lanes.splat(__v36));
+        let __lane102 = __lanes.add(__lane99, __lane100);
+        let __lane103 = __lanes.add(__lane101, __lane102);
+        let __lane104 = __lanes.mul(__lane2, __lanes.splat(__v37));
+        let __lane105 = __lanes.mul(__lane3, __lanes.splat(__v38));
+        let __lane106 = __lanes.mul(__lane1, __lanes.splat(__qdd2));
+        let __lane107 = __lanes.add(__lane104, __lane105);
+        let __lane108 = __lanes.add(__lane106, __lane107);
+        let __lane109 = __lanes.mul(__lane23, __lanes.splat(__v40));
+        let __lane110 = __lanes.mul(__lane24, __lanes.splat(__v41));
+        let __lane111 = __lanes.mul(__lane25, __lanes.splat(__v42));
+        let __lane112 = __lanes.add(__lane109, __lane110);
+        let __lane113 = __lanes.add(__lane111, __lane112);
+        let __lane114 = __lanes.mul(__lane17, __lanes.splat(__v43));
+        let __lane115 = __lanes.mul(__lane13, __lanes.splat(__v44));
+        let __lane116 = __lanes.add(__lane114, __lane115);
+        let __lane117 = __lanes.add(__lane113, __lane116);
+        let __lane118 = __lanes.mul(__lane10, __lanes.splat(__v45));
+        let __lane119 = __lanes.mul(__lane17, __lanes.splat(__v46));
+        let __lane120 = __lanes.mul(__lane13, __lanes.splat(__v47));
+        let __lane121 = __lanes.add(__lane118, __lane119);
+        let __lane122 = __lanes.add(__lane120, __lane121);
+        let __lane123 = __lanes.mul(__lane10, __lanes.splat(__v48));
+        let __lane124 = __lanes.mul(__lane17, __lanes.splat(__v49));
+        let __lane125 = __lanes.mul(__lane13, __lanes.splat(__v50));
+        let __lane126 = __lanes.add(__lane123, __lane124);
+        let __lane127 = __lanes.add(__lane125, __lane126);
+        let __lane128 = __lanes.mul(__lane10, __lanes.splat(__v51));
+        let __lane129 = __lanes.mul(__lane17, __lanes.splat(__v52));
+        let __lane130 = __lanes.mul(__lane13, __lanes.splat(__v53));
+        let __lane131 = __lanes.add(__lane128, __lane129);
+        let __lane132 = __lanes.add(__lane130, __lane131);
+        let __lane133 = __lanes.mul(__lane10, __lanes.splat(__v54));
+        let __lane134 = __lanes.mul(__lane17, __lanes.splat(__v55));
+        let __lane135 = __lanes.mul(__lane13, __lanes.splat(__v56));
+        let __lane136 = __lanes.add(__lane133, __lane134);
+        let __lane137 = __lanes.add(__lane135, __lane136);
+        let __lane138 = __lanes.mul(__lane10, __lanes.splat(__v57));
+        let __lane139 = __lanes.mul(__lane17, __lanes.splat(__v58));
+        let __lane140 = __lanes.mul(__lane13, __lanes.splat(__v59));
+        let __lane141 = __lanes.add(__lane138, __lane139);
+        let __lane142 = __lanes.add(__lane140, __lane141);
+        let __lane143 = __lanes.mul(__lane43, __lanes.splat(__v60));
+        let __lane144 = __lanes.mul(__lane25, __lanes.splat(__v61));
+        let __lane145 = __lanes.mul(__lane44, __lanes.splat(__v62));
+        let __lane146 = __lanes.add(__lane143, __lane144);
+        let __lane147 = __lanes.add(__lane145, __lane146);
+        let __lane148 = __lanes.mul(__lane40, __lanes.splat(__v63));
+        let __lane149 = __lanes.mul(__lane33, __lanes.splat(__v64));
+        let __lane150 = __lanes.add(__lane148, __lane149);
+        let __lane151 = __lanes.add(__lane147, __lane150);
+        let __lane152 = __lanes.mul(__lane43, __lanes.splat(__v65));
+        let __lane153 = __lanes.mul(__lane25, __lanes.splat(__v66));
+        let __lane154 = __lanes.mul(__lane44, __lanes.splat(__v67));
+        let __lane155 = __lanes.add(__lane152, __lane153);
+        let __lane156 = __lanes.add(__lane154, __lane155);
+        let __lane157 = __lanes.mul(__lane29, __lanes.splat(__v68));
+        let __lane158 = __lanes.mul(__lane33, __lanes.splat(__v69));
+        let __lane159 = __lanes.add(__lane157, __lane158);
+        let __lane160 = __lanes.add(__lane156, __lane159);
+        let __lane161 = __lanes.mul(__lane29, __lanes.splat(__v70));
+        let __lane162 = __lanes.mul(__lane40, __lanes.splat(__v71));
+        let __lane163 = __lanes.mul(__lane33, __lanes.splat(__v72));
+        let __lane164 = __lanes.add(__lane161, __lane162);
+        let __lane165 = __lanes.add(__lane163, __lane164);
+        let __lane166 = __lanes.mul(__lane29, __lanes.splat(__v73));
+        let __lane167 = __lanes.mul(__lane40, __lanes.splat(__v74));
+        let __lane168 = __lanes.mul(__lane33, __lanes.splat(__v75));
+        let __lane169 = __lanes.add(__lane166, __lane167);
+        let __lane170 = __lanes.add(__lane168, __lane169);
+        let __lane171 = __lanes.mul(__lane29, __lanes.splat(__v76));
+        let __lane172 = __lanes.mul(__lane40, __lanes.splat(__v77));
+        let __lane173 = __lanes.mul(__lane33, __lanes.splat(__v78));
+        let __lane174 = __lanes.add(__lane171, __lane172);
+        let __lane175 = __lanes.add(__lane173, __lane174);
+        let __lane176 = __lanes.mul(__lane29, __lanes.splat(__v79));
+        let __lane177 = __lanes.mul(__lane40, __lanes.splat(__v80));
+        let __lane178 = __lanes.mul(__lane33, __lanes.splat(__v81));
+        let __lane179 = __lanes.add(__lane176, __lane177);
+        let __lane180 = __lanes.add(__lane178, __lane179);
+        let __lane181 = __lanes.mul(__lane29, __lanes.splat(__v82));
+        let __lane182 = __lanes.mul(__lane40, __lanes.splat(__v83));
+        let __lane183 = __lanes.mul(__lane33, __lanes.splat(__v84));
+        let __lane184 = __lanes.add(__lane181, __lane182);
+        let __lane185 = __lanes.add(__lane183, __lane184);
+        let __lane186 = __lanes.mul(__lane53, __lanes.splat(__v85));
+        let __lane187 = __lanes.mul(__lane57, __lanes.splat(__v86));
+        let __lane188 = __lanes.mul(__lane56, __lanes.splat(__v87));
+        let __lane189 = __lanes.add(__lane186, __lane187);
+        let __lane190 = __lanes.add(__lane188, __lane189);
+        let __lane191 = __lanes.mul(__lane32, __lanes.splat(__v88));
+        let __lane192 = __lanes.mul(__lane50, __lanes.splat(__v63));
+        let __lane193 = __lanes.add(__lane191, __lane192);
+        let __lane194 = __lanes.add(__lane190, __lane193);
+        let __lane195 = __lanes.mul(__lane53, __lanes.splat(__v89));
+        let __lane196 = __lanes.mul(__lane57, __lanes.splat(__v90));
+        let __lane197 = __lanes.mul(__lane56, __lanes.splat(__v91));
+        let __lane198 = __lanes.add(__lane195, __lane196);
+        let __lane199 = __lanes.add(__lane197, __lane198);
+        let __lane200 = __lanes.mul(__lane47, __lanes.splat(__v92));
+        let __lane201 = __lanes.mul(__lane50, __lanes.splat(__v93));
+        let __lane202 = __lanes.add(__lane200, __lane201);
+        let __lane203 = __lanes.add(__lane199, __lane202);
+        let __lane204 = __lanes.mul(__lane53, __lanes.splat(__v94));
+        let __lane205 = __lanes.mul(__lane57, __lanes.splat(__v95));
+        let __lane206 = __lanes.mul(__lane56, __lanes.splat(__v96));
+        let __lane207 = __lanes.add(__lane204, __lane205);
+        let __lane208 = __lanes.add(__lane206, __lane207);
+        let __lane209 = __lanes.mul(__lane47, __lanes.splat(__v68));
+        let __lane210 = __lanes.mul(__lane32, __lanes.splat(__v97));
+        let __lane211 = __lanes.add(__lane209, __lane210);
+        let __lane212 = __lanes.add(__lane208, __lane211);
+        let __lane213 = __lanes.mul(__lane47, __lanes.splat(__v98));
+        let __lane214 = __lanes.mul(__lane32, __lanes.splat(__v99));
+        let __lane215 = __lanes.mul(__lane50, __lanes.splat(__v100));
+        let __lane216 = __lanes.add(__lane213, __lane214);
+        let __lane217 = __lanes.add(__lane215, __lane216);
+        let __lane218 = __lanes.mul(__lane47, __lanes.splat(__v101));
+        let __lane219 = __lanes.mul(__lane32, __lanes.splat(__v102));
+        let __lane220 = __lanes.mul(__lane50, __lanes.splat(__v103));
+        let __lane221 = __lanes.add(__lane218, __lane219);
+        let __lane222 = __lanes.add(__lane220, __lane221);
+        let __lane223 = __lanes.mul(__lane47, __lanes.splat(__v104));
+        let __lane224 = __lanes.mul(__lane32, __lanes.splat(__v105));
+        let __lane225 = __lanes.mul(__lane50, __lanes.splat(__v106));
+        let __lane226 = __lanes.add(__lane223, __lane224);
+        let __lane227 = __lanes.add(__lane225, __lane226);
+        let __lane228 = __lanes.mul(__lane47, __lanes.splat(__v107));
+        let __lane229 = __lanes.mul(__lane32, __lanes.splat(__v108));
+        let __lane230 = __lanes.mul(__lane50, __lanes.splat(__v109));
+        let __lane231 = __lanes.add(__lane228, __lane229);
+        let __lane232 = __lanes.add(__lane230, __lane231);
+        let __lane233 = __lanes.mul(__lane47, __lanes.splat(__v110));
+        let __lane234 = __lanes.mul(__lane32, __lanes.splat(__v111));
+        let __lane235 = __lanes.mul(__lane50, __lanes.splat(__v112));
+        let __lane236 = __lanes.add(__lane233, __lane234);
+        let __lane237 = __lanes.add(__lane235, __lane236);
+        let __lane238 = __lanes.mul(__lane47, __lanes.splat(__v113));
+        let __lane239 = __lanes.mul(__lane32, __lanes.splat(__v114));
+        let __lane240 = __lanes.mul(__lane50, __lanes.splat(__v115));
+        let __lane241 = __lanes.add(__lane238, __lane239);
+        let __lane242 = __lanes.add(__lane240, __lane241);
+        let __lane243 = __lanes.mul(__lane66, __lanes.splat(__v116));
+        let __lane244 = __lanes.mul(__lane69, __lanes.splat(__v117));
+        let __lane245 = __lanes.mul(__lane56, __lanes.splat(__v118));
+        let __lane246 = __lanes.add(__lane243, __lane244);
+        let __lane247 = __lanes.add(__lane245, __lane246);
+        let __lane248 = __lanes.mul(__lane63, __lanes.splat(__v88));
+        let __lane249 = __lanes.mul(__lane50, __lanes.splat(__v119));
+        let __lane250 = __lanes.add(__lane248, __lane249);
+        let __lane251 = __lanes.add(__lane247, __lane250);
+        let __lane252 = __lanes.mul(__lane66, __lanes.splat(__v120));
+        let __lane253 = __lanes.mul(__lane69, __lanes.splat(__v121));
+        let __lane254 = __lanes.mul(__lane56, __lanes.splat(__v122));
+        let __lane255 = __lanes.add(__lane252, __lane253);
+        let __lane256 = __lanes.add(__lane254, __lane255);
+        let __lane257 = __lanes.mul(__lane60, __lanes.splat(__v92));
+        let __lane258 = __lanes.mul(__lane50, __lanes.splat(__v123));
+        let __lane259 = __lanes.add(__lane257, __lane258);
+        let __lane260 = __lanes.add(__lane256, __lane259);
+        let __lane261 = __lanes.mul(__lane60, __lanes.splat(__v124));
+        let __lane262 = __lanes.mul(__lane63, __lanes.splat(__v125));
+        let __lane263 = __lanes.mul(__lane50, __lanes.splat(__v126));
+        let __lane264 = __lanes.add(__lane261, __lane262);
+        let __lane265 = __lanes.add(__lane263, __lane264);
+        let __lane266 = __lanes.mul(__lane60, __lanes.splat(__v127));
+        let __lane267 = __lanes.mul(__lane63, __lanes.splat(__v128));
+        let __lane268 = __lanes.mul(__lane50, __lanes.splat(__v129));
+        let __lane269 = __lanes.add(__lane266, __lane267);
+        let __lane270 = __lanes.add(__lane268, __lane269);
+        let __lane271 = __lanes.mul(__lane60, __lanes.splat(__v130));
+        let __lane272 = __lanes.mul(__lane63, __lanes.splat(__v131));
+        let __lane273 = __lanes.mul(__lane50, __lanes.splat(__v132));
+        let __lane274 = __lanes.add(__lane271, __lane272);
+        let __lane275 = __lanes.add(__lane273, __lane274);
+        let __lane276 = __lanes.mul(__lane60, __lanes.splat(__v133));
+        let __lane277 = __lanes.mul(__lane63, __lanes.splat(__v134));
+        let __lane278 = __lanes.mul(__lane50, __lanes.splat(__v135));
+        let __lane279 = __lanes.add(__lane276, __lane277);
+        let __lane280 = __lanes.add(__lane278, __lane279);
+        let __lane281 = __lanes.mul(__lane60, __lanes.splat(__v136));
+        let __lane282 = __lanes.mul(__lane63, __lanes.splat(__v137));
+        let __lane283 = __lanes.mul(__lane50, __lanes.splat(__v138));
+        let __lane284 = __lanes.add(__lane281, __lane282);
+        let __lane285 = __lanes.add(__lane283, __lane284);
+        let __lane286 = __lanes.neg(__lane0);
+        let __lane287 = __lanes.mul(__lane286, __lanes.splat(__s6));
+        let __lane288 = __lanes.mul(__lane286, __lanes.splat(__c6));
+        let __lane289 = __lanes.mul(__lane286, __lanes.splat(__v88));
+        let __lane290 = __lanes.mul(__lane286, __lanes.splat(__v97));
+        let __lane291 = __lanes.mul(__lane286, __lanes.splat(__v99));
+        let __lane292 = __lanes.mul(__lane286, __lanes.splat(__v102));
+        let __lane293 = __lanes.mul(__lane286, __lanes.splat(__v105));
+        let __lane294 = __lanes.mul(__lane286, __lanes.splat(__v108));
+        let __lane295 = __lanes.mul(__lane286, __lanes.splat(__v111));
+        let __lane296 = __lanes.mul(__lane286, __lanes.splat(__v114));
+        let __lane297 = __lanes.mul(__lane288, __lanes.splat(__v88));
+        let __lane298 = __lanes.mul(__lane1, __lanes.splat(__v119));
+        let __lane299 = __lanes.add(__lane297, __lane298);
+        let __lane300 = __lanes.mul(__lane287, __lanes.splat(__v92));
+        let __lane301 = __lanes.mul(__lane1, __lanes.splat(__v123));
+        let __lane302 = __lanes.add(__lane300, __lane301);
+        let __lane303 = __lanes.mul(__lane287, __lanes.splat(__v124));
+        let __lane304 = __lanes.mul(__lane288, __lanes.splat(__v125));
+        let __lane305 = __lanes.mul(__lane1, __lanes.splat(__v126));
+        let __lane306 = __lanes.add(__lane303, __lane304);
+        let __lane307 = __lanes.add(__lane305, __lane306);
+        let __lane308 = __lanes.mul(__lane287, __lanes.splat(__v127));
+        let __lane309 = __lanes.mul(__lane288, __lanes.splat(__v128));
+        let __lane310 = __lanes.mul(__lane1, __lanes.splat(__v129));
+        let __lane311 = __lanes.add(__lane308, __lane309);
+        let __lane312 = __lanes.add(__lane310, __lane311);
+        let __lane313 = __lanes.mul(__lane287, __lanes.splat(__v130));
+        let __lane314 = __lanes.mul(__lane288, __lanes.splat(__v131));
+        let __lane315 = __lanes.mul(__lane1, __lanes.splat(__v132));
+        let __lane316 = __lanes.add(__lane313, __lane314);
+        let __lane317 = __lanes.add(__lane315, __lane316);
+        let __lane318 = __lanes.mul(__lane287, __lanes.splat(__v133));
+        let __lane319 = __lanes.mul(__lane288, __lanes.splat(__v134));
+        let __lane320 = __lanes.mul(__lane1, __lanes.splat(__v135));
+        let __lane321 = __lanes.add(__lane318, __lane319);
+        let __lane322 = __lanes.add(__lane320, __lane321);
+        let __lane323 = __lanes.mul(__lane287, __lanes.splat(__v136));
+        let __lane324 = __lanes.mul(__lane288, __lanes.splat(__v137));
+        let __lane325 = __lanes.mul(__lane1, __lanes.splat(__v138));
+        let __lane326 = __lanes.add(__lane323, __lane324);
+        let __lane327 = __lanes.add(__lane325, __lane326);
+        let __lane76_0 = __lanes.lanes(__lane76)[0];
+        let __lane83_0 = __lanes.lanes(__lane83)[0];
+        let __lane88_0 = __lanes.lanes(__lane88)[0];
+        let __lane93_0 = __lanes.lanes(__lane93)[0];
+        let __lane98_0 = __lanes.lanes(__lane98)[0];
+        let __lane103_0 = __lanes.lanes(__lane103)[0];
+        let __lane108_0 = __lanes.lanes(__lane108)[0];
+        let __lane117_0 = __lanes.lanes(__lane117)[0];
+        let __lane122_0 = __lanes.lanes(__lane122)[0];
+        let __lane127_0 = __lanes.lanes(__lane127)[0];
+        let __lane132_0 = __lanes.lanes(__lane132)[0];
+        let __lane137_0 = __lanes.lanes(__lane137)[0];
+        let __lane142_0 = __lanes.lanes(__lane142)[0];
+        let __lane151_0 = __lanes.lanes(__lane151)[0];
+        let __lane160_0 = __lanes.lanes(__lane160)[0];
+        let __lane165_0 = __lanes.lanes(__lane165)[0];
+        let __lane170_0 = __lanes.lanes(__lane170)[0];
+        let __lane175_0 = __lanes.lanes(__lane175)[0];
+        let __lane180_0 = __lanes.lanes(__lane180)[0];
+        let __lane185_0 = __lanes.lanes(__lane185)[0];
+        let __lane194_0 = __lanes.lanes(__lane194)[0];
+        let __lane203_0 = __lanes.lanes(__lane203)[0];
+        let __lane212_0 = __lanes.lanes(__lane212)[0];
+        let __lane217_0 = __lanes.lanes(__lane217)[0];
+        let __lane222_0 = __lanes.lanes(__lane222)[0];
+        let __lane227_0 = __lanes.lanes(__lane227)[0];
+        let __lane232_0 = __lanes.lanes(__lane232)[0];
+        let __lane237_0 = __lanes.lanes(__lane237)[0];
+        let __lane242_0 = __lanes.lanes(__lane242)[0];
+        let __lane251_0 = __lanes.lanes(__lane251)[0];
+        let __lane260_0 = __lanes.lanes(__lane260)[0];
+        let __lane265_0 = __lanes.lanes(__lane265)[0];
+        let __lane270_0 = __lanes.lanes(__lane270)[0];
+        let __lane275_0 = __lanes.lanes(__lane275)[0];
+        let __lane280_0 = __lanes.lanes(__lane280)[0];
+        let __lane285_0 = __lanes.lanes(__lane285)[0];
+        let __lane76_1 = __lanes.lanes(__lane76)[1];
+        let __lane83_1 = __lanes.lanes(__lane83)[1];
+        let __lane88_1 = __lanes.lanes(__lane88)[1];
+        let __lane93_1 = __lanes.lanes(__lane93)[1];
+        let __lane98_1 = __lanes.lanes(__lane98)[1];
+        let __lane103_1 = __lanes.lanes(__lane103)[1];
+        let __lane108_1 = __lanes.lanes(__lane108)[1];
+        let __lane117_1 = __lanes.lanes(__lane117)[1];
+        let __lane122_1 = __lanes.lanes(__lane122)[1];
+        let __lane127_1 = __lanes.lanes(__lane127)[1];
+        let __lane132_1 = __lanes.lanes(__lane132)[1];
+        let __lane137_1 = __lanes.lanes(__lane137)[1];
+        let __lane142_1 = __lanes.lanes(__lane142)[1];
+        let __lane151_1 = __lanes.lanes(__lane151)[1];
+        let __lane160_1 = __lanes.lanes(__lane160)[1];
+        let __lane165_1 = __lanes.lanes(__lane165)[1];
+        let __lane170_1 = __lanes.lanes(__lane170)[1];
+        let __lane175_1 = __lanes.lanes(__lane175)[1];
+        let __lane180_1 = __lanes.lanes(__lane180)[1];
+        let __lane185_1 = __lanes.lanes(__lane185)[1];
+        let __lane194_1 = __lanes.lanes(__lane194)[1];
+        let __lane203_1 = __lanes.lanes(__lane203)[1];
+        let __lane212_1 = __lanes.lanes(__lane212)[1];
+        let __lane217_1 = __lanes.lanes(__lane217)[1];
+        let __lane222_1 = __lanes.lanes(__lane222)[1];
+        let __lane227_1 = __lanes.lanes(__lane227)[1];
+        let __lane232_1 = __lanes.lanes(__lane232)[1];
+        let __lane237_1 = __lanes.lanes(__lane237)[1];
+        let __lane242_1 = __lanes.lanes(__lane242)[1];
+        let __lane251_1 = __lanes.lanes(__lane251)[1];
+        let __lane260_1 = __lanes.lanes(__lane260)[1];
+        let __lane265_1 = __lanes.lanes(__lane265)[1];
+        let __lane270_1 = __lanes.lanes(__lane270)[1];
+        let __lane275_1 = __lanes.lanes(__lane275)[1];
+        let __lane280_1 = __lanes.lanes(__lane280)[1];
+        let __lane285_1 = __lanes.lanes(__lane285)[1];
+        let __lane76_2 = __lanes.lanes(__lane76)[2];
+        let __lane83_2 = __lanes.lanes(__lane83)[2];
+        let __lane88_2 = __lanes.lanes(__lane88)[2];
+        let __lane93_2 = __lanes.lanes(__lane93)[2];
+        let __lane98_2 = __lanes.lanes(__lane98)[2];
+        let __lane103_2 = __lanes.lanes(__lane103)[2];
+        let __lane108_2 = __lanes.lanes(__lane108)[2];
+        let __lane117_2 = __lanes.lanes(__lane117)[2];
+        let __lane122_2 = __lanes.lanes(__lane122)[2];
+        let __lane127_2 = __lanes.lanes(__lane127)[2];
+        let __lane132_2 = __lanes.lanes(__lane132)[2];
+        let __lane137_2 = __lanes.lanes(__lane137)[2];
+        let __lane142_2 = __lanes.lanes(__lane142)[2];
+        let __lane151_2 = __lanes.lanes(__lane151)[2];
+        let __lane160_2 = __lanes.lanes(__lane160)[2];
+        let __lane165_2 = __lanes.lanes(__lane165)[2];
+        let __lane170_2 = __lanes.lanes(__lane170)[2];
+        let __lane175_2 = __lanes.lanes(__lane175)[2];
+        let __lane180_2 = __lanes.lanes(__lane180)[2];
+        let __lane185_2 = __lanes.lanes(__lane185)[2];
+        let __lane194_2 = __lanes.lanes(__lane194)[2];
+        let __lane203_2 = __lanes.lanes(__lane203)[2];
+        let __lane212_2 = __lanes.lanes(__lane212)[2];
+        let __lane217_2 = __lanes.lanes(__lane217)[2];
+        let __lane222_2 = __lanes.lanes(__lane222)[2];
+        let __lane227_2 = __lanes.lanes(__lane227)[2];
+        let __lane232_2 = __lanes.lanes(__lane232)[2];
+        let __lane237_2 = __lanes.lanes(__lane237)[2];
+        let __lane242_2 = __lanes.lanes(__lane242)[2];
+        let __lane251_2 = __lanes.lanes(__lane251)[2];
+        let __lane260_2 = __lanes.lanes(__lane260)[2];
+        let __lane265_2 = __lanes.lanes(__lane265)[2];
+        let __lane270_2 = __lanes.lanes(__lane270)[2];
+        let __lane275_2 = __lanes.lanes(__lane275)[2];
+        let __lane280_2 = __lanes.lanes(__lane280)[2];
+        let __lane285_2 = __lanes.lanes(__lane285)[2];
+        let __lane76_3 = __lanes.lanes(__lane76)[3];
+        let __lane83_3 = __lanes.lanes(__lane83)[3];
+        let __lane88_3 = __lanes.lanes(__lane88)[3];
+        let __lane93_3 = __lanes.lanes(__lane93)[3];
+        let __lane98_3 = __lanes.lanes(__lane98)[3];
+        let __lane103_3 = __lanes.lanes(__lane103)[3];
+        let __lane108_3 = __lanes.lanes(__lane108)[3];
+        let __lane117_3 = __lanes.lanes(__lane117)[3];
+        let __lane122_3 = __lanes.lanes(__lane122)[3];
+        let __lane127_3 = __lanes.lanes(__lane127)[3];
+        let __lane132_3 = __lanes.lanes(__lane132)[3];
+        let __lane137_3 = __lanes.lanes(__lane137)[3];
+        let __lane142_3 = __lanes.lanes(__lane142)[3];
+        let __lane151_3 = __lanes.lanes(__lane151)[3];
+        let __lane160_3 = __lanes.lanes(__lane160)[3];
+        let __lane165_3 = __lanes.lanes(__lane165)[3];
+        let __lane170_3 = __lanes.lanes(__lane170)[3];
+        let __lane175_3 = __lanes.lanes(__lane175)[3];
+        let __lane180_3 = __lanes.lanes(__lane180)[3];
+        let __lane185_3 = __lanes.lanes(__lane185)[3];
+        let __lane194_3 = __lanes.lanes(__lane194)[3];
+        let __lane203_3 = __lanes.lanes(__lane203)[3];
+        let __lane212_3 = __lanes.lanes(__lane212)[3];
+        let __lane217_3 = __lanes.lanes(__lane217)[3];
+        let __lane222_3 = __lanes.lanes(__lane222)[3];
+        let __lane227_3 = __lanes.lanes(__lane227)[3];
+        let __lane232_3 = __lanes.lanes(__lane232)[3];
+        let __lane237_3 = __lanes.lanes(__lane237)[3];
+        let __lane242_3 = __lanes.lanes(__lane242)[3];
+        let __lane251_3 = __lanes.lanes(__lane251)[3];
+        let __lane260_3 = __lanes.lanes(__lane260)[3];
+        let __lane265_3 = __lanes.lanes(__lane265)[3];
+        let __lane270_3 = __lanes.lanes(__lane270)[3];
+        let __lane275_3 = __lanes.lanes(__lane275)[3];
+        let __lane280_3 = __lanes.lanes(__lane280)[3];
+        let __lane285_3 = __lanes.lanes(__lane285)[3];
+        let __lane_zero = 0.0_f64;
+        let __lane289_0 = __lanes.lanes(__lane289)[0];
+        let __lane290_0 = __lanes.lanes(__lane290)[0];
+        let __lane291_0 = __lanes.lanes(__lane291)[0];
+        let __lane292_0 = __lanes.lanes(__lane292)[0];
+        let __lane293_0 = __lanes.lanes(__lane293)[0];
+        let __lane294_0 = __lanes.lanes(__lane294)[0];
+        let __lane295_0 = __lanes.lanes(__lane295)[0];
+        let __lane296_0 = __lanes.lanes(__lane296)[0];
+        let __lane299_0 = __lanes.lanes(__lane299)[0];
+        let __lane302_0 = __lanes.lanes(__lane302)[0];
+        let __lane307_0 = __lanes.lanes(__lane307)[0];
+        let __lane312_0 = __lanes.lanes(__lane312)[0];
+        let __lane317_0 = __lanes.lanes(__lane317)[0];
+        let __lane322_0 = __lanes.lanes(__lane322)[0];
+        let __lane327_0 = __lanes.lanes(__lane327)[0];
+        let __lane289_1 = __lanes.lanes(__lane289)[1];
+        let __lane290_1 = __lanes.lanes(__lane290)[1];
+        let __lane291_1 = __lanes.lanes(__lane291)[1];
+        let __lane292_1 = __lanes.lanes(__lane292)[1];
+        let __lane293_1 = __lanes.lanes(__lane293)[1];
+        let __lane294_1 = __lanes.lanes(__lane294)[1];
+        let __lane295_1 = __lanes.lanes(__lane295)[1];
+        let __lane296_1 = __lanes.lanes(__lane296)[1];
+        let __lane299_1 = __lanes.lanes(__lane299)[1];
+        let __lane302_1 = __lanes.lanes(__lane302)[1];
+        let __lane307_1 = __lanes.lanes(__lane307)[1];
+        let __lane312_1 = __lanes.lanes(__lane312)[1];
+        let __lane317_1 = __lanes.lanes(__lane317)[1];
+        let __lane322_1 = __lanes.lanes(__lane322)[1];
+        let __lane327_1 = __lanes.lanes(__lane327)[1];
+        ::planar_arm::__private::columns([
+            [__lane76_0, __lane76_1, __lane76_2, __lane76_3, __lane_zero, __lane_zero],
+            [__lane83_0, __lane83_1, __lane83_2, __lane83_3, __lane_zero, __lane_zero],
+            [__lane88_0, __lane88_1, __lane88_2, __lane88_3, __lane_zero, __lane_zero],
+            [__lane93_0, __lane93_1, __lane93_2, __lane93_3, __lane_zero, __lane_zero],
+            [__lane98_0, __lane98_1, __lane98_2, __lane98_3, __lane_zero, __lane_zero],
+            [
+                __lane103_0,
+                __lane103_1,
+                __lane103_2,
+                __lane103_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane108_0,
+                __lane108_1,
+                __lane108_2,
+                __lane108_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane117_0,
+                __lane117_1,
+                __lane117_2,
+                __lane117_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane122_0,
+                __lane122_1,
+                __lane122_2,
+                __lane122_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane127_0,
+                __lane127_1,
+                __lane127_2,
+                __lane127_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane132_0,
+                __lane132_1,
+                __lane132_2,
+                __lane132_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane137_0,
+                __lane137_1,
+                __lane137_2,
+                __lane137_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane142_0,
+                __lane142_1,
+                __lane142_2,
+                __lane142_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane151_0,
+                __lane151_1,
+                __lane151_2,
+                __lane151_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane160_0,
+                __lane160_1,
+                __lane160_2,
+                __lane160_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane165_0,
+                __lane165_1,
+                __lane165_2,
+                __lane165_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane170_0,
+                __lane170_1,
+                __lane170_2,
+                __lane170_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane175_0,
+                __lane175_1,
+                __lane175_2,
+                __lane175_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane180_0,
+                __lane180_1,
+                __lane180_2,
+                __lane180_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane185_0,
+                __lane185_1,
+                __lane185_2,
+                __lane185_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane194_0,
+                __lane194_1,
+                __lane194_2,
+                __lane194_3,
+                __lane289_0,
+                __lane289_1,
+            ],
+            [
+                __lane203_0,
+                __lane203_1,
+                __lane203_2,
+                __lane203_3,
+                __lane_zero,
+                __lane_zero,
+            ],
+            [
+                __lane212_0,
+                __lane212_1,
+                __lane212_2,
+                __lane212_3,
+                __lane290_0,
+                __lane290_1,
+            ],
+            [
+                __lane217_0,
+                __lane217_1,
+                __lane217_2,
+                __lane217_3,
+                __lane291_0,
+                __lane291_1,
+            ],
+            [
+                __lane222_0,
+                __lane222_1,
+                __lane222_2,
+                __lane222_3,
+                __lane292_0,
+                __lane292_1,
+            ],
+            [
+                __lane227_0,
+                __lane227_1,
+                __lane227_2,
+                __lane227_3,
+                __lane293_0,
+                __lane293_1,
+            ],
+            [
+                __lane232_0,
+                __lane232_1,
+                __lane232_2,
+                __lane232_3,
+                __lane294_0,
+                __lane294_1,
+            ],
+            [
+                __lane237_0,
+                __lane237_1,
+                __lane237_2,
+                __lane237_3,
+                __lane295_0,
+                __lane295_1,
+            ],
+            [
+                __lane242_0,
+                __lane242_1,
+                __lane242_2,
+                __lane242_3,
+                __lane296_0,
+                __lane296_1,
+            ],
+            [
+                __lane251_0,
+                __lane251_1,
+                __lane251_2,
+                __lane251_3,
+                __lane299_0,
+                __lane299_1,
+            ],
+            [
+                __lane260_0,
+                __lane260_1,
+                __lane260_2,
+                __lane260_3,
+                __lane302_0,
+                __lane302_1,
+            ],
+            [
+                __lane265_0,
+                __lane265_1,
+                __lane265_2,
+                __lane265_3,
+                __lane307_0,
+                __lane307_1,
+            ],
+            [
+                __lane270_0,
+                __lane270_1,
+                __lane270_2,
+                __lane270_3,
+                __lane312_0,
+                __lane312_1,
+            ],
+            [
+                __lane275_0,
+                __lane275_1,
+                __lane275_2,
+                __lane275_3,
+                __lane317_0,
+                __lane317_1,
+            ],
+            [
+                __lane280_0,
+                __lane280_1,
+                __lane280_2,
+                __lane280_3,
+                __lane322_0,
+                __lane322_1,
+            ],
+            [
+                __lane285_0,
+                __lane285_1,
+                __lane285_2,
+                __lane285_3,
+                __lane327_0,
+                __lane327_1,
+            ],
         ])
     }
     /**The arm's base parameters now. The base parameters, each an exact combination of the standard ones, found at compile time by rational elimination on the regressor evaluated exactly at rational points:

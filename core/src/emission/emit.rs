@@ -66,6 +66,7 @@ pub fn input_name(i: Input, params: &[Param]) -> String {
         Input::Qd(j) => format!("qd{}", j + 1),
         Input::Qdd(j) => format!("qdd{}", j + 1),
         Input::Tau(j) => format!("tau{}", j + 1),
+        Input::Virtual(j) => format!("virtual{}", j + 1),
         Input::Force(0) => "u".into(),
         Input::Force(_) => "v".into(),
         Input::TipTorque => "torque".into(),

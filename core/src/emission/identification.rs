@@ -81,6 +81,15 @@ pub(crate) fn identification_impl(
     let q = Param::Joints("q", Input::Q);
     let qd = Param::Joints("qd", Input::Qd);
     let qdd = Param::Joints("qdd", Input::Qdd);
+    // A regressor with a packed program (spatial arms) runs through the dispatch, which
+    // passes AVX2 lanes where the processor has them.
+    let kernel = |m: &crate::methods::Method, name: &'static str| {
+        m.packed.is_some().then(|| (name, quote!(#nn, #pl, #bl)))
+    };
+    let (regressor_kernel, base_kernel) = (
+        kernel(&regressor, "Regressor"),
+        kernel(&base_regressor, "BaseRegressor"),
+    );
     let specs = [
         Fn {
             name: "regressor",
@@ -91,7 +100,7 @@ pub(crate) fn identification_impl(
             method: regressor,
             touch: TokenStream::new(),
             finish: Box::new(move |ids| matrix(n, pp, ids)),
-            kernel: None,
+            kernel: regressor_kernel,
         },
         Fn {
             name: "standard_parameters",
@@ -113,7 +122,7 @@ pub(crate) fn identification_impl(
             method: base_regressor,
             touch: TokenStream::new(),
             finish: Box::new(move |ids| matrix(n, bb, ids)),
-            kernel: None,
+            kernel: base_kernel,
         },
         Fn {
             name: "base_parameters",

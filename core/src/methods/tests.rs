@@ -65,7 +65,7 @@ fn eval_with(m: &Method, n: usize, params: &[(String, f64)]) -> Vec<f64> {
         Input::Qd(j) => at(j, 1.3),
         Input::Qdd(j) => at(j, 2.9),
         Input::Tau(j) => at(j + n, 4.1) * 10.0,
-        Input::Force(_) | Input::TipTorque | Input::Frozen(_) => 0.0,
+        Input::Force(_) | Input::TipTorque | Input::Frozen(_) | Input::Virtual(_) => 0.0,
         Input::Param(k) => params
             .iter()
             .find(|(name, _)| name == names[k].name())

@@ -256,10 +256,97 @@ pub fn regressor(
             outputs.push((format!("y{}_{}", i + 1, c + 1), col[i]));
         }
     }
-    Method::new(p, outputs).described(&format!(
+    let mut method = Method::new(p, outputs).described(&format!(
         "{DESCRIPTION}: once per standard parameter, that parameter one and the others zero (the \
          forces are linear in them), the motion of the links shared"
-    ))
+    ));
+    method.packed = packed(arm, parameters, columns).map(Box::new);
+    method
+}
+
+/// The same columns as derivatives along the joints' virtual rates, four joints per lane.
+///
+/// Entry `(j, c)` is joint `j`'s unit twist against column `c`'s wrench, so row `j` is the
+/// derivative along joint `j`'s virtual rate `u_j` of the virtual power `V_i . f + W_i . n`, the
+/// wrench held and `(W_i, V_i)` the twist link `i` has when the joints move at rates `u`:
+/// `W_i = Q_i W_{i-1} + z_i u_i`, `V_i = Q_i (V_{i-1} + W_{i-1} x pre_p) + W_i x r_i` (`+ z_i
+/// u_i` for a slide). [`pack`](crate::programs::packed::pack) carries those derivatives as
+/// four-lane values, so that carrying the twists outward and projecting each wrench on them
+/// costs one vector operation per four joints.
+fn packed(
+    arm: &SpatialArmSpec,
+    parameters: &[SpatialParameter],
+    columns: &[usize],
+) -> Option<crate::programs::packed::Packed> {
+    let n = arm.joints.len();
+    let mut p = Program::new();
+    let joints: Vec<Joint> = (0..n).map(|j| Joint::new(&mut p, arm, j)).collect();
+    let motions = motions(&mut p, arm, &joints, Terms::ALL);
+    let zero = p.constant(int(0));
+    let mut twists: Vec<(V3, V3)> = Vec::with_capacity(n);
+    for (i, joint) in joints.iter().enumerate() {
+        let u = p.input(Input::Virtual(i));
+        let r = motions[i].r;
+        let (w, v) = match twists.last() {
+            Some((w, v)) => {
+                let lever = cross(&mut p, w, &joint.pre.p);
+                let at_axis = add(&mut p, v, &lever);
+                (joint.inward(&mut p, w), joint.inward(&mut p, &at_axis))
+            }
+            None => ([zero; 3], [zero; 3]),
+        };
+        let spin = scale(&mut p, &joint.z, u);
+        let w = match joint.kind {
+            JointKind::Revolute => add(&mut p, &w, &spin),
+            JointKind::Prismatic => w,
+        };
+        let swing = cross(&mut p, &w, &r);
+        let mut v = add(&mut p, &v, &swing);
+        if joint.kind == JointKind::Prismatic {
+            v = add(&mut p, &v, &spin);
+        }
+        twists.push((w, v));
+    }
+    let power = |p: &mut Program, link: usize, body: &(Poly, [Poly; 3], [[Poly; 3]; 3])| {
+        let (force, moment) = standard_load(p, &motions[link], body);
+        let (w, v) = &twists[link];
+        let along = dot(p, v, &force);
+        let about = dot(p, w, &moment);
+        p.add(along, about)
+    };
+    let mut powers = Vec::with_capacity(columns.len());
+    for &c in columns {
+        let joint_term = |p: &mut Program, j: usize, x: Id| {
+            let u = p.input(Input::Virtual(j));
+            p.mul(u, x)
+        };
+        powers.push(match parameters[c].entry {
+            Entry::Link(i, k) => power(&mut p, i, &unit_body(k)),
+            Entry::Payload(k) => power(&mut p, n - 1, &payload_unit(arm, k)),
+            Entry::Armature(j) => {
+                let qdd = p.input(Input::Qdd(j));
+                joint_term(&mut p, j, qdd)
+            }
+            Entry::Damping(j) => {
+                let qd = p.input(Input::Qd(j));
+                joint_term(&mut p, j, qd)
+            }
+            Entry::Frictionloss(j) => {
+                let qd = p.input(Input::Qd(j));
+                let sign = p.sign(qd);
+                joint_term(&mut p, j, sign)
+            }
+        });
+    }
+    let directions: Vec<Input> = (0..n).map(Input::Virtual).collect();
+    let mut pk = crate::programs::packed::pack(&p, &powers, &directions)?;
+    // Column-major (power by power, joint by joint) to the regressor's rows.
+    let by_column = std::mem::take(&mut pk.derivatives);
+    pk.derivatives = (0..n)
+        .flat_map(|j| (0..columns.len()).map(move |c| (j, c)))
+        .map(|(j, c)| by_column[c * n + j])
+        .collect();
+    Some(pk)
 }
 
 /// Joint `j`'s unit twist in link `i`'s axes for every `j <= i` (`out[i][j]`): the angular

@@ -52,7 +52,7 @@ fn input(params: &[crate::Param], frozen: &[f64], i: Input) -> f64 {
         Input::Q(j) => 0.3 + 0.7 * f64::from(u32::try_from(j).unwrap_or(0)),
         Input::Qd(j) => -0.4 + 0.5 * f64::from(u32::try_from(j).unwrap_or(0)),
         Input::Qdd(j) | Input::Tau(j) => 1.1 - 0.3 * f64::from(u32::try_from(j).unwrap_or(0)),
-        Input::Force(_) | Input::TipTorque => 0.0,
+        Input::Force(_) | Input::TipTorque | Input::Virtual(_) => 0.0,
     }
 }
 

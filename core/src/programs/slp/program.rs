@@ -25,6 +25,10 @@ pub enum Input {
     Qdd(usize),
     /// Joint torque.
     Tau(usize),
+    /// A virtual rate of joint `j`: a direction to differentiate along that no value reads
+    /// (the regressor's rows are the virtual power's derivatives along these; see
+    /// `programs::spatial_regressor`).
+    Virtual(usize),
     /// Component 0 (x) or 1 (y) of a tip force.
     Force(usize),
     /// Torque applied at the tip.
