@@ -13,7 +13,6 @@ use crate::Real;
 /// The largest methods' bodies, run in an AVX2 copy where the processor has it.
 pub use crate::dispatch::{
     dispatch, BaseRegressor, ForwardDynamicsDerivatives, InverseDynamicsDerivatives, Kernel,
-    Regressor,
 };
 /// The lanes a packed derivative body computes in (see `src/lanes.rs`).
 pub use crate::lanes::{Lanes, Portable};

@@ -27,12 +27,13 @@
 //! already targets AVX2 (`-C target-cpu=native`), there is one copy, with AVX2 lanes, and no
 //! question asked.
 //!
-//! A spatial arm's `regressor` and `base_regressor` run through it too, with a packed program
-//! that carries four joints per register (`programs::spatial_regressor` in the engine). Their
-//! results are large (the PUMA's base regressor 1.7 KB), which is why each copy writes its
-//! result through a pointer: returned by value, it was copied once more after the call, and
-//! with the one-direction program in both copies the dispatched regressors were then 5-25 %
-//! slower than one baseline copy (docs/performance.md).
+//! A spatial arm's `base_regressor` runs through it too, with a packed program that carries
+//! four joints per register (`programs::spatial_regressor` in the engine). Its result is large
+//! (the PUMA's 1.7 KB), which is why each copy writes its result through a pointer: returned by
+//! value, it was copied once more after the call, and with the one-direction program in both
+//! copies the dispatched regressors were then 5-25 % slower than one baseline copy
+//! (docs/performance.md). The full `regressor` has one copy: its packed body would add 2 s to
+//! a release build deriving the Panda.
 
 use crate::lanes::{Lanes, Portable};
 
@@ -170,11 +171,7 @@ kernels! {
             nalgebra::SMatrix<f64, N, N>,
             nalgebra::SMatrix<f64, N, N>,
         );
-    /// `Identification::regressor` of an arm whose regressor has a packed program.
-    Regressor<N, P, B>: crate::Identification<N, P, B>
-        => __regressor_kernel, __regressor_packed(q, qd, qdd)
-        -> nalgebra::SMatrix<f64, N, P>;
-    /// `Identification::base_regressor`, as `Regressor`.
+    /// `Identification::base_regressor` of an arm whose base regressor has a packed program.
     BaseRegressor<N, P, B>: crate::Identification<N, P, B>
         => __base_regressor_kernel, __base_regressor_packed(q, qd, qdd)
         -> nalgebra::SMatrix<f64, N, B>;

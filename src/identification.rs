@@ -88,31 +88,8 @@ pub trait Identification<const N: usize, const P: usize, const B: usize>: Dynami
     ) -> SMatrix<f64, N, B>;
     /// The base parameters' values now.
     fn base_parameters(&self) -> SVector<f64, B>;
-    /// The body of [`regressor`](Self::regressor) where the derive runs it through
-    /// `__private::dispatch` (spatial arms, whose regressor has a packed program).
-    #[doc(hidden)]
-    fn __regressor_kernel(
-        &self,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        qdd: &SVector<f64, N>,
-    ) -> SMatrix<f64, N, P> {
-        self.regressor(q, qd, qdd)
-    }
-    /// The regressor four joints at a time in `lanes` (see `src/lanes.rs`): the packed program
-    /// the derive emits for spatial arms, or else the body above.
-    #[doc(hidden)]
-    #[inline(always)]
-    fn __regressor_packed<L: crate::__private::Lanes>(
-        &self,
-        _lanes: L,
-        q: &SVector<f64, N>,
-        qd: &SVector<f64, N>,
-        qdd: &SVector<f64, N>,
-    ) -> SMatrix<f64, N, P> {
-        self.__regressor_kernel(q, qd, qdd)
-    }
-    /// The body of [`base_regressor`](Self::base_regressor), as `__regressor_kernel`.
+    /// The body of [`base_regressor`](Self::base_regressor) where the derive runs it through
+    /// `__private::dispatch` (spatial arms, whose base regressor has a packed program).
     #[doc(hidden)]
     fn __base_regressor_kernel(
         &self,
@@ -122,7 +99,8 @@ pub trait Identification<const N: usize, const P: usize, const B: usize>: Dynami
     ) -> SMatrix<f64, N, B> {
         self.base_regressor(q, qd, qdd)
     }
-    /// The base regressor four joints at a time, as `__regressor_packed`.
+    /// The base regressor four joints at a time in `lanes` (see `src/lanes.rs`): the packed
+    /// program the derive emits for spatial arms, or else the body above.
     #[doc(hidden)]
     #[inline(always)]
     fn __base_regressor_packed<L: crate::__private::Lanes>(

@@ -234,8 +234,8 @@ mod random_arms {
     use planar_arm::symbolic::ring::{ratio, to_f64};
     use planar_arm::symbolic::slp::Input;
     use planar_arm::symbolic::spatial::{
-        identification, regressor, standard_values, unit_axis, FixedAngle, SpatialArmSpec,
-        SpatialBody, SpatialDerived, SpatialGeometry, SpatialJointSpec,
+        identification, packed_regressor, regressor, standard_values, unit_axis, FixedAngle,
+        SpatialArmSpec, SpatialBody, SpatialDerived, SpatialGeometry, SpatialJointSpec,
     };
     use planar_arm::symbolic::{JointKind, Poly};
     use proptest::prelude::*;
@@ -388,6 +388,9 @@ mod random_arms {
             let all: Vec<usize> = (0..p).collect();
             let y_method = regressor(&arm, &id.parameters, &all);
             let yb_method = regressor(&arm, &id.parameters, &id.base.columns);
+            let y_packed = packed_regressor(&arm, &id.parameters, &all).expect("packed");
+            let yb_packed =
+                packed_regressor(&arm, &id.parameters, &id.base.columns).expect("packed");
             let tau_method = SpatialDerived::new(&arm).inverse_dynamics;
             let theta: Vec<f64> = standard_values(&arm, &id.parameters).iter().map(value).collect();
             let base: Vec<f64> = id
@@ -412,8 +415,8 @@ mod random_arms {
                 let scale = tau.iter().fold(1.0_f64, |m, t| m.max(t.abs()));
                 // The packed programs (four joints per lane, what the AVX2 copy runs) give the
                 // same entries to rounding.
-                for (method, values) in [(&y_method, &y), (&yb_method, &yb)] {
-                    let packed = method.packed.as_ref().expect("a packed program").eval(&input);
+                for (packed, values) in [(&y_packed, &y), (&yb_packed, &yb)] {
+                    let packed = packed.eval(&input);
                     prop_assert_eq!(packed.len(), values.len());
                     for (k, (a, b)) in packed.iter().zip(values).enumerate() {
                         prop_assert!(

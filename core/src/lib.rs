@@ -87,7 +87,8 @@ pub mod spatial {
     };
     pub use crate::methods::spatial::{SpatialDerived, SpatialForm};
     pub use crate::programs::spatial_regressor::{
-        regressor, standard_parameters, standard_values, Entry, SpatialParameter, BODY_ENTRIES,
+        packed_regressor, regressor, standard_parameters, standard_values, Entry, SpatialParameter,
+        BODY_ENTRIES,
     };
 }
 

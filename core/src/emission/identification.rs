@@ -81,15 +81,12 @@ pub(crate) fn identification_impl(
     let q = Param::Joints("q", Input::Q);
     let qd = Param::Joints("qd", Input::Qd);
     let qdd = Param::Joints("qdd", Input::Qdd);
-    // A regressor with a packed program (spatial arms) runs through the dispatch, which
+    // A base regressor with a packed program (spatial arms) runs through the dispatch, which
     // passes AVX2 lanes where the processor has them.
-    let kernel = |m: &crate::methods::Method, name: &'static str| {
-        m.packed.is_some().then(|| (name, quote!(#nn, #pl, #bl)))
-    };
-    let (regressor_kernel, base_kernel) = (
-        kernel(&regressor, "Regressor"),
-        kernel(&base_regressor, "BaseRegressor"),
-    );
+    let base_kernel = base_regressor
+        .packed
+        .is_some()
+        .then(|| ("BaseRegressor", quote!(#nn, #pl, #bl)));
     let specs = [
         Fn {
             name: "regressor",
@@ -100,7 +97,7 @@ pub(crate) fn identification_impl(
             method: regressor,
             touch: TokenStream::new(),
             finish: Box::new(move |ids| matrix(n, pp, ids)),
-            kernel: regressor_kernel,
+            kernel: None,
         },
         Fn {
             name: "standard_parameters",

@@ -11,7 +11,7 @@ use crate::mechanics::spatial::SpatialArmSpec;
 use crate::methods::identification::spatial::{identification, SpatialIdentification};
 use crate::methods::Method;
 use crate::poly::Poly;
-use crate::programs::spatial_regressor::{regressor, standard_values};
+use crate::programs::spatial_regressor::{packed_regressor, regressor, standard_values};
 use crate::slp::Program;
 
 /// `impl ::planar_arm::Identification<N, P, B>` for a spatial arm, or nothing when its geometry
@@ -40,11 +40,21 @@ pub fn spatial_identification(
         [
             regressor(arm, &id.parameters, &all),
             values(arm, &id, false),
-            regressor(arm, &id.parameters, &id.base.columns),
+            base_regressor(arm, &id),
             values(arm, &id, true),
         ],
         (&standard_doc, &base_doc),
     )
+}
+
+/// The base regressor, with its packed program (four joints per lane), which the derive emits
+/// as a second body for the AVX2 copy of the dispatch. The full regressor has none: compiled
+/// twice more, its packed body added 2 s to a release build of a crate deriving the Panda
+/// (docs/performance.md).
+fn base_regressor(arm: &SpatialArmSpec, id: &SpatialIdentification) -> Method {
+    let mut method = regressor(arm, &id.parameters, &id.base.columns);
+    method.packed = packed_regressor(arm, &id.parameters, &id.base.columns).map(Box::new);
+    method
 }
 
 /// The standard parameters' values, or with `base` the base parameters': each grouping's

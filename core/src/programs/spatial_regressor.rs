@@ -256,15 +256,15 @@ pub fn regressor(
             outputs.push((format!("y{}_{}", i + 1, c + 1), col[i]));
         }
     }
-    let mut method = Method::new(p, outputs).described(&format!(
+    Method::new(p, outputs).described(&format!(
         "{DESCRIPTION}: once per standard parameter, that parameter one and the others zero (the \
          forces are linear in them), the motion of the links shared"
-    ));
-    method.packed = packed(arm, parameters, columns).map(Box::new);
-    method
+    ))
 }
 
-/// The same columns as derivatives along the joints' virtual rates, four joints per lane.
+/// [`regressor`]'s entries as derivatives along the joints' virtual rates, four joints per
+/// lane, in its outputs' order; `None` if [`pack`](crate::programs::packed::pack) cannot
+/// carry the program.
 ///
 /// Entry `(j, c)` is joint `j`'s unit twist against column `c`'s wrench, so row `j` is the
 /// derivative along joint `j`'s virtual rate `u_j` of the virtual power `V_i . f + W_i . n`, the
@@ -273,7 +273,8 @@ pub fn regressor(
 /// u_i` for a slide). [`pack`](crate::programs::packed::pack) carries those derivatives as
 /// four-lane values, so that carrying the twists outward and projecting each wrench on them
 /// costs one vector operation per four joints.
-fn packed(
+#[must_use]
+pub fn packed_regressor(
     arm: &SpatialArmSpec,
     parameters: &[SpatialParameter],
     columns: &[usize],
