@@ -315,7 +315,10 @@ fn time_op<const N: usize>(
 }
 
 /// The eight methods, one call each per `f(k)`: inputs and whole outputs through `black_box`,
-/// one entry of the output returned for the checksum (as `peers.cpp` sums one).
+/// one entry of the output returned for the checksum (as `peers.cpp` sums one). The outputs go
+/// to `black_box` by reference, where a user's program would read them: moved into it, a
+/// result that came back from the AVX2 copy was copied once more, which costs the dispatched
+/// methods 20-25 % (docs/performance.md) and no user who reads the result in place.
 fn peer<A, const N: usize, const P: usize, const B: usize>(name: &str, arm: &A, calls: usize) -> f64
 where
     A: SpatialArm<N> + Identification<N, P, B>,
@@ -330,37 +333,50 @@ where
     };
     let mut checksum = time_op::<N>(name, "inverse_dynamics", calls, |k| {
         let (q, qd, qdd) = inputs(k);
-        black_box(arm.inverse_dynamics(q, qd, qdd))[0]
+        let tau = arm.inverse_dynamics(q, qd, qdd);
+        black_box(&tau);
+        tau[0]
     });
     checksum += time_op::<N>(name, "mass_matrix", calls, |k| {
-        black_box(arm.mass_matrix(black_box(&s.q[k])))[(0, N - 1)]
+        let m = arm.mass_matrix(black_box(&s.q[k]));
+        black_box(&m);
+        m[(0, N - 1)]
     });
     checksum += time_op::<N>(name, "forward_dynamics", calls, |k| {
         let (q, qd, tau) = inputs(k);
-        black_box(arm.forward_dynamics(q, qd, tau))[N - 1]
+        let qdd = arm.forward_dynamics(q, qd, tau);
+        black_box(&qdd);
+        qdd[N - 1]
     });
     checksum += time_op::<N>(name, "mass_matrix_and_bias", calls, |k| {
         let (q, qd, _) = inputs(k);
-        let (m, h) = black_box(arm.mass_matrix_and_bias(q, qd));
-        m[(0, N - 1)] + h[0]
+        let mh = arm.mass_matrix_and_bias(q, qd);
+        black_box(&mh);
+        mh.0[(0, N - 1)] + mh.1[0]
     });
     checksum += time_op::<N>(name, "inverse_dynamics_derivatives", calls, |k| {
         let (q, qd, qdd) = inputs(k);
-        let (dq, dqd) = black_box(arm.inverse_dynamics_derivatives(q, qd, qdd));
-        dq[(0, N - 1)] + dqd[(0, 0)]
+        let d = arm.inverse_dynamics_derivatives(q, qd, qdd);
+        black_box(&d);
+        d.0[(0, N - 1)] + d.1[(0, 0)]
     });
     checksum += time_op::<N>(name, "forward_dynamics_derivatives", calls, |k| {
         let (q, qd, tau) = inputs(k);
-        let (dq, dqd, minv) = black_box(arm.forward_dynamics_derivatives(q, qd, tau));
-        dq[(N - 1, 0)] + dqd[(0, 0)] + minv[(0, N - 1)]
+        let d = arm.forward_dynamics_derivatives(q, qd, tau);
+        black_box(&d);
+        d.0[(N - 1, 0)] + d.1[(0, 0)] + d.2[(0, N - 1)]
     });
     checksum += time_op::<N>(name, "regressor", calls, |k| {
         let (q, qd, qdd) = inputs(k);
-        black_box(arm.regressor(q, qd, qdd))[(N - 1, 10 * N - 1)]
+        let y = arm.regressor(q, qd, qdd);
+        black_box(&y);
+        y[(N - 1, 10 * N - 1)]
     });
     checksum += time_op::<N>(name, "base_regressor", calls, |k| {
         let (q, qd, qdd) = inputs(k);
-        black_box(arm.base_regressor(q, qd, qdd))[(N - 1, B - 1)]
+        let y = arm.base_regressor(q, qd, qdd);
+        black_box(&y);
+        y[(N - 1, B - 1)]
     });
     checksum
 }
