@@ -1,4 +1,5 @@
-//! The derivatives of the dynamics run in a copy compiled for AVX2 where the processor has it.
+//! The derivatives of the dynamics and a spatial arm's base regressor run in a copy compiled for
+//! AVX2 where the processor has it.
 //!
 //! `inverse_dynamics_derivatives` is thousands of straight-line operations, too long for the
 //! baseline x86-64 instruction set's two-operand SSE2 forms: the PUMA 560's compiled to 7,900
@@ -99,7 +100,8 @@ mod copies {
         // SAFETY: `avx2` is chosen only where the processor has just said that it supports
         // AVX2; `baseline` has no requirement.
         unsafe { copy(k, &mut out) };
-        // SAFETY: both copies write `out`.
+        // SAFETY: both copies write `out` when they return; a panic in the body unwinds past
+        // this line.
         unsafe { out.assume_init() }
     }
 
@@ -116,9 +118,9 @@ mod copies {
 
     /// `k.run()` in the baseline copy, into `out`: one function per kernel, however many places
     /// call [`dispatch`](super::dispatch), so that a method's body is compiled twice and no
-    /// more. (`unsafe` only to share `avx2`'s pointer type; it has no requirement.)
+    /// more.
     #[inline(never)]
-    unsafe fn baseline<K: Kernel>(k: K, out: &mut MaybeUninit<K::Output>) {
+    fn baseline<K: Kernel>(k: K, out: &mut MaybeUninit<K::Output>) {
         out.write(k.run(Portable));
     }
 }

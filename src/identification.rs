@@ -80,6 +80,10 @@ pub trait Identification<const N: usize, const P: usize, const B: usize>: Dynami
     /// The standard parameters' values now.
     fn standard_parameters(&self) -> SVector<f64, P>;
     /// The base regressor, N x B: the regressor's columns of the base parameters.
+    ///
+    /// For a spatial arm, an optimised build on x86-64 runs this where the processor has AVX2
+    /// as a second generated program that carries four joints per register (the same entries
+    /// to rounding, not to the bit; see the method's docs for both costs).
     fn base_regressor(
         &self,
         q: &SVector<f64, N>,
@@ -89,7 +93,8 @@ pub trait Identification<const N: usize, const P: usize, const B: usize>: Dynami
     /// The base parameters' values now.
     fn base_parameters(&self) -> SVector<f64, B>;
     /// The body of [`base_regressor`](Self::base_regressor) where the derive runs it through
-    /// `__private::dispatch` (spatial arms, whose base regressor has a packed program).
+    /// `__private::dispatch` (spatial arms, whose base regressor has a packed program). An
+    /// impl that dispatches `base_regressor` must override this default, which calls it.
     #[doc(hidden)]
     fn __base_regressor_kernel(
         &self,

@@ -226,8 +226,8 @@
 //! parameters. Energy is conserved under integration, `Mdot - 2C` is skew-symmetric, and the
 //! paper's hand derivations are reproduced exactly where they are right.
 #![cfg_attr(not(feature = "std"), no_std)]
-// One `unsafe` block in the crate, in `dispatch`: calling the AVX2 copy of a generated method
-// after the processor has said it runs AVX2.
+// `unsafe` only in `dispatch` and `lanes`: calling the AVX2 copy of a generated method after the
+// processor has said it runs AVX2, the result it writes, and that copy's intrinsics.
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
 

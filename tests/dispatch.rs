@@ -1,6 +1,6 @@
 //! The methods run through `__private::dispatch` (the derivatives of the dynamics, a spatial
-//! arm's base regressor) give, bit for bit, what their bodies give called directly; and those bodies
-//! are the right functions (the inverse dynamics' derivatives, one direction at a time and packed
+//! arm's base regressor) give, bit for bit, what their bodies give called directly; and those
+//! bodies //! are the right functions (the inverse dynamics' derivatives, one direction at a time and packed
 //! four directions at a time, against the inverse dynamics in run-time jets, the forward
 //! dynamics' `dqdd/dtau` against the mass matrix, the base regressor times the base parameters
 //! against the inverse dynamics).
@@ -32,6 +32,36 @@ struct Three {
     b: Revolute,
     #[arm(length = 0.3, mass = 0.6)]
     c: Revolute,
+}
+
+/// Seven joints (two groups of four lanes in the packed base regressor), the Panda's modified DH
+/// frames with the fourth joint a slide, full inertia tensors, armature, damping and friction on
+/// some joints and a payload: the generated packed base regressor on what the PUMA does not
+/// have.
+#[derive(SpatialArm, Default)]
+#[arm(gravity = (0, 0, -9.81), tool(xyz = (0, 0, 0.107)), payload = 0.8,
+      payload_com = (0.01, -0.02, 0.04), payload_inertia(xx = 3e-3, yy = 4e-3, zz = 2e-3, xz = 2e-4))]
+struct SevenWithSlide {
+    #[arm(mdh(d = 0.333), mass = 4.97, com = (0.0039, 0.0021, -0.0476),
+          inertia(xx = 0.7, yy = 0.7, zz = 0.009, xy = -1e-4, yz = 0.02), armature = 0.1,
+          damping = 0.3, frictionloss = 0.2)]
+    j1: Revolute,
+    #[arm(mdh(alpha = -pi/2), mass = 0.646, com = (-0.0031, -0.0287, 0.0034),
+          inertia(xx = 0.008, yy = 0.028, zz = 0.025, xz = -0.004), damping = 0.2)]
+    j2: Revolute,
+    #[arm(mdh(alpha = pi/2, d = 0.316), mass = 3.228, com = (0.0275, 0.0392, -0.0665))]
+    j3: Revolute,
+    #[arm(mdh(a = 0.0825, alpha = pi/2), mass = 3.587, com = (-0.0532, 0.1044, 0.0274),
+          armature = 0.3, frictionloss = 0.4)]
+    j4: Prismatic,
+    #[arm(mdh(a = -0.0825, alpha = -pi/2, d = 0.384), mass = 1.226, com = (-0.0118, 0.0414, -0.0384),
+          inertia(xx = 0.036, yy = 0.037, zz = 0.002, xy = -0.001, xz = 0.002, yz = -0.001))]
+    j5: Revolute,
+    #[arm(mdh(alpha = pi/2), mass = 1.666, com = (0.0601, -0.0141, -0.0105))]
+    j6: Revolute,
+    #[arm(mdh(a = 0.088, alpha = pi/2), mass = 0.735, com = (0.0105, 0.0043, 0.0617),
+          damping = 0.05)]
+    j7: Revolute,
 }
 
 /// Whether the dispatched methods run the AVX2 copy, with the packed programs: an optimised
@@ -127,6 +157,11 @@ where
 fn puma_dispatched_methods_match_their_bodies() {
     check(&Puma560::default(), &mut Rng(11));
     check_base_regressor(&Puma560::default(), &mut Rng(13));
+}
+
+#[test]
+fn seven_joints_with_a_slide_dispatched_base_regressor_matches_its_bodies() {
+    check_base_regressor(&SevenWithSlide::default(), &mut Rng(14));
 }
 
 #[test]

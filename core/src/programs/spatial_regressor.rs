@@ -12,6 +12,10 @@
 //! whose zeros fold away. The payload's ten parameters, in the tool frame, are a
 //! constant linear map of the last link's: `h = m p + R h_t`, `J = R J_t R^T + m (|p|^2 E -
 //! p p^T) + 2 (p . R h_t) E - p (R h_t)^T - (R h_t) p^T`.
+//!
+//! [`packed_regressor`] computes the same entries four joints per lane, as the derivatives of
+//! the virtual power along the joints' virtual rates; the derive emits it for the base
+//! regressor's AVX2 copy.
 
 use crate::algebra::poly::Poly;
 use crate::algebra::ring::int;
