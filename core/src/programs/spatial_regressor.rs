@@ -293,11 +293,7 @@ pub fn packed_regressor(
         let u = p.input(Input::Virtual(i));
         let r = motions[i].r;
         let (w, v) = match twists.last() {
-            Some((w, v)) => {
-                let lever = cross(&mut p, w, &joint.pre.p);
-                let at_axis = add(&mut p, v, &lever);
-                (joint.inward(&mut p, w), joint.inward(&mut p, &at_axis))
-            }
+            Some(twist) => across(&mut p, joint, twist),
             None => ([zero; 3], [zero; 3]),
         };
         let spin = scale(&mut p, &joint.z, u);
@@ -365,11 +361,8 @@ fn unit_twists(p: &mut Program, joints: &[Joint], motions: &[Motion]) -> Vec<Vec
         let r = motions[i].r;
         let mut row = Vec::with_capacity(i + 1);
         if i > 0 {
-            for (w, v) in out[i - 1].clone() {
-                let lever = cross(p, &w, &joint.pre.p);
-                let at_axis = add(p, &v, &lever);
-                let w = joint.inward(p, &w);
-                let v = joint.inward(p, &at_axis);
+            for twist in out[i - 1].clone() {
+                let (w, v) = across(p, joint, &twist);
                 let swing = cross(p, &w, &r);
                 row.push((w, add(p, &v, &swing)));
             }
@@ -381,4 +374,14 @@ fn unit_twists(p: &mut Program, joints: &[Joint], motions: &[Motion]) -> Vec<Vec
         out.push(row);
     }
     out
+}
+
+/// A twist of link `i - 1` `(w, v)` (angular velocity, velocity of its origin) carried across
+/// joint `i`'s fixed part and rotation: the same motion, in link `i`'s axes, with `v` at the
+/// joint's axis point `A_i`. Moving `v` on to link `i`'s origin (`+ w x r_i`) is left to the
+/// caller, which may first add the joint's own rate.
+fn across(p: &mut Program, joint: &Joint, (w, v): &(V3, V3)) -> (V3, V3) {
+    let lever = cross(p, w, &joint.pre.p);
+    let at_axis = add(p, v, &lever);
+    (joint.inward(p, w), joint.inward(p, &at_axis))
 }
