@@ -72,6 +72,19 @@ pub trait Dynamics<const N: usize> {
         q: &SVector<T, N>,
         qd: &SVector<T, N>,
     ) -> (SMatrix<T, N, N>, SVector<T, N>);
+    /// [`mass_matrix_and_bias`](Self::mass_matrix_and_bias)'s body, which the derive emits
+    /// here and the method calls: inlined, it is compiled into the callers that are compiled
+    /// for other target features (the AVX2 copy of the forward dynamics' derivatives), where a
+    /// call would run the baseline code.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __mass_matrix_and_bias_body<T: Real>(
+        &self,
+        q: &SVector<T, N>,
+        qd: &SVector<T, N>,
+    ) -> (SMatrix<T, N, N>, SVector<T, N>) {
+        self.mass_matrix_and_bias(q, qd)
+    }
     /// The joint torques tau = M qdd + c + g + f.
     fn inverse_dynamics<T: Real>(
         &self,
@@ -194,7 +207,7 @@ pub trait Dynamics<const N: usize> {
         tau: &SVector<f64, N>,
     ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
         // One evaluation of M and h and one factor of M serve the accelerations and M^-1.
-        let (m, h) = self.mass_matrix_and_bias(q, qd);
+        let (m, h) = self.__mass_matrix_and_bias_body(q, qd);
         let Some(factor) = mass_inverse::Cholesky::new(&m) else {
             let nan = SMatrix::from_element(f64::NAN);
             return (nan, nan, nan);

@@ -1366,6 +1366,18 @@ Cost: 357 multiplications, 321 additions, 0 divisions, 5 sin_cos pairs.*/
         ::planar_arm::nalgebra::SMatrix<__T, 6, 6>,
         ::planar_arm::nalgebra::SVector<__T, 6>,
     ) {
+        self.__mass_matrix_and_bias_body(__q, __qd)
+    }
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __mass_matrix_and_bias_body<__T: ::planar_arm::Real>(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<__T, 6>,
+        __qd: &::planar_arm::nalgebra::SVector<__T, 6>,
+    ) -> (
+        ::planar_arm::nalgebra::SMatrix<__T, 6, 6>,
+        ::planar_arm::nalgebra::SVector<__T, 6>,
+    ) {
         let [_, __q2, __q3, __q4, __q5, __q6] = ::planar_arm::__private::unpack(__q);
         let [__qd1, __qd2, __qd3, __qd4, __qd5, __qd6] = ::planar_arm::__private::unpack(
             __qd,

@@ -42,6 +42,11 @@ pub(crate) struct Fn<'a> {
     /// type there and its const arguments after `Self`. The body goes in a hidden
     /// `__NAME_kernel`, which the method hands to the kernel with its inputs.
     pub(crate) kernel: Option<(&'static str, TokenStream)>,
+    /// The body goes in a hidden `#[inline(always)]` `__NAME_body`, which the method calls, so
+    /// that a caller compiled for other target features (the AVX2 copy of the forward
+    /// dynamics' derivatives) gets the body compiled into it rather than a call of the
+    /// baseline one.
+    pub(crate) inlined_body: bool,
 }
 
 impl<'a> Fn<'a> {
@@ -64,6 +69,7 @@ impl<'a> Fn<'a> {
             finish,
             generic: true,
             kernel: None,
+            inlined_body: false,
         }
     }
 
@@ -71,6 +77,12 @@ impl<'a> Fn<'a> {
     /// const arguments `args`.
     pub(crate) fn dispatched(mut self, name: &'static str, args: TokenStream) -> Self {
         self.kernel = Some((name, args));
+        self
+    }
+
+    /// The same method with its body in a hidden `__NAME_body` that callers can inline.
+    pub(crate) fn with_inlined_body(mut self) -> Self {
+        self.inlined_body = true;
         self
     }
 
@@ -179,6 +191,11 @@ pub(crate) fn emit_fn(
                 quote!(#[doc = #doc] #inline fn #name #generics),
             ),
         ),
+        (None, None) if f.inlined_body => (
+            quote::format_ident!("__{}_body", f.name),
+            quote!(#[doc(hidden)] #[inline(always)]),
+            forwarder(n, f, quote!(#[doc = #doc] #inline fn #name #generics)),
+        ),
         _ => (
             name,
             quote!(#[doc = #doc] #hidden #inline),
@@ -239,6 +256,28 @@ fn packed_body(n: usize, f: &Fn<'_>, pk: &Packed) -> Result<TokenStream, EmitErr
         (&unpack, &rendered.statements),
         &result,
     ))
+}
+
+/// `head(&self, inputs) -> RET { self.__NAME_body(inputs) }`: the method `f` as a call of its
+/// hidden body (see [`Fn::inlined_body`]).
+pub(crate) fn forwarder(n: usize, f: &Fn<'_>, head: TokenStream) -> TokenStream {
+    let body = quote::format_ident!("__{}_body", f.name);
+    let locals: Vec<_> = f
+        .params
+        .iter()
+        .filter_map(|p| match *p {
+            Param::Joints(name, _) => Some(local(name)),
+            Param::Force | Param::Torque => None,
+        })
+        .collect();
+    let real = if f.generic { quote!(__T) } else { quote!(#F64) };
+    let nn = Literal::usize_unsuffixed(n);
+    let ret = &f.ret;
+    quote! {
+        #head(&self, #(#locals: &::planar_arm::nalgebra::SVector<#real, #nn>),*) -> #ret {
+            self.#body(#(#locals),*)
+        }
+    }
 }
 
 /// `head(&self, inputs) -> RET { dispatch(KERNEL::<Self, ARGS> { arm: self, inputs }) }`: the

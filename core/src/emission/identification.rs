@@ -98,6 +98,7 @@ pub(crate) fn identification_impl(
             touch: TokenStream::new(),
             finish: Box::new(move |ids| matrix(n, pp, ids)),
             kernel: None,
+            inlined_body: false,
         },
         Fn {
             name: "standard_parameters",
@@ -109,6 +110,7 @@ pub(crate) fn identification_impl(
             touch: TokenStream::new(),
             finish: Box::new(vector),
             kernel: None,
+            inlined_body: false,
         },
         Fn {
             name: "base_regressor",
@@ -120,6 +122,7 @@ pub(crate) fn identification_impl(
             touch: TokenStream::new(),
             finish: Box::new(move |ids| matrix(n, bb, ids)),
             kernel: base_kernel,
+            inlined_body: false,
         },
         Fn {
             name: "base_parameters",
@@ -131,6 +134,7 @@ pub(crate) fn identification_impl(
             touch: TokenStream::new(),
             finish: Box::new(vector),
             kernel: None,
+            inlined_body: false,
         },
     ];
     let mut fns = Vec::new();

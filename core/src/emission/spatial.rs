@@ -210,18 +210,22 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
         d.bias.clone(),
         Box::new(vector),
     ));
-    fns.push(Fn::new(
-        "mass_matrix_and_bias",
-        vec![q, qd],
-        quote!((#mm, #v)),
-        "The mass matrix and the bias h = c + g + f in one program.".to_string(),
-        d.mass_matrix_and_bias.clone(),
-        Box::new(move |ids| {
-            let m = matrix(n, n, &ids[..n * n]);
-            let h = vector(&ids[n * n..]);
-            quote!((#m, #h))
-        }),
-    ));
+    fns.push(
+        Fn::new(
+            "mass_matrix_and_bias",
+            vec![q, qd],
+            quote!((#mm, #v)),
+            "The mass matrix and the bias h = c + g + f in one program.".to_string(),
+            d.mass_matrix_and_bias.clone(),
+            Box::new(move |ids| {
+                let m = matrix(n, n, &ids[..n * n]);
+                let h = vector(&ids[n * n..]);
+                quote!((#m, #h))
+            }),
+        )
+        // The forward dynamics' derivatives compile it into their AVX2 copy.
+        .with_inlined_body(),
+    );
     if let Some(method) = &d.inverse_dynamics_derivatives {
         let f64mat = quote!(::planar_arm::nalgebra::SMatrix<#F64, #nn, #nn>);
         fns.push(

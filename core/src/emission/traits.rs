@@ -13,6 +13,7 @@ const DYNAMICS: &[&str] = &[
     "friction",
     "bias",
     "mass_matrix_and_bias",
+    "__mass_matrix_and_bias_body",
     "inverse_dynamics",
     "forward_dynamics",
     "inverse_dynamics_derivatives",

@@ -5,7 +5,7 @@
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
-use crate::emission::function::{emit_fn, Fn, FrozenVariant, Param};
+use crate::emission::function::{emit_fn, forwarder, Fn, FrozenVariant, Param};
 use crate::emit::{local, render, EmitError, Scalar};
 use crate::frozen::{freeze, Frozen};
 use crate::methods::Method;
@@ -126,10 +126,22 @@ fn frozen_wrapper(
     let ret = &f.ret;
     let touch = &f.touch;
     let b = local("block");
+    let (head, wrapper) = if f.inlined_body {
+        let body = quote::format_ident!("__{}_body", f.name);
+        (
+            quote!(#[doc(hidden)] #[inline(always)] fn #body),
+            forwarder(
+                n,
+                f,
+                quote!(#[doc = #doc] #[inline] fn #name<__T: ::planar_arm::Real>),
+            ),
+        )
+    } else {
+        (quote!(#[doc = #doc] #[inline] fn #name), TokenStream::new())
+    };
     Ok(quote! {
-        #[doc = #doc]
-        #[inline]
-        fn #name<__T: ::planar_arm::Real>(
+        #wrapper
+        #head<__T: ::planar_arm::Real>(
             &self, #(#args: &::planar_arm::nalgebra::SVector<__T, #nn>),*
         ) -> #ret {
             #touch
