@@ -1,5 +1,5 @@
 //! The derivatives of the dynamics and a spatial arm's base regressor run in a copy compiled for
-//! AVX2 where the processor has it.
+//! AVX2 and FMA where the processor has them.
 //!
 //! `inverse_dynamics_derivatives` is thousands of straight-line operations, too long for the
 //! baseline x86-64 instruction set's two-operand SSE2 forms: the PUMA 560's compiled to 7,900
@@ -8,7 +8,8 @@
 //! three-operand forms is 34 KB and ran 1.9-2.8x faster (docs/performance.md). A
 //! user's build passes no `target-cpu`, so the crate compiles these methods twice, as BLAS
 //! libraries do, and chooses at run time: [`dispatch`] asks the processor (the standard library
-//! caches the answer) and runs the AVX2 copy where it can.
+//! caches the answer) and runs the AVX2 copy where it can. That copy enables FMA too, which
+//! every processor with AVX2 has, for the packed programs' fused multiply-adds.
 //!
 //! Each copy hands the body its lanes (src/lanes.rs). Where they are AVX2 registers, a spatial
 //! arm's inverse derivatives run the packed program the derive emits beside the one-direction
@@ -17,16 +18,17 @@
 //! portable lanes would only slow down (more operations, none of them in vector registers).
 //!
 //! Otherwise the two copies compute the same function to the bit: Rust does not contract
-//! `a * b + c` into a fused multiply-add unless asked, so enabling AVX2 changes the
-//! instructions and not the rounding. The packed program adds the same terms in another order,
-//! so it agrees with the one-direction program to rounding, and to the bit with itself in
-//! portable lanes (`tests/dispatch.rs` checks both in an optimised build).
+//! `a * b + c` into a fused multiply-add unless asked, so enabling AVX2 and FMA changes the
+//! instructions and not the rounding. The packed program adds the same terms in another order
+//! and asks for its fused multiply-adds (`Lanes::mul_add`, rounded once), so it agrees with the
+//! one-direction program to rounding, and to the bit with itself in portable lanes, whose
+//! `mul_add` is IEEE's (`tests/dispatch.rs` checks both in an optimised build).
 //!
 //! Only optimised builds without debug assertions (Cargo's `release` and `bench` profiles) on
 //! x86-64 with `std` compile the second copy: a `dev` build would spend compile time on a copy
 //! it does not optimise, and without `std` there is no run-time detection. Where the build
-//! already targets AVX2 (`-C target-cpu=native`), there is one copy, with AVX2 lanes, and no
-//! question asked.
+//! already targets AVX2 and FMA (`-C target-cpu=native`), there is one copy, with AVX2 lanes,
+//! and no question asked.
 //!
 //! A spatial arm's `base_regressor` runs through it too, with a packed program that carries
 //! four joints per register (`programs::spatial_regressor` in the engine). Its result is large
@@ -54,14 +56,18 @@ pub fn dispatch<K: Kernel>(k: K) -> K::Output {
         target_arch = "x86_64",
         feature = "std",
         not(debug_assertions),
-        not(target_feature = "avx2")
+        not(all(target_feature = "avx2", target_feature = "fma"))
     ))]
     {
         return copies::run(k);
     }
-    #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+    #[cfg(all(
+        target_arch = "x86_64",
+        target_feature = "avx2",
+        target_feature = "fma"
+    ))]
     {
-        // SAFETY: the build targets AVX2, so every processor that runs it has AVX2.
+        // SAFETY: the build targets AVX2 and FMA, so every processor that runs it has both.
         #[allow(unsafe_code)]
         return k.run(unsafe { crate::lanes::Avx2::new() });
     }
@@ -74,7 +80,7 @@ pub fn dispatch<K: Kernel>(k: K) -> K::Output {
     target_arch = "x86_64",
     feature = "std",
     not(debug_assertions),
-    not(target_feature = "avx2")
+    not(all(target_feature = "avx2", target_feature = "fma"))
 ))]
 #[allow(unsafe_code)]
 mod copies {
@@ -91,26 +97,26 @@ mod copies {
     #[inline(always)]
     pub(super) fn run<K: Kernel>(k: K) -> K::Output {
         let copy: unsafe fn(K, &mut MaybeUninit<K::Output>) =
-            if std::is_x86_feature_detected!("avx2") {
+            if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
                 avx2::<K>
             } else {
                 baseline::<K>
             };
         let mut out = MaybeUninit::uninit();
         // SAFETY: `avx2` is chosen only where the processor has just said that it supports
-        // AVX2; `baseline` has no requirement.
+        // AVX2 and FMA; `baseline` has no requirement.
         unsafe { copy(k, &mut out) };
         // SAFETY: both copies write `out` when they return; a panic in the body unwinds past
         // this line.
         unsafe { out.assume_init() }
     }
 
-    /// `k.run()` compiled with AVX2 enabled (the body is inlined into it), into `out`.
+    /// `k.run()` compiled with AVX2 and FMA enabled (the body is inlined into it), into `out`.
     ///
     /// # Safety
     ///
-    /// The processor must support AVX2.
-    #[target_feature(enable = "avx2")]
+    /// The processor must support AVX2 and FMA.
+    #[target_feature(enable = "avx2,fma")]
     unsafe fn avx2<K: Kernel>(k: K, out: &mut MaybeUninit<K::Output>) {
         // SAFETY: the caller has asked the processor.
         out.write(k.run(unsafe { Avx2::new() }));

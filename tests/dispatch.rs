@@ -1,14 +1,15 @@
 //! The methods run through `__private::dispatch` (the derivatives of the dynamics, a spatial
 //! arm's base regressor) give, bit for bit, what their bodies give called directly; and those
-//! bodies //! are the right functions (the inverse dynamics' derivatives, one direction at a time and packed
+//! bodies are the right functions (the inverse dynamics' derivatives, one direction at a time and packed
 //! four directions at a time, against the inverse dynamics in run-time jets, the forward
 //! dynamics' `dqdd/dtau` against the mass matrix, the base regressor times the base parameters
 //! against the inverse dynamics).
 //!
 //! In a `dev` build the dispatched method runs the one-direction body, so the bit-for-bit
-//! comparison means something only in an optimised build on a processor with AVX2, where the
-//! public method runs the copy compiled for AVX2, with the packed body in AVX2 registers, and
-//! the test calls the packed body in portable lanes: CI runs this file with `--release`.
+//! comparison means something only in an optimised build on a processor with AVX2 and FMA,
+//! where the public method runs the copy compiled for them, with the packed body in AVX2
+//! registers and its multiply-adds fused, and the test calls the packed body in portable lanes,
+//! whose `mul_add` rounds once too: CI runs this file with `--release`.
 
 mod common;
 
@@ -65,12 +66,14 @@ struct SevenWithSlide {
 }
 
 /// Whether the dispatched methods run the AVX2 copy, with the packed programs: an optimised
-/// build on a processor with AVX2 (or a build for AVX2).
+/// build on a processor with AVX2 and FMA (or a build for both).
 fn avx2_copy() -> bool {
     #[cfg(target_arch = "x86_64")]
     {
-        cfg!(target_feature = "avx2")
-            || (!cfg!(debug_assertions) && std::is_x86_feature_detected!("avx2"))
+        (cfg!(target_feature = "avx2") && cfg!(target_feature = "fma"))
+            || (!cfg!(debug_assertions)
+                && std::is_x86_feature_detected!("avx2")
+                && std::is_x86_feature_detected!("fma"))
     }
     #[cfg(not(target_arch = "x86_64"))]
     {

@@ -157,10 +157,12 @@ pub(crate) fn emit_fn(
         };
         let cost = match packed {
             Some(pk) => format!(
-                "{}; where the processor has AVX2, {} on scalars and {} four-lane operations",
+                "{}; where the processor has AVX2, {} on scalars and {} four-lane operations \
+                 ({} of them fused multiply-adds)",
                 method.op_count(),
                 pk.values.op_count(),
                 pk.lane_op_count(),
+                pk.fused_count(),
             ),
             None => method.op_count().to_string(),
         };

@@ -71,6 +71,18 @@ pub(crate) fn render_packed(pk: &Packed) -> Result<Rendered, EmitError> {
                     vec![statement_of[a]],
                 )
             }
+            Lane::MulAdd(a, v, c) | Lane::NegMulAdd(a, v, c) | Lane::MulSub(a, v, c) => {
+                let (x, v, y) = (name(a), s(v), name(c));
+                let f = match *op {
+                    Lane::MulAdd(..) => quote!(mul_add),
+                    Lane::NegMulAdd(..) => quote!(neg_mul_add),
+                    _ => quote!(mul_sub),
+                };
+                (
+                    quote!(#lanes.#f(#x, #v, #y)),
+                    vec![statement_of[a], statement_of[c]],
+                )
+            }
         };
         statement_of[k] = bind(&mut statements, &mut last_read, name(k), value, &reads, 0);
     }
