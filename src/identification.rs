@@ -82,8 +82,8 @@ pub trait Identification<const N: usize, const P: usize, const B: usize>: Dynami
     /// The base regressor, N x B: the regressor's columns of the base parameters.
     ///
     /// For a spatial arm, an optimised build on x86-64 runs this where the processor has AVX2
-    /// as a second generated program that carries four joints per register (the same entries
-    /// to rounding, not to the bit; see the method's docs for both costs).
+    /// and FMA as a second generated program that carries four joints per register (the same
+    /// entries to rounding, not to the bit; see the method's docs for both costs).
     fn base_regressor(
         &self,
         q: &SVector<f64, N>,

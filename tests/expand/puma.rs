@@ -1692,7 +1692,7 @@ Cost: 357 multiplications, 321 additions, 0 divisions, 5 sin_cos pairs.*/
 
 the unrolled recursive Newton-Euler algorithm differentiated at compile time, operation by operation, four directions at a time
 
-Cost: 1456 multiplications, 1164 additions, 0 divisions, 5 sin_cos pairs; where the processor has AVX2, 200 multiplications, 160 additions, 0 divisions, 5 sin_cos pairs on scalars and 799 four-lane operations (310 of them fused multiply-adds).*/
+Cost: 1456 multiplications, 1164 additions, 0 divisions, 5 sin_cos pairs; where the processor has AVX2 and FMA, 200 multiplications, 160 additions, 0 divisions, 5 sin_cos pairs on scalars and 799 four-lane operations (310 of them fused multiply-adds).*/
     #[inline]
     fn inverse_dynamics_derivatives(
         &self,
@@ -5394,7 +5394,7 @@ Cost: 0 multiplications, 0 additions, 0 divisions, 0 sin_cos pairs.*/
 
 the recursive Newton-Euler algorithm unrolled, each link in its own frame, the joints' constant transformations folded in: once per standard parameter, that parameter one and the others zero (the forces are linear in them), the motion of the links shared
 
-Cost: 464 multiplications, 398 additions, 0 divisions, 5 sin_cos pairs; where the processor has AVX2, 141 multiplications, 177 additions, 0 divisions, 5 sin_cos pairs on scalars and 212 four-lane operations (112 of them fused multiply-adds).*/
+Cost: 464 multiplications, 398 additions, 0 divisions, 5 sin_cos pairs; where the processor has AVX2 and FMA, 141 multiplications, 177 additions, 0 divisions, 5 sin_cos pairs on scalars and 212 four-lane operations (112 of them fused multiply-adds).*/
     #[inline]
     fn base_regressor(
         &self,

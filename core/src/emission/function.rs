@@ -157,8 +157,8 @@ pub(crate) fn emit_fn(
         };
         let cost = match packed {
             Some(pk) => format!(
-                "{}; where the processor has AVX2, {} on scalars and {} four-lane operations \
-                 ({} of them fused multiply-adds)",
+                "{}; where the processor has AVX2 and FMA, {} on scalars and {} four-lane \
+                 operations ({} of them fused multiply-adds)",
                 method.op_count(),
                 pk.values.op_count(),
                 pk.lane_op_count(),
