@@ -10,7 +10,7 @@ use nalgebra::{Isometry2, SMatrix, SVector, Translation2, UnitComplex};
 
 use crate::Real;
 
-/// The largest methods' bodies, run in an AVX2 copy where the processor has it.
+/// The largest methods' bodies, run in an AVX2 and FMA copy where the processor has them.
 pub use crate::dispatch::{
     dispatch, BaseRegressor, ForwardDynamicsDerivatives, InverseDynamicsDerivatives, Kernel,
 };
@@ -18,8 +18,9 @@ pub use crate::dispatch::{
 pub use crate::lanes::{Lanes, Portable};
 /// The forward dynamics' solve after `mass_matrix_and_bias` (three or more joints).
 pub use crate::ldlt::{forward_solve, Floor};
-/// The trait's default for the forward dynamics' derivatives, named here for the benches.
-pub use crate::mass_inverse::Cholesky;
+/// The trait's default for the forward dynamics' derivatives, named here for the benches and
+/// for the spatial derive's AVX2 override of it.
+pub use crate::mass_inverse::{forward_derivatives, Cholesky};
 
 #[inline(always)]
 #[must_use]

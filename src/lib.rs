@@ -227,7 +227,7 @@
 //! paper's hand derivations are reproduced exactly where they are right.
 #![cfg_attr(not(feature = "std"), no_std)]
 // `unsafe` only in `dispatch` and `lanes`: calling the AVX2 copy of a generated method after the
-// processor has said it runs AVX2, the result it writes, and that copy's intrinsics.
+// processor has said it runs AVX2 and FMA, the result it writes, and that copy's intrinsics.
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
 

@@ -125,6 +125,29 @@ impl<const N: usize> Cholesky<N> {
     }
 }
 
+/// The forward dynamics' derivatives of `arm` from its `(M, h)` at `(q, qd)`: one factor of M
+/// serves the accelerations and `M^-1`, and the inverse dynamics' derivatives are taken at
+/// those accelerations (the dispatched method, so that its body's two copies stay the only
+/// ones). NaN everywhere if M has no factor (only with NaN or infinite input).
+#[allow(clippy::type_complexity)]
+#[inline(always)]
+#[must_use]
+pub fn forward_derivatives<A: crate::Dynamics<N> + ?Sized, const N: usize>(
+    arm: &A,
+    (m, h): (SMatrix<f64, N, N>, SVector<f64, N>),
+    q: &SVector<f64, N>,
+    qd: &SVector<f64, N>,
+    tau: &SVector<f64, N>,
+) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
+    let Some(factor) = Cholesky::new(&m) else {
+        let nan = SMatrix::from_element(f64::NAN);
+        return (nan, nan, nan);
+    };
+    let qdd = factor.solve(&(tau - h));
+    let (dq, dqd) = arm.inverse_dynamics_derivatives(q, qd, &qdd);
+    factor.inverse_products(&dq, &dqd)
+}
+
 /// `-inv x`, both stored by columns. A function, not a closure, so that it is inlined into the
 /// AVX2 copy of its caller and vectorised there (a closure was compiled on its own, for the
 /// baseline).

@@ -125,13 +125,13 @@ pub trait Dynamics<const N: usize> {
     ///
     /// In a build without debug assertions (Cargo's `release` profile) on x86-64 with `std`,
     /// the emitted program (and [`forward_dynamics_derivatives`](Self::forward_dynamics_derivatives))
-    /// runs in a second copy compiled for AVX2 where the processor has it, chosen at run time:
-    /// 1.9-2.8x faster for the PUMA 560 in the benchmarks (docs/performance.md), and the same
-    /// result to the bit (no fused multiply-add; `tests/dispatch.rs`). For spatial arms that
-    /// copy runs a second emitted program, the same chain rule applied four directions at a
-    /// time in AVX2 registers (its four-lane operation count is in the method's docs), which
-    /// agrees with the first to rounding and was another 1.6-3.6x faster for the PUMA 560 and
-    /// the Panda.
+    /// runs in a second copy compiled for AVX2 and FMA where the processor has them, chosen at
+    /// run time: 1.9-2.8x faster for the PUMA 560 in the benchmarks (docs/performance.md), and
+    /// the same result to the bit (Rust fuses no multiply-add it is not asked to;
+    /// `tests/dispatch.rs`). For spatial arms that copy runs a second emitted program, the same
+    /// chain rule applied four directions at a time in AVX2 registers, its products fused into
+    /// multiply-adds (its four-lane operation count is in the method's docs), which agrees with
+    /// the first to rounding and was another 1.6-3.6x faster for the PUMA 560 and the Panda.
     fn inverse_dynamics_derivatives(
         &self,
         q: &SVector<f64, N>,
@@ -142,7 +142,7 @@ pub trait Dynamics<const N: usize> {
     }
     /// The body of [`inverse_dynamics_derivatives`](Self::inverse_dynamics_derivatives): these
     /// jets, or the program the derive emits, which the emitted method runs through
-    /// `__private::dispatch` (the AVX2 copy where the processor has it).
+    /// `__private::dispatch` (the AVX2 copy where the processor has AVX2 and FMA).
     #[doc(hidden)]
     fn __inverse_dynamics_derivatives_kernel(
         &self,
@@ -196,8 +196,8 @@ pub trait Dynamics<const N: usize> {
         })
     }
     /// The body of [`forward_dynamics_derivatives`](Self::forward_dynamics_derivatives), run
-    /// through `__private::dispatch` (the AVX2 copy where the processor has it): this default,
-    /// or the program the derive emits.
+    /// through `__private::dispatch` (the AVX2 copy where the processor has AVX2 and FMA): this
+    /// default, or the program the derive emits.
     #[doc(hidden)]
     #[inline(always)]
     fn __forward_dynamics_derivatives_kernel(
@@ -206,20 +206,13 @@ pub trait Dynamics<const N: usize> {
         qd: &SVector<f64, N>,
         tau: &SVector<f64, N>,
     ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
-        // One evaluation of M and h and one factor of M serve the accelerations and M^-1.
-        let (m, h) = self.__mass_matrix_and_bias_body(q, qd);
-        let Some(factor) = mass_inverse::Cholesky::new(&m) else {
-            let nan = SMatrix::from_element(f64::NAN);
-            return (nan, nan, nan);
-        };
-        let qdd = factor.solve(&(tau - h));
-        // The dispatched method, not its body: the body's two copies stay the only ones.
-        let (dq, dqd) = self.inverse_dynamics_derivatives(q, qd, &qdd);
-        factor.inverse_products(&dq, &dqd)
+        mass_inverse::forward_derivatives(self, self.mass_matrix_and_bias(q, qd), q, qd, tau)
     }
 
     /// The forward derivatives in `lanes`: the body above, whose inverse derivatives are
-    /// dispatched on their own.
+    /// dispatched on their own. A spatial arm's derive overrides it with the same computation
+    /// from `__mass_matrix_and_bias_body`, so that the AVX2 copy computes M and h in AVX2 code
+    /// rather than calling the baseline's (the baseline copy keeps the call).
     #[doc(hidden)]
     #[inline(always)]
     fn __forward_dynamics_derivatives_packed<L: crate::__private::Lanes>(

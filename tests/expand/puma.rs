@@ -3895,6 +3895,29 @@ Cost: 1456 multiplications, 1164 additions, 0 divisions, 5 sin_cos pairs; where 
             [::planar_arm::__private::Floor::Relative; 6],
         )
     }
+    /// The forward dynamics' derivatives in the dispatch's AVX2 copy: the default's
+    /// computation, with M and h compiled into that copy.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __forward_dynamics_derivatives_packed<__L: ::planar_arm::__private::Lanes>(
+        &self,
+        _: __L,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+        __tau: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+    ) -> (
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 6, 6>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 6, 6>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 6, 6>,
+    ) {
+        ::planar_arm::__private::forward_derivatives(
+            self,
+            self.__mass_matrix_and_bias_body(__q, __qd),
+            __q,
+            __qd,
+            __tau,
+        )
+    }
     /// The kinetic energy qd^T M qd / 2, J, armature included.
     #[inline]
     fn kinetic_energy<__T: ::planar_arm::Real>(

@@ -196,7 +196,7 @@ pub(crate) fn emit_fn(
         (None, None) if f.inlined_body => (
             quote::format_ident!("__{}_body", f.name),
             quote!(#[doc(hidden)] #[inline(always)]),
-            forwarder(n, f, quote!(#[doc = #doc] #inline fn #name #generics)),
+            forwarder(n, f, quote!(#[doc = #doc] #inline fn #name #generics))?,
         ),
         _ => (
             name,
@@ -262,24 +262,28 @@ fn packed_body(n: usize, f: &Fn<'_>, pk: &Packed) -> Result<TokenStream, EmitErr
 
 /// `head(&self, inputs) -> RET { self.__NAME_body(inputs) }`: the method `f` as a call of its
 /// hidden body (see [`Fn::inlined_body`]).
-pub(crate) fn forwarder(n: usize, f: &Fn<'_>, head: TokenStream) -> TokenStream {
-    let body = quote::format_ident!("__{}_body", f.name);
-    let locals: Vec<_> = f
-        .params
-        .iter()
-        .filter_map(|p| match *p {
-            Param::Joints(name, _) => Some(local(name)),
-            Param::Force | Param::Torque => None,
-        })
-        .collect();
-    let real = if f.generic { quote!(__T) } else { quote!(#F64) };
-    let nn = Literal::usize_unsuffixed(n);
-    let ret = &f.ret;
-    quote! {
-        #head(&self, #(#locals: &::planar_arm::nalgebra::SVector<#real, #nn>),*) -> #ret {
-            self.#body(#(#locals),*)
-        }
+///
+/// # Errors
+///
+/// An internal error for a method that takes a tip load, which this does not hand on.
+pub(crate) fn forwarder(n: usize, f: &Fn<'_>, head: TokenStream) -> Result<TokenStream, EmitError> {
+    if f.params.iter().any(|p| !matches!(p, Param::Joints(..))) {
+        return Err(EmitError {
+            message: format!(
+                "internal: `{}` has an inlined body but takes a tip load",
+                f.name
+            ),
+        });
     }
+    let body = quote::format_ident!("__{}_body", f.name);
+    let (_, locals) = joint_inputs(f);
+    Ok(delegate(
+        n,
+        f,
+        head,
+        &locals,
+        &quote!(self.#body(#(#locals),*)),
+    ))
 }
 
 /// `head(&self, inputs) -> RET { dispatch(KERNEL::<Self, ARGS> { arm: self, inputs }) }`: the
@@ -292,23 +296,41 @@ fn dispatcher(
     head: TokenStream,
 ) -> TokenStream {
     let kernel = quote::format_ident!("{kernel}");
-    let (fields, locals): (Vec<_>, Vec<_>) = f
-        .params
+    let (fields, locals) = joint_inputs(f);
+    let call = quote! {
+        ::planar_arm::__private::dispatch(::planar_arm::__private::#kernel::<Self, #args> {
+            arm: self,
+            #(#fields: #locals),*
+        })
+    };
+    delegate(n, f, head, &locals, &call)
+}
+
+/// The joint-vector inputs of `f`: their names, and the locals the method binds them to.
+fn joint_inputs(f: &Fn<'_>) -> (Vec<proc_macro2::Ident>, Vec<proc_macro2::Ident>) {
+    f.params
         .iter()
         .filter_map(|p| match *p {
             Param::Joints(name, _) => Some((quote::format_ident!("{name}"), local(name))),
             Param::Force | Param::Torque => None,
         })
-        .unzip();
+        .unzip()
+}
+
+/// `head(&self, locals) -> RET { call }`: a method that hands its joint vectors on.
+fn delegate(
+    n: usize,
+    f: &Fn<'_>,
+    head: TokenStream,
+    locals: &[proc_macro2::Ident],
+    call: &TokenStream,
+) -> TokenStream {
     let real = if f.generic { quote!(__T) } else { quote!(#F64) };
     let nn = Literal::usize_unsuffixed(n);
     let ret = &f.ret;
     quote! {
         #head(&self, #(#locals: &::planar_arm::nalgebra::SVector<#real, #nn>),*) -> #ret {
-            ::planar_arm::__private::dispatch(::planar_arm::__private::#kernel::<Self, #args> {
-                arm: self,
-                #(#fields: #locals),*
-            })
+            #call
         }
     }
 }

@@ -82,7 +82,7 @@ pub(crate) fn identification_impl(
     let qd = Param::Joints("qd", Input::Qd);
     let qdd = Param::Joints("qdd", Input::Qdd);
     // A base regressor with a packed program (spatial arms) runs through the dispatch, which
-    // passes AVX2 lanes where the processor has them.
+    // passes AVX2 lanes where the processor has AVX2 and FMA.
     let base_kernel = base_regressor
         .packed
         .is_some()

@@ -290,8 +290,10 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
 
 /// `forward_dynamics` and `kinetic_energy`, written as calls of the generated
 /// `mass_matrix_and_bias` and `mass_matrix` and of the run-time crate: planar arms' `L D L^T`
-/// solve (each pivot floored at 2^-52 `M_ii`) and quadratic form.
-fn solved(n: usize) -> [TokenStream; 3] {
+/// solve (each pivot floored at 2^-52 `M_ii`) and quadratic form; and the forward dynamics'
+/// derivatives in the dispatch's AVX2 copy, the trait's default computed from the inlined body
+/// of `mass_matrix_and_bias`.
+fn solved(n: usize) -> [TokenStream; 4] {
     let nn = Literal::usize_unsuffixed(n);
     let v = quote!(::planar_arm::nalgebra::SVector<__T, #nn>);
     let (q, qd, tau) = (local("q"), local("qd"), local("tau"));
@@ -325,6 +327,27 @@ fn solved(n: usize) -> [TokenStream; 3] {
                 let (#m, #h) = self.__mass_matrix_and_bias_frozen(__block, #q, #qd);
                 ::planar_arm::__private::forward_solve(
                     &#m, #tau, &#h, [::planar_arm::__private::Floor::Relative; #nn],
+                )
+            }
+        },
+        quote! {
+            /// The forward dynamics' derivatives in the dispatch's AVX2 copy: the default's
+            /// computation, with M and h compiled into that copy.
+            #[doc(hidden)]
+            #[inline(always)]
+            fn __forward_dynamics_derivatives_packed<__L: ::planar_arm::__private::Lanes>(
+                &self,
+                _: __L,
+                #q: &::planar_arm::nalgebra::SVector<#F64, #nn>,
+                #qd: &::planar_arm::nalgebra::SVector<#F64, #nn>,
+                #tau: &::planar_arm::nalgebra::SVector<#F64, #nn>,
+            ) -> (
+                ::planar_arm::nalgebra::SMatrix<#F64, #nn, #nn>,
+                ::planar_arm::nalgebra::SMatrix<#F64, #nn, #nn>,
+                ::planar_arm::nalgebra::SMatrix<#F64, #nn, #nn>,
+            ) {
+                ::planar_arm::__private::forward_derivatives(
+                    self, self.__mass_matrix_and_bias_body(#q, #qd), #q, #qd, #tau,
                 )
             }
         },

@@ -21,6 +21,7 @@ const DYNAMICS: &[&str] = &[
     "__inverse_dynamics_derivatives_packed",
     "forward_dynamics_derivatives",
     "__forward_dynamics_derivatives_kernel",
+    "__forward_dynamics_derivatives_packed",
     "kinetic_energy",
     "potential_energy",
     "__Frozen",

@@ -32,8 +32,8 @@ pub enum Lane {
     Neg(usize),
     /// Every lane times one scalar value.
     Scale(usize, usize),
-    /// `a * s + c` for the lanes `a` and `c` and the scalar value `s`, rounded once (a fused
-    /// multiply-add, see [`fuse`]).
+    /// `a * s + c` for the lanes `a` and `c` and the scalar value `s`, rounded once: a fused
+    /// multiply-add, which [`pack`] makes of a sum that reads a product read nowhere else.
     MulAdd(usize, usize, usize),
     /// `c - a * s`, rounded once.
     NegMulAdd(usize, usize, usize),
@@ -152,8 +152,8 @@ fn live(ops: &[Lane], read: impl Iterator<Item = usize>) -> Vec<bool> {
 /// most of a derivative program such sums (`da b + a db`), and the processors that have AVX2
 /// have FMA, whose one instruction replaces two and rounds once; the product is left dead. A
 /// product with other readers stays: fused there too, its operands lived longer, and the
-/// Panda's inverse derivatives spilled more and measured 10 % slower than with this rule
-/// (docs/performance.md).
+/// Panda's inverse derivatives spilled more and measured slower than with this rule
+/// (docs/performance.md, "Seventh session").
 fn fuse(ops: &mut [Lane], outputs: &[usize]) {
     let live = live(ops, outputs.iter().copied());
     let mut readers = vec![0usize; ops.len()];

@@ -134,7 +134,7 @@ fn frozen_wrapper(
                 n,
                 f,
                 quote!(#[doc = #doc] #[inline] fn #name<__T: ::planar_arm::Real>),
-            ),
+            )?,
         )
     } else {
         (quote!(#[doc = #doc] #[inline] fn #name), TokenStream::new())
