@@ -86,6 +86,11 @@ impl<'a> Fn<'a> {
         self
     }
 
+    /// The name of the hidden body of a method [`with_inlined_body`](Self::with_inlined_body).
+    pub(crate) fn body_name(&self) -> proc_macro2::Ident {
+        quote::format_ident!("__{}_body", self.name)
+    }
+
     /// The same method in `f64` only.
     pub(crate) fn in_f64(mut self) -> Self {
         self.generic = false;
@@ -194,7 +199,7 @@ pub(crate) fn emit_fn(
             ),
         ),
         (None, None) if f.inlined_body => (
-            quote::format_ident!("__{}_body", f.name),
+            f.body_name(),
             quote!(#[doc(hidden)] #[inline(always)]),
             forwarder(n, f, quote!(#[doc = #doc] #inline fn #name #generics))?,
         ),
@@ -275,7 +280,7 @@ pub(crate) fn forwarder(n: usize, f: &Fn<'_>, head: TokenStream) -> Result<Token
             ),
         });
     }
-    let body = quote::format_ident!("__{}_body", f.name);
+    let body = f.body_name();
     let (_, locals) = joint_inputs(f);
     Ok(delegate(
         n,

@@ -41,6 +41,21 @@ pub enum Lane {
     MulSub(usize, usize, usize),
 }
 
+impl Lane {
+    /// The lane operations this one reads.
+    fn operands(self) -> [Option<usize>; 2] {
+        match self {
+            Lane::Const(_) => [None, None],
+            Lane::Neg(a) | Lane::Scale(a, _) => [Some(a), None],
+            Lane::Add(a, b)
+            | Lane::Sub(a, b)
+            | Lane::MulAdd(a, _, b)
+            | Lane::NegMulAdd(a, _, b)
+            | Lane::MulSub(a, _, b) => [Some(a), Some(b)],
+        }
+    }
+}
+
 /// The derivatives of some outputs along some directions, four directions per lane group.
 #[derive(Clone, Debug)]
 pub struct Packed {
@@ -128,19 +143,9 @@ fn live(ops: &[Lane], read: impl Iterator<Item = usize>) -> Vec<bool> {
         live[op] = true;
     }
     for k in (0..ops.len()).rev() {
-        if !live[k] {
-            continue;
-        }
-        match ops[k] {
-            Lane::Const(_) => {}
-            Lane::Add(a, b) | Lane::Sub(a, b) => {
-                live[a] = true;
-                live[b] = true;
-            }
-            Lane::Neg(a) | Lane::Scale(a, _) => live[a] = true,
-            Lane::MulAdd(a, _, c) | Lane::NegMulAdd(a, _, c) | Lane::MulSub(a, _, c) => {
-                live[a] = true;
-                live[c] = true;
+        if live[k] {
+            for x in ops[k].operands().into_iter().flatten() {
+                live[x] = true;
             }
         }
     }
@@ -161,13 +166,8 @@ fn fuse(ops: &mut [Lane], outputs: &[usize]) {
         readers[o] += 1;
     }
     for op in ops.iter().zip(&live).filter(|(_, &l)| l).map(|(op, _)| op) {
-        match *op {
-            Lane::Add(a, b) | Lane::Sub(a, b) => {
-                readers[a] += 1;
-                readers[b] += 1;
-            }
-            Lane::Neg(a) | Lane::Scale(a, _) => readers[a] += 1,
-            Lane::Const(_) | Lane::MulAdd(..) | Lane::NegMulAdd(..) | Lane::MulSub(..) => {}
+        for x in op.operands().into_iter().flatten() {
+            readers[x] += 1;
         }
     }
     for k in 0..ops.len() {

@@ -127,7 +127,7 @@ fn frozen_wrapper(
     let touch = &f.touch;
     let b = local("block");
     let (head, wrapper) = if f.inlined_body {
-        let body = quote::format_ident!("__{}_body", f.name);
+        let body = f.body_name();
         (
             quote!(#[doc(hidden)] #[inline(always)] fn #body),
             forwarder(
