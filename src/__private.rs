@@ -20,7 +20,9 @@ pub use crate::lanes::{Lanes, Portable};
 pub use crate::ldlt::{forward_solve, Floor};
 /// The trait's default for the forward dynamics' derivatives, named here for the benches and
 /// for the spatial derive's AVX2 override of it.
-pub use crate::mass_inverse::{forward_derivatives, Cholesky};
+pub use crate::mass_inverse::{
+    forward_derivatives, forward_derivatives_in, minus_product, negated_rows, Cholesky,
+};
 
 #[inline(always)]
 #[must_use]

@@ -83,15 +83,11 @@ impl<const N: usize> Cholesky<N> {
         SVector::from_data(ArrayStorage([y]))
     }
 
-    /// `(-M^-1 a, -M^-1 b, M^-1)`.
-    #[allow(clippy::type_complexity, clippy::needless_range_loop)]
+    /// `M^-1`, from `W = L^-1`: `M^-1 = W^T W`, symmetric to the bit.
+    #[allow(clippy::needless_range_loop)]
     #[inline(always)]
     #[must_use]
-    pub fn inverse_products(
-        &self,
-        a: &SMatrix<f64, N, N>,
-        b: &SMatrix<f64, N, N>,
-    ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
+    pub fn inverse(&self) -> SMatrix<f64, N, N> {
         let (l, r) = (&self.l, &self.r);
         // W = L^-1, lower triangular, by forward substitution column by column.
         let mut w = [[0.0f64; N]; N];
@@ -105,7 +101,7 @@ impl<const N: usize> Cholesky<N> {
                 w[i][j] = s * r[i];
             }
         }
-        // M^-1 = W^T W, symmetric, stored by columns like nalgebra.
+        // Stored by columns like nalgebra.
         let mut inv = [[0.0f64; N]; N];
         for j in 0..N {
             for i in j..N {
@@ -117,11 +113,20 @@ impl<const N: usize> Cholesky<N> {
                 inv[i][j] = s;
             }
         }
-        (
-            minus_product(&inv, &a.data.0),
-            minus_product(&inv, &b.data.0),
-            SMatrix::from_data(ArrayStorage(inv)),
-        )
+        SMatrix::from_data(ArrayStorage(inv))
+    }
+
+    /// `(-M^-1 a, -M^-1 b, M^-1)`.
+    #[allow(clippy::type_complexity)]
+    #[inline(always)]
+    #[must_use]
+    pub fn inverse_products(
+        &self,
+        a: &SMatrix<f64, N, N>,
+        b: &SMatrix<f64, N, N>,
+    ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
+        let inv = self.inverse();
+        (minus_product(&inv, a), minus_product(&inv, b), inv)
     }
 }
 
@@ -148,12 +153,56 @@ pub fn forward_derivatives<A: crate::Dynamics<N> + ?Sized, const N: usize>(
     factor.inverse_products(&dq, &dqd)
 }
 
+/// [`forward_derivatives`] in `lanes`, the products by `-M^-1` taken by the arm's
+/// `__forward_dynamics_derivatives_adjoint` (for a spatial arm, the inverse dynamics run
+/// backward from the torques weighted by the rows of `-M^-1`: `programs::adjoint` in the
+/// engine). NaN everywhere if M has no factor.
+#[allow(clippy::type_complexity)]
+#[inline(always)]
+#[must_use]
+pub fn forward_derivatives_in<A, L, const N: usize>(
+    arm: &A,
+    lanes: L,
+    (m, h): (SMatrix<f64, N, N>, SVector<f64, N>),
+    q: &SVector<f64, N>,
+    qd: &SVector<f64, N>,
+    tau: &SVector<f64, N>,
+) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>)
+where
+    A: crate::Dynamics<N> + ?Sized,
+    L: crate::__private::Lanes,
+{
+    let Some(factor) = Cholesky::new(&m) else {
+        let nan = SMatrix::from_element(f64::NAN);
+        return (nan, nan, nan);
+    };
+    let qdd = factor.solve(&(tau - h));
+    let inv = factor.inverse();
+    let (dq, dqd) = arm.__forward_dynamics_derivatives_adjoint(lanes, q, qd, &qdd, &inv);
+    (dq, dqd, inv)
+}
+
+/// Lanes `-m(r + l, k)` for `l` in `0..4`, zero past the last row: the seeds of a reverse-mode
+/// lane group (`programs::adjoint`), column `k` of `M^-1` (symmetric, so its row too) read
+/// where it is stored.
+#[inline(always)]
+#[must_use]
+pub fn negated_rows<const N: usize>(m: &SMatrix<f64, N, N>, k: usize, r: usize) -> [f64; 4] {
+    let column = &m.data.0[k];
+    core::array::from_fn(|l| column.get(r + l).map_or(0.0, |x| -x))
+}
+
 /// `-inv x`, both stored by columns. A function, not a closure, so that it is inlined into the
 /// AVX2 copy of its caller and vectorised there (a closure was compiled on its own, for the
 /// baseline).
 #[allow(clippy::needless_range_loop)]
 #[inline(always)]
-fn minus_product<const N: usize>(inv: &[[f64; N]; N], x: &[[f64; N]; N]) -> SMatrix<f64, N, N> {
+#[must_use]
+pub fn minus_product<const N: usize>(
+    inv: &SMatrix<f64, N, N>,
+    x: &SMatrix<f64, N, N>,
+) -> SMatrix<f64, N, N> {
+    let (inv, x) = (&inv.data.0, &x.data.0);
     let mut out = [[0.0f64; N]; N];
     for c in 0..N {
         for k in 0..N {

@@ -225,6 +225,28 @@ pub trait Dynamics<const N: usize> {
         self.__forward_dynamics_derivatives_kernel(q, qd, tau)
     }
 
+    /// `(-M^-1 dtau/dq, -M^-1 dtau/dqd)` at `(q, qd, qdd)` given `minv = M^-1`, in `lanes`:
+    /// the inverse dynamics' packed derivatives multiplied by `-M^-1`, or the program a spatial
+    /// arm's derive emits, which runs the inverse dynamics backward from the torques weighted
+    /// by the rows of `-M^-1` and gives the products directly (`programs::adjoint` in the
+    /// engine; docs/performance.md, "Eighth session").
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __forward_dynamics_derivatives_adjoint<L: crate::__private::Lanes>(
+        &self,
+        lanes: L,
+        q: &SVector<f64, N>,
+        qd: &SVector<f64, N>,
+        qdd: &SVector<f64, N>,
+        minv: &SMatrix<f64, N, N>,
+    ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
+        let (dq, dqd) = self.__inverse_dynamics_derivatives_packed(lanes, q, qd, qdd);
+        (
+            mass_inverse::minus_product(minv, &dq),
+            mass_inverse::minus_product(minv, &dqd),
+        )
+    }
+
     /// Kinetic energy, J: the links, the payload and the rotors (`armature qd_i^2 / 2`).
     fn kinetic_energy<T: Real>(&self, q: &SVector<T, N>, qd: &SVector<T, N>) -> T;
     /// Potential energy, J: gravity's, measured from the base's origin, and any joint

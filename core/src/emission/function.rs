@@ -245,12 +245,39 @@ fn function(
 /// The hidden `__NAME_packed(&self, __lanes, inputs)`: `f`'s outputs from the packed program
 /// `pk`, in the lanes the dispatch passes.
 fn packed_body(n: usize, f: &Fn<'_>, pk: &Packed) -> Result<TokenStream, EmitError> {
+    lanes_body(n, f, pk, "packed", None)
+}
+
+/// The hidden `__forward_dynamics_derivatives_adjoint(&self, __lanes, q, qd, qdd, __minv)` of
+/// `f` (the inverse dynamics' derivatives' signature): `(-M^-1 dtau/dq, -M^-1 dtau/dqd)` from
+/// the reverse-mode program `pk`, whose seeds read `__minv` (`programs::adjoint`).
+pub(crate) fn adjoint_body(n: usize, f: &Fn<'_>, pk: &Packed) -> Result<TokenStream, EmitError> {
+    let (minv, nn) = (local("minv"), Literal::usize_unsuffixed(n));
+    lanes_body(
+        n,
+        f,
+        pk,
+        "adjoint",
+        Some(quote!(#minv: &::planar_arm::nalgebra::SMatrix<#F64, #nn, #nn>)),
+    )
+}
+
+/// The hidden `__NAME_SUFFIX(&self, __lanes, inputs, extra)`: `f`'s outputs from the lane
+/// program `pk`.
+fn lanes_body(
+    n: usize,
+    f: &Fn<'_>,
+    pk: &Packed,
+    suffix: &str,
+    extra: Option<TokenStream>,
+) -> Result<TokenStream, EmitError> {
     let rendered = super::packed::render_packed(pk)?;
     let (mut params, unpack) = parameters(n, f, &rendered);
     let lanes = local("lanes");
     params.insert(0, quote!(#lanes: __L));
+    params.extend(extra);
     let result = (f.finish)(&rendered.outputs);
-    let name = quote::format_ident!("__{}_packed", f.name);
+    let name = quote::format_ident!("__{}_{suffix}", f.name);
     let generics = if f.generic {
         quote!(<__T: ::planar_arm::Real, __L: ::planar_arm::__private::Lanes>)
     } else {

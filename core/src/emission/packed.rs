@@ -46,6 +46,17 @@ pub(crate) fn render_packed(pk: &Packed) -> Result<Rendered, EmitError> {
                 let c = c.map(|x| Literal::f64_unsuffixed(f64::from(x)));
                 (quote!(#lanes.constant([#(#c),*])), vec![])
             }
+            Lane::Seed(k, g) => {
+                let (w, k, r) = (
+                    local("minv"),
+                    Literal::usize_unsuffixed(k),
+                    Literal::usize_unsuffixed(4 * g),
+                );
+                (
+                    quote!(#lanes.constant(::planar_arm::__private::negated_rows(#w, #k, #r))),
+                    vec![],
+                )
+            }
             Lane::Add(a, b) => {
                 let (x, y) = (name(a), name(b));
                 (

@@ -226,9 +226,10 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
         // The forward dynamics' derivatives compile it into their AVX2 copy.
         .with_inlined_body(),
     );
+    let mut adjoint = None;
     if let Some(method) = &d.inverse_dynamics_derivatives {
         let f64mat = quote!(::planar_arm::nalgebra::SMatrix<#F64, #nn, #nn>);
-        fns.push(
+        let derivatives = |method: crate::methods::Method| {
             Fn::new(
                 "inverse_dynamics_derivatives",
                 vec![q, qd, Param::Joints("qdd", Input::Qdd)],
@@ -236,7 +237,7 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
                 "The partial derivatives of `inverse_dynamics`, `(dtau/dq, dtau/dqd)` (`dtau/dqdd` \
                  is `mass_matrix`). Coulomb friction contributes 0 to `dtau/dqd`."
                     .to_string(),
-                method.clone(),
+                method,
                 Box::new(move |ids| {
                     let dq = matrix(n, n, &ids[..n * n]);
                     let dqd = matrix(n, n, &ids[n * n..]);
@@ -244,8 +245,14 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
                 }),
             )
             .in_f64()
-            .dispatched("InverseDynamicsDerivatives", quote!(#nn)),
-        );
+        };
+        // The forward dynamics' products by -M^-1, with the same inputs and outputs' shape.
+        if let Some(pk) = &d.forward_dynamics_adjoint {
+            let mut f = derivatives(pk.values.clone());
+            f.name = "forward_dynamics_derivatives";
+            adjoint = Some(super::function::adjoint_body(n, &f, pk)?);
+        }
+        fns.push(derivatives(method.clone()).dispatched("InverseDynamicsDerivatives", quote!(#nn)));
     }
     let mut body = Vec::with_capacity(fns.len() + 12);
     // The hot methods of an arm with run-time parameters read a block of its parameter-only
@@ -256,7 +263,8 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
         body.push(frozen::plain(n, f, &hot, split.as_ref())?);
     }
     body.extend(frozen::variants(n, &hot, split.as_ref())?);
-    body.extend(solved(n));
+    body.extend(solved(n, adjoint.is_some()));
+    body.extend(adjoint);
     body.push(exact(n, &d)?);
     let (names, names_doc) = (&header.joint_names, &header.joint_names_doc);
     body.push(quote! {
@@ -292,12 +300,23 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
 /// `mass_matrix_and_bias` and `mass_matrix` and of the run-time crate: planar arms' `L D L^T`
 /// solve (each pivot floored at 2^-52 `M_ii`) and quadratic form; and the forward dynamics'
 /// derivatives in the dispatch's AVX2 copy, the trait's default computed from the inlined body
-/// of `mass_matrix_and_bias`.
-fn solved(n: usize) -> [TokenStream; 4] {
+/// of `mass_matrix_and_bias`, with the products by `-M^-1` from the reverse-mode program where
+/// the arm has one (`adjoint`).
+fn solved(n: usize, adjoint: bool) -> [TokenStream; 4] {
     let nn = Literal::usize_unsuffixed(n);
     let v = quote!(::planar_arm::nalgebra::SVector<__T, #nn>);
     let (q, qd, tau) = (local("q"), local("qd"), local("tau"));
     let (m, h) = (local("m"), local("h"));
+    let lanes = if adjoint { local("lanes") } else { local("_") };
+    let derivatives = if adjoint {
+        quote!(::planar_arm::__private::forward_derivatives_in(
+            self, #lanes, self.__mass_matrix_and_bias_body(#q, #qd), #q, #qd, #tau,
+        ))
+    } else {
+        quote!(::planar_arm::__private::forward_derivatives(
+            self, self.__mass_matrix_and_bias_body(#q, #qd), #q, #qd, #tau,
+        ))
+    };
     [
         quote! {
             /// The accelerations qdd that solve M qdd = tau - c - g - f: M and h = c + g + f from
@@ -337,7 +356,7 @@ fn solved(n: usize) -> [TokenStream; 4] {
             #[inline(always)]
             fn __forward_dynamics_derivatives_packed<__L: ::planar_arm::__private::Lanes>(
                 &self,
-                _: __L,
+                #lanes: __L,
                 #q: &::planar_arm::nalgebra::SVector<#F64, #nn>,
                 #qd: &::planar_arm::nalgebra::SVector<#F64, #nn>,
                 #tau: &::planar_arm::nalgebra::SVector<#F64, #nn>,
@@ -346,9 +365,7 @@ fn solved(n: usize) -> [TokenStream; 4] {
                 ::planar_arm::nalgebra::SMatrix<#F64, #nn, #nn>,
                 ::planar_arm::nalgebra::SMatrix<#F64, #nn, #nn>,
             ) {
-                ::planar_arm::__private::forward_derivatives(
-                    self, self.__mass_matrix_and_bias_body(#q, #qd), #q, #qd, #tau,
-                )
+                #derivatives
             }
         },
         quote! {

@@ -22,6 +22,7 @@ const DYNAMICS: &[&str] = &[
     "forward_dynamics_derivatives",
     "__forward_dynamics_derivatives_kernel",
     "__forward_dynamics_derivatives_packed",
+    "__forward_dynamics_derivatives_adjoint",
     "kinetic_energy",
     "potential_energy",
     "__Frozen",

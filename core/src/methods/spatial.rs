@@ -49,6 +49,9 @@ pub struct SpatialDerived {
     pub coriolis_matrix: Method,
     /// `(dtau/dq, dtau/dqd)`, row-major each, where the program stays small.
     pub inverse_dynamics_derivatives: Option<Method>,
+    /// `(-M^-1 dtau/dq, -M^-1 dtau/dqd)` in reverse mode for a run-time `M^-1`, row-major each,
+    /// where the inverse dynamics' derivatives are emitted.
+    pub forward_dynamics_adjoint: Option<Box<crate::packed::Packed>>,
     /// M and c multiplied out from the Lagrangian, for `EXACT` and the docs; `None` where the
     /// kinematics is not expanded or they would exceed [`DYNAMICS_BUDGET`].
     pub dynamics: Option<SpatialDynamicsExpansion>,
@@ -66,6 +69,11 @@ impl SpatialDerived {
         let dynamics = kinematics
             .as_ref()
             .and_then(|_| expand_dynamics(arm, budget));
+        let inverse_dynamics_derivatives = newton_euler::inverse_dynamics_derivatives(arm);
+        let forward_dynamics_adjoint = inverse_dynamics_derivatives
+            .as_ref()
+            .and_then(|_| newton_euler::forward_dynamics_adjoint(arm))
+            .map(Box::new);
         Self {
             kinematics,
             dynamics,
@@ -81,7 +89,8 @@ impl SpatialDerived {
             friction: newton_euler::friction_method(arm),
             mass_matrix_and_bias: composite::mass_matrix_and_bias(arm),
             coriolis_matrix: composite::coriolis_matrix(arm),
-            inverse_dynamics_derivatives: newton_euler::inverse_dynamics_derivatives(arm),
+            inverse_dynamics_derivatives,
+            forward_dynamics_adjoint,
         }
     }
 }

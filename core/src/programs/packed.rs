@@ -39,13 +39,17 @@ pub enum Lane {
     NegMulAdd(usize, usize, usize),
     /// `a * s - c`, rounded once.
     MulSub(usize, usize, usize),
+    /// The seed of a reverse-mode program ([`adjoint`](crate::programs::adjoint)) for its
+    /// output `k` and lane group `g`: lane `l` is `-W(4g + l, k)`, `W` a matrix read at run
+    /// time (zero past its last row).
+    Seed(usize, usize),
 }
 
 impl Lane {
     /// The lane operations this one reads.
     fn operands(self) -> [Option<usize>; 2] {
         match self {
-            Lane::Const(_) => [None, None],
+            Lane::Const(_) | Lane::Seed(..) => [None, None],
             Lane::Neg(a) | Lane::Scale(a, _) => [Some(a), None],
             Lane::Add(a, b)
             | Lane::Sub(a, b)
@@ -83,12 +87,24 @@ impl Packed {
     /// given the inputs as [`Program::eval`] takes them.
     #[must_use]
     pub fn eval(&self, input: &dyn Fn(Input) -> f64) -> Vec<f64> {
+        self.eval_seeded(input, &|_, _| 0.0)
+    }
+
+    /// [`eval`](Self::eval) with the seeds of a reverse-mode program: `w(row, k)` is `W(row,
+    /// k)` of [`Lane::Seed`].
+    #[must_use]
+    pub fn eval_seeded(
+        &self,
+        input: &dyn Fn(Input) -> f64,
+        w: &dyn Fn(usize, usize) -> f64,
+    ) -> Vec<f64> {
         let scalars = self.values.eval(input);
         let mut lanes: Vec<[f64; 4]> = Vec::with_capacity(self.ops.len());
         for op in &self.ops {
             let lane = |f: &dyn Fn(usize) -> f64| -> [f64; 4] { core::array::from_fn(f) };
             let v = match *op {
                 Lane::Const(c) => c.map(f64::from),
+                Lane::Seed(k, g) => lane(&|l| -w(4 * g + l, k)),
                 Lane::Add(a, b) => lane(&|l| lanes[a][l] + lanes[b][l]),
                 Lane::Sub(a, b) => lane(&|l| lanes[a][l] - lanes[b][l]),
                 Lane::Neg(a) => lane(&|l| -lanes[a][l]),
@@ -114,7 +130,7 @@ impl Packed {
         self.ops
             .iter()
             .zip(self.live())
-            .filter(|(op, live)| *live && !matches!(op, Lane::Const(_)))
+            .filter(|(op, live)| *live && !matches!(op, Lane::Const(_) | Lane::Seed(..)))
             .count()
     }
 
@@ -224,16 +240,25 @@ fn groups(directions: &[Input]) -> Vec<[Option<Input>; 4]> {
 }
 
 /// Builds the lane operations, hash-consed.
-struct Builder {
-    ops: Vec<Lane>,
+pub(crate) struct Builder {
+    pub(crate) ops: Vec<Lane>,
     memo: BTreeMap<Lane, usize>,
     /// Scalar nodes read by the lanes, in first-read order, and their index.
-    scalars: Vec<Id>,
+    pub(crate) scalars: Vec<Id>,
     scalar_index: BTreeMap<Id, usize>,
 }
 
 impl Builder {
-    fn op(&mut self, lane: Lane) -> usize {
+    pub(crate) fn new() -> Self {
+        Self {
+            ops: Vec::new(),
+            memo: BTreeMap::new(),
+            scalars: Vec::new(),
+            scalar_index: BTreeMap::new(),
+        }
+    }
+
+    pub(crate) fn op(&mut self, lane: Lane) -> usize {
         if let Some(&k) = self.memo.get(&lane) {
             return k;
         }
@@ -242,13 +267,31 @@ impl Builder {
         self.ops.len() - 1
     }
 
-    fn scale(&mut self, v: usize, s: Id) -> usize {
+    /// The index of the scalar node `s` among those the lanes read.
+    pub(crate) fn scalar(&mut self, s: Id) -> usize {
         let next = self.scalars.len();
         let k = *self.scalar_index.entry(s).or_insert(next);
         if k == next {
             self.scalars.push(s);
         }
+        k
+    }
+
+    fn scale(&mut self, v: usize, s: Id) -> usize {
+        let k = self.scalar(s);
         self.op(Lane::Scale(v, k))
+    }
+
+    /// The scalars as the values' outputs `v0`, `v1`, ... of `p`.
+    pub(crate) fn values(&self, p: Program) -> Method {
+        Method::new(
+            p,
+            self.scalars
+                .iter()
+                .enumerate()
+                .map(|(k, id)| (format!("v{k}"), *id))
+                .collect(),
+        )
     }
 }
 
@@ -265,12 +308,7 @@ pub fn pack(p: &Program, outputs: &[Id], directions: &[Input]) -> Option<Packed>
     let pairs: BTreeMap<Angle, (Id, Id)> =
         p.trig_atoms().map(|(a, ids)| (a.clone(), ids)).collect();
     let groups = groups(directions);
-    let mut b = Builder {
-        ops: Vec::new(),
-        memo: BTreeMap::new(),
-        scalars: Vec::new(),
-        scalar_index: BTreeMap::new(),
-    };
+    let mut b = Builder::new();
     // tangent[g][node]: the operation holding the node's tangents along group g.
     let mut tangent: Vec<Vec<Option<usize>>> = vec![vec![None; p.nodes().len()]; groups.len()];
     for (g, lanes) in groups.iter().enumerate() {
@@ -346,14 +384,7 @@ pub fn pack(p: &Program, outputs: &[Id], directions: &[Input]) -> Option<Packed>
             derivatives.push(tangent[g][o.0 as usize].map(|op| (op, l)));
         }
     }
-    let values = Method::new(
-        p.clone(),
-        b.scalars
-            .iter()
-            .enumerate()
-            .map(|(k, id)| (format!("v{k}"), *id))
-            .collect(),
-    );
+    let values = b.values(p.clone());
     let mut ops = b.ops;
     let read: Vec<usize> = derivatives.iter().flatten().map(|&(op, _)| op).collect();
     fuse(&mut ops, &read);

@@ -27,6 +27,7 @@ use crate::mechanics::planar::JointKind;
 use crate::mechanics::spatial::frames::{joint_parts, link_bodies, motion};
 use crate::mechanics::spatial::spec::SpatialArmSpec;
 use crate::programs::method::Method;
+use crate::programs::packed::Packed;
 use crate::programs::spatial::{cross, dot, Nodes};
 use crate::programs::unrolled::Terms;
 use crate::slp::{Id, Input, Program};
@@ -368,6 +369,27 @@ pub(crate) fn newton_euler(
 /// is 8,303 operations, which a user crate calling it compiles in about 0.3 s more
 /// (docs/performance.md).
 const MAX_DERIVATIVE_OPS: usize = 10_000;
+
+/// `(-W dtau/dq, -W dtau/dqd)`, row-major each, for the run-time `W = M^-1`: the unrolled
+/// recursion run backward from the torques weighted by the rows of `-W`, four rows at a time
+/// ([`adjoint`](crate::programs::adjoint::adjoint)); the forward dynamics' derivatives at
+/// the accelerations. `None` where the program has what that does not differentiate.
+pub(crate) fn forward_dynamics_adjoint(arm: &SpatialArmSpec) -> Option<Packed> {
+    let n = arm.joints.len();
+    let mut p = Program::new();
+    let torques = newton_euler(&mut p, arm, Terms::ALL, true);
+    let wrt: Vec<Input> = (0..n).map(Input::Q).chain((0..n).map(Input::Qd)).collect();
+    let mut pk = crate::programs::adjoint::adjoint(&p, &torques, n, &wrt)?;
+    // Row by row over (q, qd) to d/dq row by row, then d/dqd.
+    let by_row = std::mem::take(&mut pk.derivatives);
+    for offset in [0, n] {
+        for i in 0..n {
+            pk.derivatives
+                .extend_from_slice(&by_row[i * 2 * n + offset..i * 2 * n + offset + n]);
+        }
+    }
+    Some(pk)
+}
 
 /// `(dtau/dq, dtau/dqd)` of [`inverse_dynamics`], row-major each: the unrolled recursion
 /// differentiated at compile time along every angle and rate (`derivative`); `None` past
