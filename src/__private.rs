@@ -12,7 +12,8 @@ use crate::Real;
 
 /// The largest methods' bodies, run in an AVX2 and FMA copy where the processor has them.
 pub use crate::dispatch::{
-    dispatch, BaseRegressor, ForwardDynamicsDerivatives, InverseDynamicsDerivatives, Kernel,
+    dispatch, dispatch_wide, BaseRegressor, ForwardDynamicsDerivatives, InverseDynamicsDerivatives,
+    Kernel,
 };
 /// The lanes a packed derivative body computes in (see `src/lanes.rs`).
 pub use crate::lanes::{Lanes, Portable};
@@ -23,6 +24,8 @@ pub use crate::ldlt::{forward_solve, Floor};
 pub use crate::mass_inverse::{
     forward_derivatives, forward_derivatives_in, minus_product, negated_rows, Cholesky,
 };
+/// Eight lanes, which a reverse-mode body computes in (see `src/wide.rs`).
+pub use crate::wide::{Pair, Wide};
 
 #[inline(always)]
 #[must_use]

@@ -30,6 +30,12 @@
 //! already targets AVX2 and FMA (`-C target-cpu=native`), there is one copy, with AVX2 lanes,
 //! and no question asked.
 //!
+//! A spatial arm's `forward_dynamics_derivatives` runs through [`dispatch_wide`], which has a
+//! third copy, compiled for AVX-512F, chosen where the processor has it: its reverse-mode
+//! program computes the seven rows of a seven-joint arm in one 512-bit register (src/wide.rs),
+//! half the instructions of two AVX2 groups. Only that method has the third copy, so the
+//! others cost a user's build no more.
+//!
 //! A spatial arm's `base_regressor` runs through it too, with a packed program that carries
 //! four joints per register (`programs::spatial_regressor` in the engine). Its result is large
 //! (the PUMA's 1.7 KB), which is why each copy writes its result through a pointer: returned by
@@ -75,6 +81,30 @@ pub fn dispatch<K: Kernel>(k: K) -> K::Output {
     k.run(Portable)
 }
 
+/// Runs `k` as [`dispatch`] does, or in a third copy, compiled for AVX-512, where the build has
+/// one and the processor can run it: the forward dynamics' derivatives of a spatial arm, whose
+/// reverse-mode program computes eight rows in one AVX-512 register (src/wide.rs).
+#[inline(always)]
+pub fn dispatch_wide<K: Kernel>(k: K) -> K::Output {
+    #[cfg(all(
+        target_arch = "x86_64",
+        feature = "std",
+        not(debug_assertions),
+        not(all(target_feature = "avx2", target_feature = "fma"))
+    ))]
+    {
+        return copies::run_wide(k);
+    }
+    #[cfg(all(target_arch = "x86_64", target_feature = "avx512f"))]
+    {
+        // SAFETY: the build targets AVX-512F, so every processor that runs it has it.
+        #[allow(unsafe_code)]
+        return k.run(unsafe { crate::wide::Avx512::new() });
+    }
+    #[allow(unreachable_code)]
+    dispatch(k)
+}
+
 /// The two copies of a kernel, and the choice between them.
 #[cfg(all(
     target_arch = "x86_64",
@@ -109,6 +139,37 @@ mod copies {
         // SAFETY: both copies write `out` when they return; a panic in the body unwinds past
         // this line.
         unsafe { out.assume_init() }
+    }
+
+    /// [`run`] with a third copy, [`avx512`], where the processor has AVX-512F.
+    #[inline(always)]
+    pub(super) fn run_wide<K: Kernel>(k: K) -> K::Output {
+        let copy: unsafe fn(K, &mut MaybeUninit<K::Output>) =
+            if std::is_x86_feature_detected!("avx512f") {
+                avx512::<K>
+            } else if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")
+            {
+                avx2::<K>
+            } else {
+                baseline::<K>
+            };
+        let mut out = MaybeUninit::uninit();
+        // SAFETY: each copy is chosen only where the processor has just said that it supports
+        // what the copy was compiled for (AVX-512F implies AVX2 and FMA).
+        unsafe { copy(k, &mut out) };
+        // SAFETY: every copy writes `out` when it returns.
+        unsafe { out.assume_init() }
+    }
+
+    /// `k.run()` compiled with AVX-512F enabled, into `out`.
+    ///
+    /// # Safety
+    ///
+    /// The processor must support AVX-512F.
+    #[target_feature(enable = "avx512f,avx2,fma")]
+    unsafe fn avx512<K: Kernel>(k: K, out: &mut MaybeUninit<K::Output>) {
+        // SAFETY: the caller has asked the processor.
+        out.write(k.run(unsafe { crate::wide::Avx512::new() }));
     }
 
     /// `k.run()` compiled with AVX2 and FMA enabled (the body is inlined into it), into `out`.

@@ -20,6 +20,10 @@ pub trait Lanes: Copy {
     const PACKED: bool;
     /// Four `f64`.
     type V: Copy;
+    /// Eight lanes of the same processor, for reverse-mode programs (src/wide.rs).
+    type Wide: crate::wide::Wide;
+    /// The eight lanes.
+    fn wide(self) -> Self::Wide;
     /// The lanes `c`.
     fn constant(self, c: [f64; 4]) -> Self::V;
     /// `x` in every lane.
@@ -49,6 +53,11 @@ pub struct Portable;
 impl Lanes for Portable {
     const PACKED: bool = false;
     type V = [f64; 4];
+    type Wide = crate::wide::Pair<Self>;
+    #[inline(always)]
+    fn wide(self) -> Self::Wide {
+        crate::wide::Pair(self)
+    }
     #[inline(always)]
     fn constant(self, c: [f64; 4]) -> [f64; 4] {
         c
@@ -135,6 +144,11 @@ mod avx2 {
     impl Lanes for Avx2 {
         const PACKED: bool = true;
         type V = __m256d;
+        type Wide = crate::wide::Pair<Self>;
+        #[inline(always)]
+        fn wide(self) -> Self::Wide {
+            crate::wide::Pair(self)
+        }
         #[inline(always)]
         fn constant(self, c: [f64; 4]) -> __m256d {
             unsafe { _mm256_setr_pd(c[0], c[1], c[2], c[3]) }

@@ -226,8 +226,9 @@
 //! parameters. Energy is conserved under integration, `Mdot - 2C` is skew-symmetric, and the
 //! paper's hand derivations are reproduced exactly where they are right.
 #![cfg_attr(not(feature = "std"), no_std)]
-// `unsafe` only in `dispatch` and `lanes`: calling the AVX2 copy of a generated method after the
-// processor has said it runs AVX2 and FMA, the result it writes, and that copy's intrinsics.
+// `unsafe` only in `dispatch`, `lanes` and `wide`: calling the AVX2 or AVX-512 copy of a
+// generated method after the processor has said it runs them, the result it writes, and that
+// copy's intrinsics.
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -254,6 +255,7 @@ pub mod sim;
 pub mod simd;
 pub mod spatial;
 pub mod trig;
+mod wide;
 
 #[doc(hidden)]
 pub mod __private;

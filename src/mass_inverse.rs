@@ -182,12 +182,16 @@ where
     (dq, dqd, inv)
 }
 
-/// Lanes `-m(r + l, k)` for `l` in `0..4`, zero past the last row: the seeds of a reverse-mode
+/// Lanes `-m(r + l, k)` for `l` in `0..W`, zero past the last row: the seeds of a reverse-mode
 /// lane group (`programs::adjoint`), column `k` of `M^-1` (symmetric, so its row too) read
 /// where it is stored.
 #[inline(always)]
 #[must_use]
-pub fn negated_rows<const N: usize>(m: &SMatrix<f64, N, N>, k: usize, r: usize) -> [f64; 4] {
+pub fn negated_rows<const N: usize, const W: usize>(
+    m: &SMatrix<f64, N, N>,
+    k: usize,
+    r: usize,
+) -> [f64; W] {
     let column = &m.data.0[k];
     core::array::from_fn(|l| column.get(r + l).map_or(0.0, |x| -x))
 }

@@ -345,7 +345,7 @@ pub(crate) fn generic_joint_value(joint: Joint, k: usize) -> f64 {
     match joint {
         Joint::Revolute => {
             let (a, b) = TRIPLES[k % TRIPLES.len()];
-            let sign = if k % 2 == 0 { 1.0 } else { -1.0 };
+            let sign = if k.is_multiple_of(2) { 1.0 } else { -1.0 };
             (sign * b).atan2(a)
         }
         Joint::Prismatic => (1.0 + (k % 5) as f64) / 7.0,

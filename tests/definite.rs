@@ -168,11 +168,11 @@ fn the_run_time_check_agrees_with_the_derive_s() {
         let mut links = Vec::new();
         let mut specs = Vec::new();
         for _ in 0..n {
-            let prismatic = rng.next() % 3 == 0;
+            let prismatic = rng.next().is_multiple_of(3);
             let (length, l) = rng.value();
             let (inertia, i) = rng.value();
             let (cx, x) = rng.value();
-            let (armature, a) = if rng.next() % 4 == 0 {
+            let (armature, a) = if rng.next().is_multiple_of(4) {
                 rng.value()
             } else {
                 (0.0, Rational::from_integer(0.into()))
@@ -199,7 +199,7 @@ fn the_run_time_check_agrees_with_the_derive_s() {
             };
             specs.push(spec);
         }
-        let (payload, p) = if rng.next() % 3 == 0 {
+        let (payload, p) = if rng.next().is_multiple_of(3) {
             (
                 Payload::point(0.5),
                 Some(PayloadSpec {

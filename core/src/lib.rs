@@ -75,7 +75,7 @@ pub use algebra::{expr, poly, ring, trig};
 pub use emission::{closed_forms, compact, emit, generate, identification, paths};
 pub use mechanics::planar::definite;
 pub use methods::identification::regressor;
-pub use programs::{christoffel, derivative, frozen, packed, slp};
+pub use programs::{adjoint, christoffel, derivative, frozen, packed, slp};
 
 /// Spatial arms, from their specification to the emitted `impl SpatialArm<N>`: the exact frames,
 /// the decoupling their geometry allows, the chosen programs and the emission.

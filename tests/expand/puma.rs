@@ -4085,907 +4085,492 @@ Cost: 1456 multiplications, 1164 additions, 0 divisions, 5 sin_cos pairs; where 
         let __v61 = (91.0 / 400.0);
         let __v62 = (87.0 / 5.0);
         let __v101 = (981.0 / 100.0);
-        let __lane0 = __lanes
+        use ::planar_arm::__private::Wide as _;
+        let __wide = ::planar_arm::__private::Lanes::wide(__lanes);
+        let __lane0 = __wide
             .constant(::planar_arm::__private::negated_rows(__minv, 0, 0));
-        let __lane1 = __lanes
+        let __lane1 = __wide
             .constant(::planar_arm::__private::negated_rows(__minv, 1, 0));
-        let __lane2 = __lanes
+        let __lane2 = __wide
             .constant(::planar_arm::__private::negated_rows(__minv, 2, 0));
-        let __lane3 = __lanes
+        let __lane3 = __wide
             .constant(::planar_arm::__private::negated_rows(__minv, 3, 0));
-        let __lane4 = __lanes
+        let __lane4 = __wide
             .constant(::planar_arm::__private::negated_rows(__minv, 4, 0));
-        let __lane5 = __lanes
-            .constant(::planar_arm::__private::negated_rows(__minv, 0, 4));
-        let __lane6 = __lanes
-            .constant(::planar_arm::__private::negated_rows(__minv, 1, 4));
-        let __lane7 = __lanes
-            .constant(::planar_arm::__private::negated_rows(__minv, 2, 4));
-        let __lane8 = __lanes
-            .constant(::planar_arm::__private::negated_rows(__minv, 3, 4));
-        let __lane9 = __lanes
-            .constant(::planar_arm::__private::negated_rows(__minv, 4, 4));
-        let __lane10 = __lanes.mul(__lane0, __lanes.splat(__v0));
-        let __lane11 = __lanes.mul(__lane0, __lanes.splat(__c2));
-        let __lane12 = __lanes.mul(__lane5, __lanes.splat(__v0));
-        let __lane13 = __lanes.mul(__lane5, __lanes.splat(__c2));
-        let __lane14 = __lanes.mul(__lane0, __lanes.splat(__v2));
-        let __lane15 = __lanes.mul(__lane0, __lanes.splat(__s2));
-        let __lane16 = __lanes.mul(__lane5, __lanes.splat(__v2));
-        let __lane17 = __lanes.mul(__lane5, __lanes.splat(__s2));
-        let __lane18 = __lanes.neg(__lane11);
-        let __lane19 = __lanes.neg(__lane13);
-        let __lane20 = __lanes.mul(__lane1, __lanes.splat(__v4));
-        let __lane21 = __lanes.mul(__lane6, __lanes.splat(__v4));
-        let __lane22 = __lanes.mul(__lane18, __lanes.splat(__v4));
-        let __lane23 = __lanes.mul(__lane19, __lanes.splat(__v4));
-        let __lane24 = __lanes.neg(__lane1);
-        let __lane25 = __lanes.neg(__lane6);
-        let __lane26 = __lanes.neg(__lane22);
-        let __lane27 = __lanes.neg(__lane23);
-        let __lane28 = __lanes.mul(__lane11, __lanes.splat(__v5));
-        let __lane29 = __lanes.mul(__lane11, __lanes.splat(__c3));
-        let __lane30 = __lanes.mul(__lane13, __lanes.splat(__v5));
-        let __lane31 = __lanes.mul(__lane13, __lanes.splat(__c3));
-        let __lane32 = __lanes.mul(__lane11, __lanes.splat(__v7));
-        let __lane33 = __lanes.mul(__lane11, __lanes.splat(__s3));
-        let __lane34 = __lanes.mul(__lane13, __lanes.splat(__v7));
-        let __lane35 = __lanes.mul(__lane13, __lanes.splat(__s3));
-        let __lane36 = __lanes.mul(__lane15, __lanes.splat(__v5));
-        let __lane37 = __lanes.mul_add(__lane15, __v9, __lane29);
-        let __lane38 = __lanes.mul(__lane17, __lanes.splat(__v5));
-        let __lane39 = __lanes.mul_add(__lane17, __v9, __lane31);
-        let __lane40 = __lanes.mul_add(__lane15, __v7, __lane28);
-        let __lane41 = __lanes.mul_add(__lane15, __c3, __lane33);
-        let __lane42 = __lanes.mul_add(__lane17, __v7, __lane30);
-        let __lane43 = __lanes.mul_add(__lane17, __c3, __lane35);
-        let __lane44 = __lanes.mul_add(__lane20, __v10, __lane40);
-        let __lane45 = __lanes.mul(__lane20, __lanes.splat(__c3));
-        let __lane46 = __lanes.mul_add(__lane21, __v10, __lane42);
-        let __lane47 = __lanes.mul(__lane21, __lanes.splat(__c3));
-        let __lane48 = __lanes.mul_add(__lane20, __v11, __lane32);
-        let __lane49 = __lanes.mul(__lane20, __lanes.splat(__s3));
-        let __lane50 = __lanes.mul_add(__lane21, __v11, __lane34);
-        let __lane51 = __lanes.mul(__lane21, __lanes.splat(__s3));
-        let __lane52 = __lanes.sub(__lane24, __lane2);
-        let __lane53 = __lanes.sub(__lane25, __lane7);
-        let __lane54 = __lanes.neg(__lane52);
-        let __lane55 = __lanes.neg(__lane53);
-        let __lane56 = __lanes.neg(__lane37);
-        let __lane57 = __lanes.neg(__lane39);
-        let __lane58 = __lanes.mul_add(__lane56, __v12, __lane49);
-        let __lane59 = __lanes.mul_add(__lane57, __v12, __lane51);
-        let __lane60 = __lanes.mul_add(__lane37, __v13, __lane26);
-        let __lane61 = __lanes.mul_add(__lane39, __v13, __lane27);
-        let __lane62 = __lanes.mul_add(__lane54, __v13, __lane45);
-        let __lane63 = __lanes.mul_add(__lane55, __v13, __lane47);
-        let __lane64 = __lanes.mul_add(__lane41, __v12, __lane62);
-        let __lane65 = __lanes.mul_add(__lane43, __v12, __lane63);
-        let __lane66 = __lanes.add(__lane3, __lane37);
-        let __lane67 = __lanes.add(__lane8, __lane39);
-        let __lane68 = __lanes.mul(__lane52, __lanes.splat(__v14));
-        let __lane69 = __lanes.mul(__lane52, __lanes.splat(__c4));
-        let __lane70 = __lanes.mul(__lane53, __lanes.splat(__v14));
-        let __lane71 = __lanes.mul(__lane53, __lanes.splat(__c4));
-        let __lane72 = __lanes.mul(__lane52, __lanes.splat(__v16));
-        let __lane73 = __lanes.mul(__lane52, __lanes.splat(__s4));
-        let __lane74 = __lanes.mul(__lane53, __lanes.splat(__v16));
-        let __lane75 = __lanes.mul(__lane53, __lanes.splat(__s4));
-        let __lane76 = __lanes.mul(__lane41, __lanes.splat(__v14));
-        let __lane77 = __lanes.mul_add(__lane41, __v18, __lane69);
-        let __lane78 = __lanes.mul(__lane43, __lanes.splat(__v14));
-        let __lane79 = __lanes.mul_add(__lane43, __v18, __lane71);
-        let __lane80 = __lanes.mul_add(__lane41, __v16, __lane68);
-        let __lane81 = __lanes.mul_add(__lane41, __c4, __lane73);
-        let __lane82 = __lanes.mul_add(__lane43, __v16, __lane70);
-        let __lane83 = __lanes.mul_add(__lane43, __c4, __lane75);
-        let __lane84 = __lanes.neg(__lane77);
-        let __lane85 = __lanes.neg(__lane79);
-        let __lane86 = __lanes.mul_add(__lane60, __v19, __lane80);
-        let __lane87 = __lanes.mul(__lane60, __lanes.splat(__c4));
-        let __lane88 = __lanes.mul_add(__lane61, __v19, __lane82);
-        let __lane89 = __lanes.mul(__lane61, __lanes.splat(__c4));
-        let __lane90 = __lanes.mul_add(__lane60, __v20, __lane72);
-        let __lane91 = __lanes.mul(__lane60, __lanes.splat(__s4));
-        let __lane92 = __lanes.mul_add(__lane61, __v20, __lane74);
-        let __lane93 = __lanes.mul(__lane61, __lanes.splat(__s4));
-        let __lane94 = __lanes.mul_add(__lane58, __v19, __lane76);
-        let __lane95 = __lanes.mul_add(__lane58, __v18, __lane87);
-        let __lane96 = __lanes.mul_add(__lane59, __v19, __lane78);
-        let __lane97 = __lanes.mul_add(__lane59, __v18, __lane89);
-        let __lane98 = __lanes.mul_add(__lane58, __v20, __lane86);
-        let __lane99 = __lanes.mul_add(__lane58, __c4, __lane91);
-        let __lane100 = __lanes.mul_add(__lane59, __v20, __lane88);
-        let __lane101 = __lanes.mul_add(__lane59, __c4, __lane93);
-        let __lane102 = __lanes.neg(__lane95);
-        let __lane103 = __lanes.neg(__lane97);
-        let __lane104 = __lanes.neg(__lane84);
-        let __lane105 = __lanes.neg(__lane85);
-        let __lane106 = __lanes.mul_add(__lane104, __v4, __lane99);
-        let __lane107 = __lanes.mul_add(__lane105, __v4, __lane101);
-        let __lane108 = __lanes.mul_add(__lane81, __v4, __lane102);
-        let __lane109 = __lanes.mul_add(__lane83, __v4, __lane103);
-        let __lane110 = __lanes.neg(__lane108);
-        let __lane111 = __lanes.neg(__lane109);
-        let __lane112 = __lanes.mul(__lane66, __lanes.splat(__v21));
-        let __lane113 = __lanes.mul(__lane66, __lanes.splat(__s5));
-        let __lane114 = __lanes.mul(__lane67, __lanes.splat(__v21));
-        let __lane115 = __lanes.mul(__lane67, __lanes.splat(__s5));
-        let __lane116 = __lanes.mul(__lane81, __lanes.splat(__v21));
-        let __lane117 = __lanes.mul_add(__lane81, __c5, __lane113);
-        let __lane118 = __lanes.mul(__lane83, __lanes.splat(__v21));
-        let __lane119 = __lanes.mul_add(__lane83, __c5, __lane115);
-        let __lane120 = __lanes.mul_add(__lane64, __v24, __lane116);
-        let __lane121 = __lanes.mul(__lane64, __lanes.splat(__c5));
-        let __lane122 = __lanes.mul_add(__lane65, __v24, __lane118);
-        let __lane123 = __lanes.mul(__lane65, __lanes.splat(__c5));
-        let __lane124 = __lanes.mul_add(__lane64, __v25, __lane112);
-        let __lane125 = __lanes.mul(__lane64, __lanes.splat(__s5));
-        let __lane126 = __lanes.mul_add(__lane65, __v25, __lane114);
-        let __lane127 = __lanes.mul(__lane65, __lanes.splat(__s5));
-        let __lane128 = __lanes.mul(__lane106, __lanes.splat(__v24));
-        let __lane129 = __lanes.mul_add(__lane106, __v26, __lane121);
-        let __lane130 = __lanes.mul(__lane107, __lanes.splat(__v24));
-        let __lane131 = __lanes.mul_add(__lane107, __v26, __lane123);
-        let __lane132 = __lanes.mul_add(__lane106, __v25, __lane120);
-        let __lane133 = __lanes.mul_add(__lane106, __c5, __lane125);
-        let __lane134 = __lanes.mul_add(__lane107, __v25, __lane122);
-        let __lane135 = __lanes.mul_add(__lane107, __c5, __lane127);
-        let __lane136 = __lanes.sub(__lane104, __lane4);
-        let __lane137 = __lanes.sub(__lane105, __lane9);
-        let __lane138 = __lanes.mul(__lane136, __lanes.splat(__v27));
-        let __lane139 = __lanes.mul(__lane136, __lanes.splat(__c6));
-        let __lane140 = __lanes.mul(__lane137, __lanes.splat(__v27));
-        let __lane141 = __lanes.mul(__lane137, __lanes.splat(__c6));
-        let __lane142 = __lanes.mul(__lane136, __lanes.splat(__v29));
-        let __lane143 = __lanes.mul(__lane136, __lanes.splat(__s6));
-        let __lane144 = __lanes.mul(__lane137, __lanes.splat(__v29));
-        let __lane145 = __lanes.mul(__lane137, __lanes.splat(__s6));
-        let __lane146 = __lanes.mul(__lane117, __lanes.splat(__v27));
-        let __lane147 = __lanes.mul_add(__lane117, __v31, __lane139);
-        let __lane148 = __lanes.mul(__lane119, __lanes.splat(__v27));
-        let __lane149 = __lanes.mul_add(__lane119, __v31, __lane141);
-        let __lane150 = __lanes.mul_add(__lane117, __v29, __lane138);
-        let __lane151 = __lanes.mul_add(__lane117, __c6, __lane143);
-        let __lane152 = __lanes.mul_add(__lane119, __v29, __lane140);
-        let __lane153 = __lanes.mul_add(__lane119, __c6, __lane145);
-        let __lane154 = __lanes.mul_add(__lane110, __v32, __lane150);
-        let __lane155 = __lanes.mul(__lane110, __lanes.splat(__c6));
-        let __lane156 = __lanes.mul_add(__lane111, __v32, __lane152);
-        let __lane157 = __lanes.mul(__lane111, __lanes.splat(__c6));
-        let __lane158 = __lanes.mul_add(__lane110, __v33, __lane142);
-        let __lane159 = __lanes.mul(__lane110, __lanes.splat(__s6));
-        let __lane160 = __lanes.mul_add(__lane111, __v33, __lane144);
-        let __lane161 = __lanes.mul(__lane111, __lanes.splat(__s6));
-        let __lane162 = __lanes.mul_add(__lane133, __v32, __lane146);
-        let __lane163 = __lanes.mul_add(__lane133, __v31, __lane155);
-        let __lane164 = __lanes.mul_add(__lane135, __v32, __lane148);
-        let __lane165 = __lanes.mul_add(__lane135, __v31, __lane157);
-        let __lane166 = __lanes.mul_add(__lane133, __v33, __lane154);
-        let __lane167 = __lanes.mul_add(__lane133, __c6, __lane159);
-        let __lane168 = __lanes.mul_add(__lane135, __v33, __lane156);
-        let __lane169 = __lanes.mul_add(__lane135, __c6, __lane161);
-        let __lane170 = __lanes.mul_add(__lane147, __v34, __lane167);
-        let __lane171 = __lanes.mul_add(__lane149, __v34, __lane169);
-        let __lane172 = __lanes.neg(__lane151);
-        let __lane173 = __lanes.neg(__lane153);
-        let __lane174 = __lanes.mul_add(__lane172, __v34, __lane163);
-        let __lane175 = __lanes.mul_add(__lane173, __v34, __lane165);
-        let __lane176 = __lanes.mul(__lane129, __lanes.splat(__v35));
-        let __lane177 = __lanes.mul(__lane131, __lanes.splat(__v35));
-        let __lane178 = __lanes.mul(__lane174, __lanes.splat(__v35));
-        let __lane179 = __lanes.mul(__lane175, __lanes.splat(__v35));
-        let __lane180 = __lanes.mul(__lane170, __lanes.splat(__v35));
-        let __lane181 = __lanes.mul(__lane171, __lanes.splat(__v35));
-        let __lane182 = __lanes.neg(__lane178);
-        let __lane183 = __lanes.neg(__lane179);
-        let __lane184 = __lanes.neg(__lane180);
-        let __lane185 = __lanes.neg(__lane181);
-        let __lane186 = __lanes.mul(__lane182, __lanes.splat(__v34));
-        let __lane187 = __lanes.mul(__lane183, __lanes.splat(__v34));
-        let __lane188 = __lanes.mul(__lane180, __lanes.splat(__v34));
-        let __lane189 = __lanes.mul(__lane181, __lanes.splat(__v34));
-        let __lane190 = __lanes.neg(__lane176);
-        let __lane191 = __lanes.neg(__lane177);
-        let __lane192 = __lanes.mul(__lane190, __lanes.splat(__v36));
-        let __lane193 = __lanes.mul(__lane190, __lanes.splat(__v37));
-        let __lane194 = __lanes.mul(__lane191, __lanes.splat(__v36));
-        let __lane195 = __lanes.mul(__lane191, __lanes.splat(__v37));
-        let __lane196 = __lanes.mul(__lane176, __lanes.splat(__v38));
-        let __lane197 = __lanes.mul(__lane176, __lanes.splat(__v39));
-        let __lane198 = __lanes.mul(__lane177, __lanes.splat(__v38));
-        let __lane199 = __lanes.mul(__lane177, __lanes.splat(__v39));
-        let __lane200 = __lanes.mul(__lane178, __lanes.splat(__v36));
-        let __lane201 = __lanes.mul_add(__lane178, __v40, __lane193);
-        let __lane202 = __lanes.mul(__lane179, __lanes.splat(__v36));
-        let __lane203 = __lanes.mul_add(__lane179, __v40, __lane195);
-        let __lane204 = __lanes.mul_add(__lane184, __v38, __lane200);
-        let __lane205 = __lanes.mul_add(__lane184, __v40, __lane197);
-        let __lane206 = __lanes.mul_add(__lane185, __v38, __lane202);
-        let __lane207 = __lanes.mul_add(__lane185, __v40, __lane199);
-        let __lane208 = __lanes.neg(__lane205);
-        let __lane209 = __lanes.neg(__lane207);
-        let __lane210 = __lanes.mul_add(__lane208, __v34, __lane196);
-        let __lane211 = __lanes.mul_add(__lane209, __v34, __lane198);
-        let __lane212 = __lanes.mul_add(__lane201, __v34, __lane192);
-        let __lane213 = __lanes.mul_add(__lane203, __v34, __lane194);
-        let __lane214 = __lanes.mul_add(__lane129, __v41, __lane176);
-        let __lane215 = __lanes.mul_add(__lane131, __v41, __lane177);
-        let __lane216 = __lanes.mul(__lane110, __lanes.splat(__v41));
-        let __lane217 = __lanes.mul(__lane111, __lanes.splat(__v41));
-        let __lane218 = __lanes.mul(__lane133, __lanes.splat(__v41));
-        let __lane219 = __lanes.mul(__lane135, __lanes.splat(__v41));
-        let __lane220 = __lanes.mul_add(__lane104, __v42, __lane106);
-        let __lane221 = __lanes.mul_add(__lane105, __v42, __lane107);
-        let __lane222 = __lanes.mul_add(__lane81, __v42, __lane108);
-        let __lane223 = __lanes.mul_add(__lane83, __v42, __lane109);
-        let __lane224 = __lanes.mul(__lane222, __lanes.splat(__v43));
-        let __lane225 = __lanes.mul(__lane223, __lanes.splat(__v43));
-        let __lane226 = __lanes.mul(__lane64, __lanes.splat(__v43));
-        let __lane227 = __lanes.mul(__lane65, __lanes.splat(__v43));
-        let __lane228 = __lanes.mul(__lane220, __lanes.splat(__v43));
-        let __lane229 = __lanes.mul(__lane221, __lanes.splat(__v43));
-        let __lane230 = __lanes.neg(__lane224);
-        let __lane231 = __lanes.neg(__lane225);
-        let __lane232 = __lanes.neg(__lane228);
-        let __lane233 = __lanes.neg(__lane229);
-        let __lane234 = __lanes.mul(__lane224, __lanes.splat(__v42));
-        let __lane235 = __lanes.mul(__lane225, __lanes.splat(__v42));
-        let __lane236 = __lanes.mul(__lane232, __lanes.splat(__v42));
-        let __lane237 = __lanes.mul(__lane233, __lanes.splat(__v42));
-        let __lane238 = __lanes.mul(__lane230, __lanes.splat(__v44));
-        let __lane239 = __lanes.mul(__lane230, __lanes.splat(__v45));
-        let __lane240 = __lanes.mul(__lane231, __lanes.splat(__v44));
-        let __lane241 = __lanes.mul(__lane231, __lanes.splat(__v45));
-        let __lane242 = __lanes.neg(__lane226);
-        let __lane243 = __lanes.neg(__lane227);
-        let __lane244 = __lanes.mul(__lane242, __lanes.splat(__v46));
-        let __lane245 = __lanes.mul(__lane242, __lanes.splat(__v47));
-        let __lane246 = __lanes.mul(__lane243, __lanes.splat(__v46));
-        let __lane247 = __lanes.mul(__lane243, __lanes.splat(__v47));
-        let __lane248 = __lanes.mul(__lane226, __lanes.splat(__v44));
-        let __lane249 = __lanes.mul_add(__lane226, __v48, __lane239);
-        let __lane250 = __lanes.mul(__lane227, __lanes.splat(__v44));
-        let __lane251 = __lanes.mul_add(__lane227, __v48, __lane241);
-        let __lane252 = __lanes.mul_add(__lane228, __v46, __lane238);
-        let __lane253 = __lanes.mul_add(__lane228, __v45, __lane245);
-        let __lane254 = __lanes.mul_add(__lane229, __v46, __lane240);
-        let __lane255 = __lanes.mul_add(__lane229, __v45, __lane247);
-        let __lane256 = __lanes.mul_add(__lane253, __v42, __lane244);
-        let __lane257 = __lanes.mul_add(__lane255, __v42, __lane246);
-        let __lane258 = __lanes.neg(__lane249);
-        let __lane259 = __lanes.neg(__lane251);
-        let __lane260 = __lanes.mul_add(__lane258, __v42, __lane248);
-        let __lane261 = __lanes.mul_add(__lane259, __v42, __lane250);
-        let __lane262 = __lanes.mul_add(__lane56, __v49, __lane58);
-        let __lane263 = __lanes.mul_add(__lane57, __v49, __lane59);
-        let __lane264 = __lanes.mul_add(__lane37, __v50, __lane60);
-        let __lane265 = __lanes.mul_add(__lane39, __v50, __lane61);
-        let __lane266 = __lanes.mul_add(__lane54, __v50, __lane64);
-        let __lane267 = __lanes.mul_add(__lane55, __v50, __lane65);
-        let __lane268 = __lanes.mul_add(__lane52, __v51, __lane262);
-        let __lane269 = __lanes.mul_add(__lane53, __v51, __lane263);
-        let __lane270 = __lanes.neg(__lane41);
-        let __lane271 = __lanes.neg(__lane43);
-        let __lane272 = __lanes.mul_add(__lane270, __v51, __lane264);
-        let __lane273 = __lanes.mul_add(__lane271, __v51, __lane265);
-        let __lane274 = __lanes.mul_add(__lane41, __v49, __lane266);
-        let __lane275 = __lanes.mul_add(__lane43, __v49, __lane267);
-        let __lane276 = __lanes.mul(__lane274, __lanes.splat(__v52));
-        let __lane277 = __lanes.mul(__lane275, __lanes.splat(__v52));
-        let __lane278 = __lanes.mul(__lane272, __lanes.splat(__v52));
-        let __lane279 = __lanes.mul(__lane273, __lanes.splat(__v52));
-        let __lane280 = __lanes.mul(__lane268, __lanes.splat(__v52));
-        let __lane281 = __lanes.mul(__lane269, __lanes.splat(__v52));
-        let __lane282 = __lanes.mul(__lane276, __lanes.splat(__v49));
-        let __lane283 = __lanes.mul(__lane277, __lanes.splat(__v49));
-        let __lane284 = __lanes.neg(__lane278);
-        let __lane285 = __lanes.neg(__lane279);
-        let __lane286 = __lanes.mul_add(__lane284, __v51, __lane282);
-        let __lane287 = __lanes.mul_add(__lane285, __v51, __lane283);
-        let __lane288 = __lanes.mul(__lane278, __lanes.splat(__v50));
-        let __lane289 = __lanes.mul(__lane279, __lanes.splat(__v50));
-        let __lane290 = __lanes.neg(__lane280);
-        let __lane291 = __lanes.neg(__lane281);
-        let __lane292 = __lanes.mul_add(__lane290, __v49, __lane288);
-        let __lane293 = __lanes.mul_add(__lane291, __v49, __lane289);
-        let __lane294 = __lanes.neg(__lane276);
-        let __lane295 = __lanes.neg(__lane277);
-        let __lane296 = __lanes.mul(__lane294, __lanes.splat(__v53));
-        let __lane297 = __lanes.mul(__lane294, __lanes.splat(__v54));
-        let __lane298 = __lanes.mul(__lane295, __lanes.splat(__v53));
-        let __lane299 = __lanes.mul(__lane295, __lanes.splat(__v54));
-        let __lane300 = __lanes.mul(__lane276, __lanes.splat(__v55));
-        let __lane301 = __lanes.mul(__lane276, __lanes.splat(__v56));
-        let __lane302 = __lanes.mul(__lane277, __lanes.splat(__v55));
-        let __lane303 = __lanes.mul(__lane277, __lanes.splat(__v56));
-        let __lane304 = __lanes.mul_add(__lane284, __v57, __lane300);
-        let __lane305 = __lanes.mul(__lane284, __lanes.splat(__v56));
-        let __lane306 = __lanes.mul_add(__lane285, __v57, __lane302);
-        let __lane307 = __lanes.mul(__lane285, __lanes.splat(__v56));
-        let __lane308 = __lanes.mul(__lane278, __lanes.splat(__v53));
-        let __lane309 = __lanes.mul_add(__lane278, __v58, __lane297);
-        let __lane310 = __lanes.mul(__lane279, __lanes.splat(__v53));
-        let __lane311 = __lanes.mul_add(__lane279, __v58, __lane299);
-        let __lane312 = __lanes.mul_add(__lane290, __v55, __lane308);
-        let __lane313 = __lanes.mul_add(__lane290, __v58, __lane301);
-        let __lane314 = __lanes.mul_add(__lane291, __v55, __lane310);
-        let __lane315 = __lanes.mul_add(__lane291, __v58, __lane303);
-        let __lane316 = __lanes.mul_add(__lane280, __v57, __lane296);
-        let __lane317 = __lanes.mul_add(__lane280, __v54, __lane305);
-        let __lane318 = __lanes.mul_add(__lane281, __v57, __lane298);
-        let __lane319 = __lanes.mul_add(__lane281, __v54, __lane307);
-        let __lane320 = __lanes.neg(__lane317);
-        let __lane321 = __lanes.neg(__lane319);
-        let __lane322 = __lanes.mul_add(__lane320, __v50, __lane316);
-        let __lane323 = __lanes.mul_add(__lane321, __v50, __lane318);
-        let __lane324 = __lanes.mul_add(__lane317, __v49, __lane304);
-        let __lane325 = __lanes.mul_add(__lane319, __v49, __lane306);
-        let __lane326 = __lanes.neg(__lane313);
-        let __lane327 = __lanes.neg(__lane315);
-        let __lane328 = __lanes.mul_add(__lane326, __v51, __lane324);
-        let __lane329 = __lanes.mul_add(__lane327, __v51, __lane325);
-        let __lane330 = __lanes.mul_add(__lane313, __v50, __lane312);
-        let __lane331 = __lanes.mul_add(__lane315, __v50, __lane314);
-        let __lane332 = __lanes.neg(__lane309);
-        let __lane333 = __lanes.neg(__lane311);
-        let __lane334 = __lanes.mul_add(__lane332, __v49, __lane330);
-        let __lane335 = __lanes.mul_add(__lane333, __v49, __lane331);
-        let __lane336 = __lanes.mul_add(__lane309, __v51, __lane322);
-        let __lane337 = __lanes.mul_add(__lane311, __v51, __lane323);
-        let __lane338 = __lanes.mul(__lane24, __lanes.splat(__v59));
-        let __lane339 = __lanes.mul(__lane25, __lanes.splat(__v59));
-        let __lane340 = __lanes.mul_add(__lane1, __v60, __lane20);
-        let __lane341 = __lanes.mul_add(__lane6, __v60, __lane21);
-        let __lane342 = __lanes.mul_add(__lane18, __v60, __lane22);
-        let __lane343 = __lanes.mul_add(__lane19, __v60, __lane23);
-        let __lane344 = __lanes.mul_add(__lane11, __v61, __lane338);
-        let __lane345 = __lanes.mul_add(__lane13, __v61, __lane339);
-        let __lane346 = __lanes.neg(__lane15);
-        let __lane347 = __lanes.neg(__lane17);
-        let __lane348 = __lanes.mul_add(__lane346, __v61, __lane340);
-        let __lane349 = __lanes.mul_add(__lane347, __v61, __lane341);
-        let __lane350 = __lanes.mul_add(__lane15, __v59, __lane342);
-        let __lane351 = __lanes.mul_add(__lane17, __v59, __lane343);
-        let __lane352 = __lanes.mul(__lane350, __lanes.splat(__v62));
-        let __lane353 = __lanes.mul(__lane351, __lanes.splat(__v62));
-        let __lane354 = __lanes.mul(__lane348, __lanes.splat(__v62));
-        let __lane355 = __lanes.mul(__lane349, __lanes.splat(__v62));
-        let __lane356 = __lanes.mul(__lane344, __lanes.splat(__v62));
-        let __lane357 = __lanes.mul(__lane345, __lanes.splat(__v62));
-        let __lane358 = __lanes.neg(__lane352);
-        let __lane359 = __lanes.neg(__lane353);
-        let __lane360 = __lanes.mul(__lane358, __lanes.splat(__v60));
-        let __lane361 = __lanes.mul(__lane359, __lanes.splat(__v60));
-        let __lane362 = __lanes.mul(__lane352, __lanes.splat(__v59));
-        let __lane363 = __lanes.mul(__lane353, __lanes.splat(__v59));
-        let __lane364 = __lanes.neg(__lane354);
-        let __lane365 = __lanes.neg(__lane355);
-        let __lane366 = __lanes.mul_add(__lane364, __v61, __lane362);
-        let __lane367 = __lanes.mul_add(__lane365, __v61, __lane363);
-        let __lane368 = __lanes.mul_add(__lane356, __v61, __lane360);
-        let __lane369 = __lanes.mul_add(__lane357, __v61, __lane361);
-        let __lane370 = __lanes.mul(__lane358, __lanes.splat(__v63));
-        let __lane371 = __lanes.mul(__lane358, __lanes.splat(__v64));
-        let __lane372 = __lanes.mul(__lane359, __lanes.splat(__v63));
-        let __lane373 = __lanes.mul(__lane359, __lanes.splat(__v64));
-        let __lane374 = __lanes.mul(__lane352, __lanes.splat(__v65));
-        let __lane375 = __lanes.mul(__lane352, __lanes.splat(__v66));
-        let __lane376 = __lanes.mul(__lane353, __lanes.splat(__v65));
-        let __lane377 = __lanes.mul(__lane353, __lanes.splat(__v66));
-        let __lane378 = __lanes.mul_add(__lane364, __v67, __lane374);
-        let __lane379 = __lanes.mul(__lane364, __lanes.splat(__v66));
-        let __lane380 = __lanes.mul_add(__lane365, __v67, __lane376);
-        let __lane381 = __lanes.mul(__lane365, __lanes.splat(__v66));
-        let __lane382 = __lanes.mul(__lane354, __lanes.splat(__v63));
-        let __lane383 = __lanes.mul_add(__lane354, __qd2, __lane371);
-        let __lane384 = __lanes.mul(__lane355, __lanes.splat(__v63));
-        let __lane385 = __lanes.mul_add(__lane355, __qd2, __lane373);
-        let __lane386 = __lanes.neg(__lane356);
-        let __lane387 = __lanes.neg(__lane357);
-        let __lane388 = __lanes.mul_add(__lane386, __v65, __lane382);
-        let __lane389 = __lanes.mul_add(__lane386, __qd2, __lane375);
-        let __lane390 = __lanes.mul_add(__lane387, __v65, __lane384);
-        let __lane391 = __lanes.mul_add(__lane387, __qd2, __lane377);
-        let __lane392 = __lanes.mul_add(__lane356, __v67, __lane370);
-        let __lane393 = __lanes.mul_add(__lane356, __v64, __lane379);
-        let __lane394 = __lanes.mul_add(__lane357, __v67, __lane372);
-        let __lane395 = __lanes.mul_add(__lane357, __v64, __lane381);
-        let __lane396 = __lanes.neg(__lane393);
-        let __lane397 = __lanes.neg(__lane395);
-        let __lane398 = __lanes.mul_add(__lane396, __v60, __lane392);
-        let __lane399 = __lanes.mul_add(__lane397, __v60, __lane394);
-        let __lane400 = __lanes.mul_add(__lane393, __v59, __lane378);
-        let __lane401 = __lanes.mul_add(__lane395, __v59, __lane380);
-        let __lane402 = __lanes.neg(__lane389);
-        let __lane403 = __lanes.neg(__lane391);
-        let __lane404 = __lanes.mul_add(__lane402, __v61, __lane400);
-        let __lane405 = __lanes.mul_add(__lane403, __v61, __lane401);
-        let __lane406 = __lanes.mul_add(__lane389, __v60, __lane388);
-        let __lane407 = __lanes.mul_add(__lane391, __v60, __lane390);
-        let __lane408 = __lanes.neg(__lane383);
-        let __lane409 = __lanes.neg(__lane385);
-        let __lane410 = __lanes.mul_add(__lane408, __v59, __lane406);
-        let __lane411 = __lanes.mul_add(__lane409, __v59, __lane407);
-        let __lane412 = __lanes.mul_add(__lane383, __v61, __lane398);
-        let __lane413 = __lanes.mul_add(__lane385, __v61, __lane399);
-        let __lane414 = __lanes.neg(__lane188);
-        let __lane415 = __lanes.neg(__lane189);
-        let __lane416 = __lanes.mul(__lane414, __lanes.splat(__v39));
-        let __lane417 = __lanes.mul_add(__lane414, __qd6, __lane210);
-        let __lane418 = __lanes.mul(__lane415, __lanes.splat(__v39));
-        let __lane419 = __lanes.mul_add(__lane415, __qd6, __lane211);
-        let __lane420 = __lanes.mul_add(__lane186, __v37, __lane416);
-        let __lane421 = __lanes.mul_add(__lane186, __qd6, __lane212);
-        let __lane422 = __lanes.mul_add(__lane187, __v37, __lane418);
-        let __lane423 = __lanes.mul_add(__lane187, __qd6, __lane213);
-        let __lane424 = __lanes.add(__lane420, __lane204);
-        let __lane425 = __lanes.add(__lane422, __lane206);
-        let __lane426 = __lanes.mul_add(__lane188, __v70, __lane166);
-        let __lane427 = __lanes.mul(__lane188, __lanes.splat(__c6));
-        let __lane428 = __lanes.mul_add(__lane189, __v70, __lane168);
-        let __lane429 = __lanes.mul(__lane189, __lanes.splat(__c6));
-        let __lane430 = __lanes.mul_add(__lane188, __v71, __lane162);
-        let __lane431 = __lanes.mul(__lane188, __lanes.splat(__v31));
-        let __lane432 = __lanes.mul_add(__lane189, __v71, __lane164);
-        let __lane433 = __lanes.mul(__lane189, __lanes.splat(__v31));
-        let __lane434 = __lanes.mul_add(__lane186, __v70, __lane158);
-        let __lane435 = __lanes.mul_add(__lane186, __s6, __lane427);
-        let __lane436 = __lanes.mul_add(__lane187, __v70, __lane160);
-        let __lane437 = __lanes.mul_add(__lane187, __s6, __lane429);
-        let __lane438 = __lanes.mul_add(__lane186, __v71, __lane426);
-        let __lane439 = __lanes.mul_add(__lane186, __c6, __lane431);
-        let __lane440 = __lanes.mul_add(__lane187, __v71, __lane428);
-        let __lane441 = __lanes.mul_add(__lane187, __c6, __lane433);
-        let __lane442 = __lanes.mul_add(__lane421, __v72, __lane438);
-        let __lane443 = __lanes.mul(__lane421, __lanes.splat(__c6));
-        let __lane444 = __lanes.mul_add(__lane423, __v72, __lane440);
-        let __lane445 = __lanes.mul(__lane423, __lanes.splat(__c6));
-        let __lane446 = __lanes.mul_add(__lane421, __v73, __lane430);
-        let __lane447 = __lanes.mul(__lane421, __lanes.splat(__v31));
-        let __lane448 = __lanes.mul_add(__lane423, __v73, __lane432);
-        let __lane449 = __lanes.mul(__lane423, __lanes.splat(__v31));
-        let __lane450 = __lanes.mul_add(__lane417, __v72, __lane434);
-        let __lane451 = __lanes.mul_add(__lane417, __s6, __lane443);
-        let __lane452 = __lanes.mul_add(__lane419, __v72, __lane436);
-        let __lane453 = __lanes.mul_add(__lane419, __s6, __lane445);
-        let __lane454 = __lanes.mul_add(__lane417, __v73, __lane442);
-        let __lane455 = __lanes.mul_add(__lane417, __c6, __lane447);
-        let __lane456 = __lanes.mul_add(__lane419, __v73, __lane444);
-        let __lane457 = __lanes.mul_add(__lane419, __c6, __lane449);
-        let __lane458 = __lanes.mul_add(__lane178, __v74, __lane454);
-        let __lane459 = __lanes.mul_add(__lane178, __c6, __lane216);
-        let __lane460 = __lanes.mul_add(__lane179, __v74, __lane456);
-        let __lane461 = __lanes.mul_add(__lane179, __c6, __lane217);
-        let __lane462 = __lanes.mul_add(__lane178, __v75, __lane446);
-        let __lane463 = __lanes.mul_add(__lane178, __v31, __lane218);
-        let __lane464 = __lanes.mul_add(__lane179, __v75, __lane448);
-        let __lane465 = __lanes.mul_add(__lane179, __v31, __lane219);
-        let __lane466 = __lanes.mul_add(__lane180, __v74, __lane450);
-        let __lane467 = __lanes.mul_add(__lane180, __s6, __lane459);
-        let __lane468 = __lanes.mul_add(__lane181, __v74, __lane452);
-        let __lane469 = __lanes.mul_add(__lane181, __s6, __lane461);
-        let __lane470 = __lanes.mul_add(__lane180, __v75, __lane458);
-        let __lane471 = __lanes.mul_add(__lane180, __c6, __lane463);
-        let __lane472 = __lanes.mul_add(__lane181, __v75, __lane460);
-        let __lane473 = __lanes.mul_add(__lane181, __c6, __lane465);
-        let __lane474 = __lanes.neg(__lane439);
-        let __lane475 = __lanes.neg(__lane441);
-        let __lane476 = __lanes.mul_add(__lane474, __v76, __lane204);
-        let __lane477 = __lanes.mul(__lane474, __lanes.splat(__v77));
-        let __lane478 = __lanes.mul_add(__lane475, __v76, __lane206);
-        let __lane479 = __lanes.mul(__lane475, __lanes.splat(__v77));
-        let __lane480 = __lanes.neg(__lane451);
-        let __lane481 = __lanes.neg(__lane453);
-        let __lane482 = __lanes.sub(__lane480, __lane477);
-        let __lane483 = __lanes.sub(__lane481, __lane479);
-        let __lane484 = __lanes.sub(__lane236, __lane435);
-        let __lane485 = __lanes.sub(__lane237, __lane437);
-        let __lane486 = __lanes.mul_add(__lane439, __v78, __lane124);
-        let __lane487 = __lanes.mul(__lane439, __lanes.splat(__s5));
-        let __lane488 = __lanes.mul_add(__lane441, __v78, __lane126);
-        let __lane489 = __lanes.mul(__lane441, __lanes.splat(__s5));
-        let __lane490 = __lanes.mul_add(__lane439, __v79, __lane132);
-        let __lane491 = __lanes.mul_add(__lane439, __c5, __lane234);
-        let __lane492 = __lanes.mul_add(__lane441, __v79, __lane134);
-        let __lane493 = __lanes.mul_add(__lane441, __c5, __lane235);
-        let __lane494 = __lanes.mul_add(__lane476, __v45, __lane490);
-        let __lane495 = __lanes.mul_add(__lane476, __c5, __lane252);
-        let __lane496 = __lanes.mul_add(__lane478, __v45, __lane492);
-        let __lane497 = __lanes.mul_add(__lane478, __c5, __lane254);
-        let __lane498 = __lanes.mul_add(__lane476, __v47, __lane128);
-        let __lane499 = __lanes.mul_add(__lane476, __v26, __lane256);
-        let __lane500 = __lanes.mul_add(__lane478, __v47, __lane130);
-        let __lane501 = __lanes.mul_add(__lane478, __v26, __lane257);
-        let __lane502 = __lanes.mul_add(__lane455, __v45, __lane486);
-        let __lane503 = __lanes.mul_add(__lane455, __s5, __lane495);
-        let __lane504 = __lanes.mul_add(__lane457, __v45, __lane488);
-        let __lane505 = __lanes.mul_add(__lane457, __s5, __lane497);
-        let __lane506 = __lanes.mul_add(__lane455, __v47, __lane494);
-        let __lane507 = __lanes.mul_add(__lane455, __c5, __lane499);
-        let __lane508 = __lanes.mul_add(__lane457, __v47, __lane496);
-        let __lane509 = __lanes.mul_add(__lane457, __c5, __lane501);
-        let __lane510 = __lanes.sub(__lane224, __lane467);
-        let __lane511 = __lanes.sub(__lane225, __lane469);
-        let __lane512 = __lanes.mul_add(__lane214, __v80, __lane506);
-        let __lane513 = __lanes.mul_add(__lane214, __c5, __lane226);
-        let __lane514 = __lanes.mul_add(__lane215, __v80, __lane508);
-        let __lane515 = __lanes.mul_add(__lane215, __c5, __lane227);
-        let __lane516 = __lanes.mul_add(__lane214, __v81, __lane498);
-        let __lane517 = __lanes.mul_add(__lane214, __v26, __lane228);
-        let __lane518 = __lanes.mul_add(__lane215, __v81, __lane500);
-        let __lane519 = __lanes.mul_add(__lane215, __v26, __lane229);
-        let __lane520 = __lanes.mul_add(__lane471, __v80, __lane502);
-        let __lane521 = __lanes.mul_add(__lane471, __s5, __lane513);
-        let __lane522 = __lanes.mul_add(__lane473, __v80, __lane504);
-        let __lane523 = __lanes.mul_add(__lane473, __s5, __lane515);
-        let __lane524 = __lanes.mul_add(__lane471, __v81, __lane512);
-        let __lane525 = __lanes.mul_add(__lane471, __c5, __lane517);
-        let __lane526 = __lanes.mul_add(__lane473, __v81, __lane514);
-        let __lane527 = __lanes.mul_add(__lane473, __c5, __lane519);
-        let __lane528 = __lanes.neg(__lane510);
-        let __lane529 = __lanes.neg(__lane511);
-        let __lane530 = __lanes.add(__lane276, __lane521);
-        let __lane531 = __lanes.add(__lane277, __lane523);
-        let __lane532 = __lanes.neg(__lane525);
-        let __lane533 = __lanes.neg(__lane527);
-        let __lane534 = __lanes.mul_add(__lane510, __v4, __lane491);
-        let __lane535 = __lanes.mul_add(__lane511, __v4, __lane493);
-        let __lane536 = __lanes.mul_add(__lane532, __v4, __lane484);
-        let __lane537 = __lanes.mul_add(__lane533, __v4, __lane485);
-        let __lane538 = __lanes.mul_add(__lane528, __v82, __lane503);
-        let __lane539 = __lanes.mul(__lane528, __lanes.splat(__v45));
-        let __lane540 = __lanes.mul_add(__lane529, __v82, __lane505);
-        let __lane541 = __lanes.mul(__lane529, __lanes.splat(__v45));
-        let __lane542 = __lanes.neg(__lane521);
-        let __lane543 = __lanes.neg(__lane523);
-        let __lane544 = __lanes.mul_add(__lane542, __v83, __lane507);
-        let __lane545 = __lanes.mul(__lane542, __lanes.splat(__v47));
-        let __lane546 = __lanes.mul_add(__lane543, __v83, __lane509);
-        let __lane547 = __lanes.mul(__lane543, __lanes.splat(__v47));
-        let __lane548 = __lanes.mul_add(__lane521, __v82, __lane260);
-        let __lane549 = __lanes.mul_add(__lane521, __v48, __lane539);
-        let __lane550 = __lanes.mul_add(__lane523, __v82, __lane261);
-        let __lane551 = __lanes.mul_add(__lane523, __v48, __lane541);
-        let __lane552 = __lanes.mul_add(__lane525, __v83, __lane538);
-        let __lane553 = __lanes.mul_add(__lane525, __v45, __lane545);
-        let __lane554 = __lanes.mul_add(__lane527, __v83, __lane540);
-        let __lane555 = __lanes.mul_add(__lane527, __v45, __lane547);
-        let __lane556 = __lanes.mul_add(__lane553, __v4, __lane544);
-        let __lane557 = __lanes.mul_add(__lane555, __v4, __lane546);
-        let __lane558 = __lanes.neg(__lane549);
-        let __lane559 = __lanes.neg(__lane551);
-        let __lane560 = __lanes.mul_add(__lane558, __v4, __lane548);
-        let __lane561 = __lanes.mul_add(__lane559, __v4, __lane550);
-        let __lane562 = __lanes.neg(__lane536);
-        let __lane563 = __lanes.neg(__lane537);
-        let __lane564 = __lanes.neg(__lane534);
-        let __lane565 = __lanes.neg(__lane535);
-        let __lane566 = __lanes.add(__lane292, __lane487);
-        let __lane567 = __lanes.add(__lane293, __lane489);
-        let __lane568 = __lanes.mul(__lane536, __lanes.splat(__v47));
-        let __lane569 = __lanes.mul_add(__lane536, __qd4, __lane556);
-        let __lane570 = __lanes.mul(__lane537, __lanes.splat(__v47));
-        let __lane571 = __lanes.mul_add(__lane537, __qd4, __lane557);
-        let __lane572 = __lanes.mul_add(__lane564, __v48, __lane568);
-        let __lane573 = __lanes.mul_add(__lane564, __qd4, __lane560);
-        let __lane574 = __lanes.mul_add(__lane565, __v48, __lane570);
-        let __lane575 = __lanes.mul_add(__lane565, __qd4, __lane561);
-        let __lane576 = __lanes.add(__lane334, __lane552);
-        let __lane577 = __lanes.add(__lane572, __lane552);
-        let __lane578 = __lanes.add(__lane335, __lane554);
-        let __lane579 = __lanes.add(__lane574, __lane554);
-        let __lane580 = __lanes.mul_add(__lane562, __v85, __lane98);
-        let __lane581 = __lanes.mul_add(__lane563, __v85, __lane100);
-        let __lane582 = __lanes.mul_add(__lane562, __v86, __lane94);
-        let __lane583 = __lanes.mul_add(__lane562, __v18, __lane286);
-        let __lane584 = __lanes.mul_add(__lane563, __v86, __lane96);
-        let __lane585 = __lanes.mul_add(__lane563, __v18, __lane287);
-        let __lane586 = __lanes.mul_add(__lane534, __v85, __lane90);
-        let __lane587 = __lanes.mul_add(__lane535, __v85, __lane92);
-        let __lane588 = __lanes.mul_add(__lane534, __v86, __lane580);
-        let __lane589 = __lanes.mul_add(__lane534, __c4, __lane583);
-        let __lane590 = __lanes.mul_add(__lane535, __v86, __lane581);
-        let __lane591 = __lanes.mul_add(__lane535, __c4, __lane585);
-        let __lane592 = __lanes.sub(__lane451, __lane573);
-        let __lane593 = __lanes.sub(__lane453, __lane575);
-        let __lane594 = __lanes.mul_add(__lane592, __v54, __lane588);
-        let __lane595 = __lanes.mul_add(__lane592, __c4, __lane336);
-        let __lane596 = __lanes.mul_add(__lane593, __v54, __lane590);
-        let __lane597 = __lanes.mul_add(__lane593, __c4, __lane337);
-        let __lane598 = __lanes.mul_add(__lane592, __v56, __lane582);
-        let __lane599 = __lanes.mul_add(__lane592, __v18, __lane328);
-        let __lane600 = __lanes.mul_add(__lane593, __v56, __lane584);
-        let __lane601 = __lanes.mul_add(__lane593, __v18, __lane329);
-        let __lane602 = __lanes.mul_add(__lane569, __v54, __lane586);
-        let __lane603 = __lanes.mul_add(__lane569, __s4, __lane595);
-        let __lane604 = __lanes.mul_add(__lane571, __v54, __lane587);
-        let __lane605 = __lanes.mul_add(__lane571, __s4, __lane597);
-        let __lane606 = __lanes.mul_add(__lane569, __v56, __lane594);
-        let __lane607 = __lanes.mul_add(__lane569, __c4, __lane599);
-        let __lane608 = __lanes.mul_add(__lane571, __v56, __lane596);
-        let __lane609 = __lanes.mul_add(__lane571, __c4, __lane601);
-        let __lane610 = __lanes.mul_add(__lane528, __v87, __lane606);
-        let __lane611 = __lanes.mul_add(__lane528, __c4, __lane278);
-        let __lane612 = __lanes.mul_add(__lane529, __v87, __lane608);
-        let __lane613 = __lanes.mul_add(__lane529, __c4, __lane279);
-        let __lane614 = __lanes.mul_add(__lane528, __v88, __lane598);
-        let __lane615 = __lanes.mul_add(__lane528, __v18, __lane280);
-        let __lane616 = __lanes.mul_add(__lane529, __v88, __lane600);
-        let __lane617 = __lanes.mul_add(__lane529, __v18, __lane281);
-        let __lane618 = __lanes.mul_add(__lane525, __v87, __lane602);
-        let __lane619 = __lanes.mul_add(__lane525, __s4, __lane611);
-        let __lane620 = __lanes.mul_add(__lane527, __v87, __lane604);
-        let __lane621 = __lanes.mul_add(__lane527, __s4, __lane613);
-        let __lane622 = __lanes.mul_add(__lane525, __v88, __lane610);
-        let __lane623 = __lanes.mul_add(__lane525, __c4, __lane615);
-        let __lane624 = __lanes.mul_add(__lane527, __v88, __lane612);
-        let __lane625 = __lanes.mul_add(__lane527, __c4, __lane617);
-        let __lane626 = __lanes.sub(__lane352, __lane619);
-        let __lane627 = __lanes.sub(__lane353, __lane621);
-        let __lane628 = __lanes.neg(__lane623);
-        let __lane629 = __lanes.neg(__lane625);
-        let __lane630 = __lanes.mul_add(__lane530, __v12, __lane589);
-        let __lane631 = __lanes.mul_add(__lane531, __v12, __lane591);
-        let __lane632 = __lanes.mul_add(__lane619, __v13, __lane566);
-        let __lane633 = __lanes.mul_add(__lane621, __v13, __lane567);
-        let __lane634 = __lanes.mul_add(__lane628, __v12, __lane632);
-        let __lane635 = __lanes.mul_add(__lane629, __v12, __lane633);
-        let __lane636 = __lanes.neg(__lane530);
-        let __lane637 = __lanes.neg(__lane531);
-        let __lane638 = __lanes.mul_add(__lane636, __v89, __lane603);
-        let __lane639 = __lanes.mul(__lane636, __lanes.splat(__v54));
-        let __lane640 = __lanes.mul_add(__lane637, __v89, __lane605);
-        let __lane641 = __lanes.mul(__lane637, __lanes.splat(__v54));
-        let __lane642 = __lanes.mul_add(__lane530, __v90, __lane607);
-        let __lane643 = __lanes.mul(__lane530, __lanes.splat(__v56));
-        let __lane644 = __lanes.mul_add(__lane531, __v90, __lane609);
-        let __lane645 = __lanes.mul(__lane531, __lanes.splat(__v56));
-        let __lane646 = __lanes.neg(__lane619);
-        let __lane647 = __lanes.neg(__lane621);
-        let __lane648 = __lanes.mul_add(__lane646, __v91, __lane642);
-        let __lane649 = __lanes.mul(__lane646, __lanes.splat(__v56));
-        let __lane650 = __lanes.mul_add(__lane647, __v91, __lane644);
-        let __lane651 = __lanes.mul(__lane647, __lanes.splat(__v56));
-        let __lane652 = __lanes.mul_add(__lane619, __v89, __lane576);
-        let __lane653 = __lanes.mul_add(__lane619, __v58, __lane639);
-        let __lane654 = __lanes.mul_add(__lane621, __v89, __lane578);
-        let __lane655 = __lanes.mul_add(__lane621, __v58, __lane641);
-        let __lane656 = __lanes.mul_add(__lane628, __v90, __lane652);
-        let __lane657 = __lanes.mul_add(__lane628, __v58, __lane643);
-        let __lane658 = __lanes.mul_add(__lane629, __v90, __lane654);
-        let __lane659 = __lanes.mul_add(__lane629, __v58, __lane645);
-        let __lane660 = __lanes.mul_add(__lane623, __v91, __lane638);
-        let __lane661 = __lanes.mul_add(__lane623, __v54, __lane649);
-        let __lane662 = __lanes.mul_add(__lane625, __v91, __lane640);
-        let __lane663 = __lanes.mul_add(__lane625, __v54, __lane651);
-        let __lane664 = __lanes.neg(__lane661);
-        let __lane665 = __lanes.neg(__lane663);
-        let __lane666 = __lanes.mul_add(__lane664, __v13, __lane660);
-        let __lane667 = __lanes.mul_add(__lane665, __v13, __lane662);
-        let __lane668 = __lanes.mul_add(__lane661, __v12, __lane648);
-        let __lane669 = __lanes.mul_add(__lane663, __v12, __lane650);
-        let __lane670 = __lanes.mul_add(__lane657, __v13, __lane656);
-        let __lane671 = __lanes.mul_add(__lane659, __v13, __lane658);
-        let __lane672 = __lanes.neg(__lane653);
-        let __lane673 = __lanes.neg(__lane655);
-        let __lane674 = __lanes.mul_add(__lane672, __v12, __lane670);
-        let __lane675 = __lanes.mul_add(__lane673, __v12, __lane671);
-        let __lane676 = __lanes.neg(__lane630);
-        let __lane677 = __lanes.neg(__lane631);
-        let __lane678 = __lanes.mul_add(__lane634, __v92, __lane668);
-        let __lane679 = __lanes.mul(__lane634, __lanes.splat(__v56));
-        let __lane680 = __lanes.mul_add(__lane635, __v92, __lane669);
-        let __lane681 = __lanes.mul(__lane635, __lanes.splat(__v56));
-        let __lane682 = __lanes.mul_add(__lane676, __v92, __lane674);
-        let __lane683 = __lanes.mul_add(__lane676, __v58, __lane679);
-        let __lane684 = __lanes.mul_add(__lane677, __v92, __lane675);
-        let __lane685 = __lanes.mul_add(__lane677, __v58, __lane681);
-        let __lane686 = __lanes.neg(__lane666);
-        let __lane687 = __lanes.neg(__lane667);
-        let __lane688 = __lanes.sub(__lane686, __lane683);
-        let __lane689 = __lanes.sub(__lane687, __lane685);
-        let __lane690 = __lanes.mul_add(__lane634, __v93, __lane44);
-        let __lane691 = __lanes.mul_add(__lane634, __c3, __lane368);
-        let __lane692 = __lanes.mul_add(__lane635, __v93, __lane46);
-        let __lane693 = __lanes.mul_add(__lane635, __c3, __lane369);
-        let __lane694 = __lanes.mul_add(__lane634, __v94, __lane36);
-        let __lane695 = __lanes.mul_add(__lane634, __v9, __lane366);
-        let __lane696 = __lanes.mul_add(__lane635, __v94, __lane38);
-        let __lane697 = __lanes.mul_add(__lane635, __v9, __lane367);
-        let __lane698 = __lanes.mul_add(__lane630, __v93, __lane48);
-        let __lane699 = __lanes.mul_add(__lane630, __s3, __lane691);
-        let __lane700 = __lanes.mul_add(__lane631, __v93, __lane50);
-        let __lane701 = __lanes.mul_add(__lane631, __s3, __lane693);
-        let __lane702 = __lanes.mul_add(__lane630, __v94, __lane690);
-        let __lane703 = __lanes.mul_add(__lane630, __c3, __lane695);
-        let __lane704 = __lanes.mul_add(__lane631, __v94, __lane692);
-        let __lane705 = __lanes.mul_add(__lane631, __c3, __lane697);
-        let __lane706 = __lanes.sub(__lane410, __lane666);
-        let __lane707 = __lanes.sub(__lane411, __lane667);
-        let __lane708 = __lanes.mul_add(__lane682, __v64, __lane702);
-        let __lane709 = __lanes.mul_add(__lane682, __c3, __lane412);
-        let __lane710 = __lanes.mul_add(__lane684, __v64, __lane704);
-        let __lane711 = __lanes.mul_add(__lane684, __c3, __lane413);
-        let __lane712 = __lanes.mul_add(__lane682, __v66, __lane694);
-        let __lane713 = __lanes.mul_add(__lane682, __v9, __lane404);
-        let __lane714 = __lanes.mul_add(__lane684, __v66, __lane696);
-        let __lane715 = __lanes.mul_add(__lane684, __v9, __lane405);
-        let __lane716 = __lanes.mul_add(__lane678, __v64, __lane698);
-        let __lane717 = __lanes.mul_add(__lane678, __s3, __lane709);
-        let __lane718 = __lanes.mul_add(__lane680, __v64, __lane700);
-        let __lane719 = __lanes.mul_add(__lane680, __s3, __lane711);
-        let __lane720 = __lanes.mul_add(__lane678, __v66, __lane708);
-        let __lane721 = __lanes.mul_add(__lane678, __c3, __lane713);
-        let __lane722 = __lanes.mul_add(__lane680, __v66, __lane710);
-        let __lane723 = __lanes.mul_add(__lane680, __c3, __lane715);
-        let __lane724 = __lanes.mul_add(__lane530, __v95, __lane720);
-        let __lane725 = __lanes.mul_add(__lane530, __c3, __lane354);
-        let __lane726 = __lanes.mul_add(__lane531, __v95, __lane722);
-        let __lane727 = __lanes.mul_add(__lane531, __c3, __lane355);
-        let __lane728 = __lanes.mul_add(__lane530, __v96, __lane712);
-        let __lane729 = __lanes.mul_add(__lane530, __v9, __lane356);
-        let __lane730 = __lanes.mul_add(__lane531, __v96, __lane714);
-        let __lane731 = __lanes.mul_add(__lane531, __v9, __lane357);
-        let __lane732 = __lanes.mul_add(__lane623, __v95, __lane716);
-        let __lane733 = __lanes.mul_add(__lane623, __s3, __lane725);
-        let __lane734 = __lanes.mul_add(__lane625, __v95, __lane718);
-        let __lane735 = __lanes.mul_add(__lane625, __s3, __lane727);
-        let __lane736 = __lanes.mul_add(__lane623, __v96, __lane724);
-        let __lane737 = __lanes.mul_add(__lane623, __c3, __lane729);
-        let __lane738 = __lanes.mul_add(__lane625, __v96, __lane726);
-        let __lane739 = __lanes.mul_add(__lane625, __c3, __lane731);
-        let __lane740 = __lanes.neg(__lane626);
-        let __lane741 = __lanes.neg(__lane627);
-        let __lane742 = __lanes.neg(__lane733);
-        let __lane743 = __lanes.neg(__lane735);
-        let __lane744 = __lanes.mul_add(__lane740, __v4, __lane699);
-        let __lane745 = __lanes.mul_add(__lane741, __v4, __lane701);
-        let __lane746 = __lanes.mul_add(__lane626, __v97, __lane721);
-        let __lane747 = __lanes.mul(__lane626, __lanes.splat(__v66));
-        let __lane748 = __lanes.mul_add(__lane627, __v97, __lane723);
-        let __lane749 = __lanes.mul(__lane627, __lanes.splat(__v66));
-        let __lane750 = __lanes.mul_add(__lane742, __v98, __lane746);
-        let __lane751 = __lanes.mul(__lane742, __lanes.splat(__v66));
-        let __lane752 = __lanes.mul_add(__lane743, __v98, __lane748);
-        let __lane753 = __lanes.mul(__lane743, __lanes.splat(__v66));
-        let __lane754 = __lanes.neg(__lane737);
-        let __lane755 = __lanes.neg(__lane739);
-        let __lane756 = __lanes.mul_add(__lane754, __v97, __lane706);
-        let __lane757 = __lanes.mul_add(__lane754, __qd2, __lane747);
-        let __lane758 = __lanes.mul_add(__lane755, __v97, __lane707);
-        let __lane759 = __lanes.mul_add(__lane755, __qd2, __lane749);
-        let __lane760 = __lanes.mul_add(__lane737, __v98, __lane717);
-        let __lane761 = __lanes.mul_add(__lane737, __v64, __lane751);
-        let __lane762 = __lanes.mul_add(__lane739, __v98, __lane719);
-        let __lane763 = __lanes.mul_add(__lane739, __v64, __lane753);
-        let __lane764 = __lanes.neg(__lane761);
-        let __lane765 = __lanes.neg(__lane763);
-        let __lane766 = __lanes.mul_add(__lane764, __v4, __lane760);
-        let __lane767 = __lanes.mul_add(__lane765, __v4, __lane762);
-        let __lane768 = __lanes.mul_add(__lane757, __v4, __lane756);
-        let __lane769 = __lanes.mul_add(__lane759, __v4, __lane758);
-        let __lane770 = __lanes.neg(__lane744);
-        let __lane771 = __lanes.neg(__lane745);
-        let __lane772 = __lanes.mul_add(__lane770, __v66, __lane768);
-        let __lane773 = __lanes.mul_add(__lane770, __qd2, __lane750);
-        let __lane774 = __lanes.mul_add(__lane771, __v66, __lane769);
-        let __lane775 = __lanes.mul_add(__lane771, __qd2, __lane752);
-        let __lane776 = __lanes.mul_add(__lane703, __v64, __lane772);
-        let __lane777 = __lanes.mul_add(__lane703, __qd2, __lane766);
-        let __lane778 = __lanes.mul_add(__lane705, __v64, __lane774);
-        let __lane779 = __lanes.mul_add(__lane705, __qd2, __lane767);
-        let __lane780 = __lanes.mul_add(__lane744, __qdd1, __lane10);
-        let __lane781 = __lanes.mul_add(__lane745, __qdd1, __lane12);
-        let __lane782 = __lanes.mul_add(__lane703, __qdd1, __lane14);
-        let __lane783 = __lanes.mul_add(__lane705, __qdd1, __lane16);
-        let __lane784 = __lanes.mul_add(__lane777, __qd1, __lane780);
-        let __lane785 = __lanes.mul(__lane777, __lanes.splat(__c2));
-        let __lane786 = __lanes.mul_add(__lane779, __qd1, __lane781);
-        let __lane787 = __lanes.mul(__lane779, __lanes.splat(__c2));
-        let __lane788 = __lanes.mul_add(__lane773, __qd1, __lane782);
-        let __lane789 = __lanes.mul_add(__lane773, __s2, __lane785);
-        let __lane790 = __lanes.mul_add(__lane775, __qd1, __lane783);
-        let __lane791 = __lanes.mul_add(__lane775, __s2, __lane787);
-        let __lane792 = __lanes.mul_add(__lane733, __v101, __lane784);
-        let __lane793 = __lanes.mul_add(__lane735, __v101, __lane786);
-        let __lane794 = __lanes.mul_add(__lane737, __v101, __lane788);
-        let __lane795 = __lanes.mul_add(__lane739, __v101, __lane790);
-        let __lane796 = __lanes.sub(__lane466, __lane462);
-        let __lane797 = __lanes.sub(__lane468, __lane464);
-        let __lane798 = __lanes.mul(__lane796, __lanes.splat(__c6));
-        let __lane799 = __lanes.mul(__lane797, __lanes.splat(__c6));
-        let __lane800 = __lanes.neg_mul_add(__lane470, __s6, __lane798);
-        let __lane801 = __lanes.neg_mul_add(__lane472, __s6, __lane799);
-        let __lane802 = __lanes.sub(__lane520, __lane516);
-        let __lane803 = __lanes.sub(__lane522, __lane518);
-        let __lane804 = __lanes.mul(__lane802, __lanes.splat(__c5));
-        let __lane805 = __lanes.mul(__lane803, __lanes.splat(__c5));
-        let __lane806 = __lanes.neg_mul_add(__lane524, __s5, __lane804);
-        let __lane807 = __lanes.neg_mul_add(__lane526, __s5, __lane805);
-        let __lane808 = __lanes.sub(__lane618, __lane614);
-        let __lane809 = __lanes.sub(__lane620, __lane616);
-        let __lane810 = __lanes.mul(__lane808, __lanes.splat(__c4));
-        let __lane811 = __lanes.mul(__lane809, __lanes.splat(__c4));
-        let __lane812 = __lanes.neg_mul_add(__lane622, __s4, __lane810);
-        let __lane813 = __lanes.neg_mul_add(__lane624, __s4, __lane811);
-        let __lane814 = __lanes.sub(__lane732, __lane728);
-        let __lane815 = __lanes.sub(__lane734, __lane730);
-        let __lane816 = __lanes.mul(__lane814, __lanes.splat(__c3));
-        let __lane817 = __lanes.mul(__lane815, __lanes.splat(__c3));
-        let __lane818 = __lanes.neg_mul_add(__lane736, __s3, __lane816);
-        let __lane819 = __lanes.neg_mul_add(__lane738, __s3, __lane817);
-        let __lane820 = __lanes.mul(__lane794, __lanes.splat(__c2));
-        let __lane821 = __lanes.mul(__lane795, __lanes.splat(__c2));
-        let __lane822 = __lanes.neg_mul_add(__lane792, __s2, __lane820);
-        let __lane823 = __lanes.neg_mul_add(__lane793, __s2, __lane821);
+        let __lane5 = __wide.mul(__lane0, __wide.splat(__v0));
+        let __lane6 = __wide.mul(__lane0, __wide.splat(__c2));
+        let __lane7 = __wide.mul(__lane0, __wide.splat(__v2));
+        let __lane8 = __wide.mul(__lane0, __wide.splat(__s2));
+        let __lane9 = __wide.neg(__lane6);
+        let __lane10 = __wide.mul(__lane1, __wide.splat(__v4));
+        let __lane11 = __wide.mul(__lane9, __wide.splat(__v4));
+        let __lane12 = __wide.neg(__lane1);
+        let __lane13 = __wide.neg(__lane11);
+        let __lane14 = __wide.mul(__lane6, __wide.splat(__v5));
+        let __lane15 = __wide.mul(__lane6, __wide.splat(__c3));
+        let __lane16 = __wide.mul(__lane6, __wide.splat(__v7));
+        let __lane17 = __wide.mul(__lane6, __wide.splat(__s3));
+        let __lane18 = __wide.mul(__lane8, __wide.splat(__v5));
+        let __lane19 = __wide.mul_add(__lane8, __v9, __lane15);
+        let __lane20 = __wide.mul_add(__lane8, __v7, __lane14);
+        let __lane21 = __wide.mul_add(__lane8, __c3, __lane17);
+        let __lane22 = __wide.mul_add(__lane10, __v10, __lane20);
+        let __lane23 = __wide.mul(__lane10, __wide.splat(__c3));
+        let __lane24 = __wide.mul_add(__lane10, __v11, __lane16);
+        let __lane25 = __wide.mul(__lane10, __wide.splat(__s3));
+        let __lane26 = __wide.sub(__lane12, __lane2);
+        let __lane27 = __wide.neg(__lane26);
+        let __lane28 = __wide.neg(__lane19);
+        let __lane29 = __wide.mul_add(__lane28, __v12, __lane25);
+        let __lane30 = __wide.mul_add(__lane19, __v13, __lane13);
+        let __lane31 = __wide.mul_add(__lane27, __v13, __lane23);
+        let __lane32 = __wide.mul_add(__lane21, __v12, __lane31);
+        let __lane33 = __wide.add(__lane3, __lane19);
+        let __lane34 = __wide.mul(__lane26, __wide.splat(__v14));
+        let __lane35 = __wide.mul(__lane26, __wide.splat(__c4));
+        let __lane36 = __wide.mul(__lane26, __wide.splat(__v16));
+        let __lane37 = __wide.mul(__lane26, __wide.splat(__s4));
+        let __lane38 = __wide.mul(__lane21, __wide.splat(__v14));
+        let __lane39 = __wide.mul_add(__lane21, __v18, __lane35);
+        let __lane40 = __wide.mul_add(__lane21, __v16, __lane34);
+        let __lane41 = __wide.mul_add(__lane21, __c4, __lane37);
+        let __lane42 = __wide.neg(__lane39);
+        let __lane43 = __wide.mul_add(__lane30, __v19, __lane40);
+        let __lane44 = __wide.mul(__lane30, __wide.splat(__c4));
+        let __lane45 = __wide.mul_add(__lane30, __v20, __lane36);
+        let __lane46 = __wide.mul(__lane30, __wide.splat(__s4));
+        let __lane47 = __wide.mul_add(__lane29, __v19, __lane38);
+        let __lane48 = __wide.mul_add(__lane29, __v18, __lane44);
+        let __lane49 = __wide.mul_add(__lane29, __v20, __lane43);
+        let __lane50 = __wide.mul_add(__lane29, __c4, __lane46);
+        let __lane51 = __wide.neg(__lane48);
+        let __lane52 = __wide.neg(__lane42);
+        let __lane53 = __wide.mul_add(__lane52, __v4, __lane50);
+        let __lane54 = __wide.mul_add(__lane41, __v4, __lane51);
+        let __lane55 = __wide.neg(__lane54);
+        let __lane56 = __wide.mul(__lane33, __wide.splat(__v21));
+        let __lane57 = __wide.mul(__lane33, __wide.splat(__s5));
+        let __lane58 = __wide.mul(__lane41, __wide.splat(__v21));
+        let __lane59 = __wide.mul_add(__lane41, __c5, __lane57);
+        let __lane60 = __wide.mul_add(__lane32, __v24, __lane58);
+        let __lane61 = __wide.mul(__lane32, __wide.splat(__c5));
+        let __lane62 = __wide.mul_add(__lane32, __v25, __lane56);
+        let __lane63 = __wide.mul(__lane32, __wide.splat(__s5));
+        let __lane64 = __wide.mul(__lane53, __wide.splat(__v24));
+        let __lane65 = __wide.mul_add(__lane53, __v26, __lane61);
+        let __lane66 = __wide.mul_add(__lane53, __v25, __lane60);
+        let __lane67 = __wide.mul_add(__lane53, __c5, __lane63);
+        let __lane68 = __wide.sub(__lane52, __lane4);
+        let __lane69 = __wide.mul(__lane68, __wide.splat(__v27));
+        let __lane70 = __wide.mul(__lane68, __wide.splat(__c6));
+        let __lane71 = __wide.mul(__lane68, __wide.splat(__v29));
+        let __lane72 = __wide.mul(__lane68, __wide.splat(__s6));
+        let __lane73 = __wide.mul(__lane59, __wide.splat(__v27));
+        let __lane74 = __wide.mul_add(__lane59, __v31, __lane70);
+        let __lane75 = __wide.mul_add(__lane59, __v29, __lane69);
+        let __lane76 = __wide.mul_add(__lane59, __c6, __lane72);
+        let __lane77 = __wide.mul_add(__lane55, __v32, __lane75);
+        let __lane78 = __wide.mul(__lane55, __wide.splat(__c6));
+        let __lane79 = __wide.mul_add(__lane55, __v33, __lane71);
+        let __lane80 = __wide.mul(__lane55, __wide.splat(__s6));
+        let __lane81 = __wide.mul_add(__lane67, __v32, __lane73);
+        let __lane82 = __wide.mul_add(__lane67, __v31, __lane78);
+        let __lane83 = __wide.mul_add(__lane67, __v33, __lane77);
+        let __lane84 = __wide.mul_add(__lane67, __c6, __lane80);
+        let __lane85 = __wide.mul_add(__lane74, __v34, __lane84);
+        let __lane86 = __wide.neg(__lane76);
+        let __lane87 = __wide.mul_add(__lane86, __v34, __lane82);
+        let __lane88 = __wide.mul(__lane65, __wide.splat(__v35));
+        let __lane89 = __wide.mul(__lane87, __wide.splat(__v35));
+        let __lane90 = __wide.mul(__lane85, __wide.splat(__v35));
+        let __lane91 = __wide.neg(__lane89);
+        let __lane92 = __wide.neg(__lane90);
+        let __lane93 = __wide.mul(__lane91, __wide.splat(__v34));
+        let __lane94 = __wide.mul(__lane90, __wide.splat(__v34));
+        let __lane95 = __wide.neg(__lane88);
+        let __lane96 = __wide.mul(__lane95, __wide.splat(__v36));
+        let __lane97 = __wide.mul(__lane95, __wide.splat(__v37));
+        let __lane98 = __wide.mul(__lane88, __wide.splat(__v38));
+        let __lane99 = __wide.mul(__lane88, __wide.splat(__v39));
+        let __lane100 = __wide.mul(__lane89, __wide.splat(__v36));
+        let __lane101 = __wide.mul_add(__lane89, __v40, __lane97);
+        let __lane102 = __wide.mul_add(__lane92, __v38, __lane100);
+        let __lane103 = __wide.mul_add(__lane92, __v40, __lane99);
+        let __lane104 = __wide.neg(__lane103);
+        let __lane105 = __wide.mul_add(__lane104, __v34, __lane98);
+        let __lane106 = __wide.mul_add(__lane101, __v34, __lane96);
+        let __lane107 = __wide.mul_add(__lane65, __v41, __lane88);
+        let __lane108 = __wide.mul(__lane55, __wide.splat(__v41));
+        let __lane109 = __wide.mul(__lane67, __wide.splat(__v41));
+        let __lane110 = __wide.mul_add(__lane52, __v42, __lane53);
+        let __lane111 = __wide.mul_add(__lane41, __v42, __lane54);
+        let __lane112 = __wide.mul(__lane111, __wide.splat(__v43));
+        let __lane113 = __wide.mul(__lane32, __wide.splat(__v43));
+        let __lane114 = __wide.mul(__lane110, __wide.splat(__v43));
+        let __lane115 = __wide.neg(__lane112);
+        let __lane116 = __wide.neg(__lane114);
+        let __lane117 = __wide.mul(__lane112, __wide.splat(__v42));
+        let __lane118 = __wide.mul(__lane116, __wide.splat(__v42));
+        let __lane119 = __wide.mul(__lane115, __wide.splat(__v44));
+        let __lane120 = __wide.mul(__lane115, __wide.splat(__v45));
+        let __lane121 = __wide.neg(__lane113);
+        let __lane122 = __wide.mul(__lane121, __wide.splat(__v46));
+        let __lane123 = __wide.mul(__lane121, __wide.splat(__v47));
+        let __lane124 = __wide.mul(__lane113, __wide.splat(__v44));
+        let __lane125 = __wide.mul_add(__lane113, __v48, __lane120);
+        let __lane126 = __wide.mul_add(__lane114, __v46, __lane119);
+        let __lane127 = __wide.mul_add(__lane114, __v45, __lane123);
+        let __lane128 = __wide.mul_add(__lane127, __v42, __lane122);
+        let __lane129 = __wide.neg(__lane125);
+        let __lane130 = __wide.mul_add(__lane129, __v42, __lane124);
+        let __lane131 = __wide.mul_add(__lane28, __v49, __lane29);
+        let __lane132 = __wide.mul_add(__lane19, __v50, __lane30);
+        let __lane133 = __wide.mul_add(__lane27, __v50, __lane32);
+        let __lane134 = __wide.mul_add(__lane26, __v51, __lane131);
+        let __lane135 = __wide.neg(__lane21);
+        let __lane136 = __wide.mul_add(__lane135, __v51, __lane132);
+        let __lane137 = __wide.mul_add(__lane21, __v49, __lane133);
+        let __lane138 = __wide.mul(__lane137, __wide.splat(__v52));
+        let __lane139 = __wide.mul(__lane136, __wide.splat(__v52));
+        let __lane140 = __wide.mul(__lane134, __wide.splat(__v52));
+        let __lane141 = __wide.mul(__lane138, __wide.splat(__v49));
+        let __lane142 = __wide.neg(__lane139);
+        let __lane143 = __wide.mul_add(__lane142, __v51, __lane141);
+        let __lane144 = __wide.mul(__lane139, __wide.splat(__v50));
+        let __lane145 = __wide.neg(__lane140);
+        let __lane146 = __wide.mul_add(__lane145, __v49, __lane144);
+        let __lane147 = __wide.neg(__lane138);
+        let __lane148 = __wide.mul(__lane147, __wide.splat(__v53));
+        let __lane149 = __wide.mul(__lane147, __wide.splat(__v54));
+        let __lane150 = __wide.mul(__lane138, __wide.splat(__v55));
+        let __lane151 = __wide.mul(__lane138, __wide.splat(__v56));
+        let __lane152 = __wide.mul_add(__lane142, __v57, __lane150);
+        let __lane153 = __wide.mul(__lane142, __wide.splat(__v56));
+        let __lane154 = __wide.mul(__lane139, __wide.splat(__v53));
+        let __lane155 = __wide.mul_add(__lane139, __v58, __lane149);
+        let __lane156 = __wide.mul_add(__lane145, __v55, __lane154);
+        let __lane157 = __wide.mul_add(__lane145, __v58, __lane151);
+        let __lane158 = __wide.mul_add(__lane140, __v57, __lane148);
+        let __lane159 = __wide.mul_add(__lane140, __v54, __lane153);
+        let __lane160 = __wide.neg(__lane159);
+        let __lane161 = __wide.mul_add(__lane160, __v50, __lane158);
+        let __lane162 = __wide.mul_add(__lane159, __v49, __lane152);
+        let __lane163 = __wide.neg(__lane157);
+        let __lane164 = __wide.mul_add(__lane163, __v51, __lane162);
+        let __lane165 = __wide.mul_add(__lane157, __v50, __lane156);
+        let __lane166 = __wide.neg(__lane155);
+        let __lane167 = __wide.mul_add(__lane166, __v49, __lane165);
+        let __lane168 = __wide.mul_add(__lane155, __v51, __lane161);
+        let __lane169 = __wide.mul(__lane12, __wide.splat(__v59));
+        let __lane170 = __wide.mul_add(__lane1, __v60, __lane10);
+        let __lane171 = __wide.mul_add(__lane9, __v60, __lane11);
+        let __lane172 = __wide.mul_add(__lane6, __v61, __lane169);
+        let __lane173 = __wide.neg(__lane8);
+        let __lane174 = __wide.mul_add(__lane173, __v61, __lane170);
+        let __lane175 = __wide.mul_add(__lane8, __v59, __lane171);
+        let __lane176 = __wide.mul(__lane175, __wide.splat(__v62));
+        let __lane177 = __wide.mul(__lane174, __wide.splat(__v62));
+        let __lane178 = __wide.mul(__lane172, __wide.splat(__v62));
+        let __lane179 = __wide.neg(__lane176);
+        let __lane180 = __wide.mul(__lane179, __wide.splat(__v60));
+        let __lane181 = __wide.mul(__lane176, __wide.splat(__v59));
+        let __lane182 = __wide.neg(__lane177);
+        let __lane183 = __wide.mul_add(__lane182, __v61, __lane181);
+        let __lane184 = __wide.mul_add(__lane178, __v61, __lane180);
+        let __lane185 = __wide.mul(__lane179, __wide.splat(__v63));
+        let __lane186 = __wide.mul(__lane179, __wide.splat(__v64));
+        let __lane187 = __wide.mul(__lane176, __wide.splat(__v65));
+        let __lane188 = __wide.mul(__lane176, __wide.splat(__v66));
+        let __lane189 = __wide.mul_add(__lane182, __v67, __lane187);
+        let __lane190 = __wide.mul(__lane182, __wide.splat(__v66));
+        let __lane191 = __wide.mul(__lane177, __wide.splat(__v63));
+        let __lane192 = __wide.mul_add(__lane177, __qd2, __lane186);
+        let __lane193 = __wide.neg(__lane178);
+        let __lane194 = __wide.mul_add(__lane193, __v65, __lane191);
+        let __lane195 = __wide.mul_add(__lane193, __qd2, __lane188);
+        let __lane196 = __wide.mul_add(__lane178, __v67, __lane185);
+        let __lane197 = __wide.mul_add(__lane178, __v64, __lane190);
+        let __lane198 = __wide.neg(__lane197);
+        let __lane199 = __wide.mul_add(__lane198, __v60, __lane196);
+        let __lane200 = __wide.mul_add(__lane197, __v59, __lane189);
+        let __lane201 = __wide.neg(__lane195);
+        let __lane202 = __wide.mul_add(__lane201, __v61, __lane200);
+        let __lane203 = __wide.mul_add(__lane195, __v60, __lane194);
+        let __lane204 = __wide.neg(__lane192);
+        let __lane205 = __wide.mul_add(__lane204, __v59, __lane203);
+        let __lane206 = __wide.mul_add(__lane192, __v61, __lane199);
+        let __lane207 = __wide.neg(__lane94);
+        let __lane208 = __wide.mul(__lane207, __wide.splat(__v39));
+        let __lane209 = __wide.mul_add(__lane207, __qd6, __lane105);
+        let __lane210 = __wide.mul_add(__lane93, __v37, __lane208);
+        let __lane211 = __wide.mul_add(__lane93, __qd6, __lane106);
+        let __lane212 = __wide.add(__lane210, __lane102);
+        let __lane213 = __wide.mul_add(__lane94, __v70, __lane83);
+        let __lane214 = __wide.mul(__lane94, __wide.splat(__c6));
+        let __lane215 = __wide.mul_add(__lane94, __v71, __lane81);
+        let __lane216 = __wide.mul(__lane94, __wide.splat(__v31));
+        let __lane217 = __wide.mul_add(__lane93, __v70, __lane79);
+        let __lane218 = __wide.mul_add(__lane93, __s6, __lane214);
+        let __lane219 = __wide.mul_add(__lane93, __v71, __lane213);
+        let __lane220 = __wide.mul_add(__lane93, __c6, __lane216);
+        let __lane221 = __wide.mul_add(__lane211, __v72, __lane219);
+        let __lane222 = __wide.mul(__lane211, __wide.splat(__c6));
+        let __lane223 = __wide.mul_add(__lane211, __v73, __lane215);
+        let __lane224 = __wide.mul(__lane211, __wide.splat(__v31));
+        let __lane225 = __wide.mul_add(__lane209, __v72, __lane217);
+        let __lane226 = __wide.mul_add(__lane209, __s6, __lane222);
+        let __lane227 = __wide.mul_add(__lane209, __v73, __lane221);
+        let __lane228 = __wide.mul_add(__lane209, __c6, __lane224);
+        let __lane229 = __wide.mul_add(__lane89, __v74, __lane227);
+        let __lane230 = __wide.mul_add(__lane89, __c6, __lane108);
+        let __lane231 = __wide.mul_add(__lane89, __v75, __lane223);
+        let __lane232 = __wide.mul_add(__lane89, __v31, __lane109);
+        let __lane233 = __wide.mul_add(__lane90, __v74, __lane225);
+        let __lane234 = __wide.mul_add(__lane90, __s6, __lane230);
+        let __lane235 = __wide.mul_add(__lane90, __v75, __lane229);
+        let __lane236 = __wide.mul_add(__lane90, __c6, __lane232);
+        let __lane237 = __wide.neg(__lane220);
+        let __lane238 = __wide.mul_add(__lane237, __v76, __lane102);
+        let __lane239 = __wide.mul(__lane237, __wide.splat(__v77));
+        let __lane240 = __wide.neg(__lane226);
+        let __lane241 = __wide.sub(__lane240, __lane239);
+        let __lane242 = __wide.sub(__lane118, __lane218);
+        let __lane243 = __wide.mul_add(__lane220, __v78, __lane62);
+        let __lane244 = __wide.mul(__lane220, __wide.splat(__s5));
+        let __lane245 = __wide.mul_add(__lane220, __v79, __lane66);
+        let __lane246 = __wide.mul_add(__lane220, __c5, __lane117);
+        let __lane247 = __wide.mul_add(__lane238, __v45, __lane245);
+        let __lane248 = __wide.mul_add(__lane238, __c5, __lane126);
+        let __lane249 = __wide.mul_add(__lane238, __v47, __lane64);
+        let __lane250 = __wide.mul_add(__lane238, __v26, __lane128);
+        let __lane251 = __wide.mul_add(__lane228, __v45, __lane243);
+        let __lane252 = __wide.mul_add(__lane228, __s5, __lane248);
+        let __lane253 = __wide.mul_add(__lane228, __v47, __lane247);
+        let __lane254 = __wide.mul_add(__lane228, __c5, __lane250);
+        let __lane255 = __wide.sub(__lane112, __lane234);
+        let __lane256 = __wide.mul_add(__lane107, __v80, __lane253);
+        let __lane257 = __wide.mul_add(__lane107, __c5, __lane113);
+        let __lane258 = __wide.mul_add(__lane107, __v81, __lane249);
+        let __lane259 = __wide.mul_add(__lane107, __v26, __lane114);
+        let __lane260 = __wide.mul_add(__lane236, __v80, __lane251);
+        let __lane261 = __wide.mul_add(__lane236, __s5, __lane257);
+        let __lane262 = __wide.mul_add(__lane236, __v81, __lane256);
+        let __lane263 = __wide.mul_add(__lane236, __c5, __lane259);
+        let __lane264 = __wide.neg(__lane255);
+        let __lane265 = __wide.add(__lane138, __lane261);
+        let __lane266 = __wide.neg(__lane263);
+        let __lane267 = __wide.mul_add(__lane255, __v4, __lane246);
+        let __lane268 = __wide.mul_add(__lane266, __v4, __lane242);
+        let __lane269 = __wide.mul_add(__lane264, __v82, __lane252);
+        let __lane270 = __wide.mul(__lane264, __wide.splat(__v45));
+        let __lane271 = __wide.neg(__lane261);
+        let __lane272 = __wide.mul_add(__lane271, __v83, __lane254);
+        let __lane273 = __wide.mul(__lane271, __wide.splat(__v47));
+        let __lane274 = __wide.mul_add(__lane261, __v82, __lane130);
+        let __lane275 = __wide.mul_add(__lane261, __v48, __lane270);
+        let __lane276 = __wide.mul_add(__lane263, __v83, __lane269);
+        let __lane277 = __wide.mul_add(__lane263, __v45, __lane273);
+        let __lane278 = __wide.mul_add(__lane277, __v4, __lane272);
+        let __lane279 = __wide.neg(__lane275);
+        let __lane280 = __wide.mul_add(__lane279, __v4, __lane274);
+        let __lane281 = __wide.neg(__lane268);
+        let __lane282 = __wide.neg(__lane267);
+        let __lane283 = __wide.add(__lane146, __lane244);
+        let __lane284 = __wide.mul(__lane268, __wide.splat(__v47));
+        let __lane285 = __wide.mul_add(__lane268, __qd4, __lane278);
+        let __lane286 = __wide.mul_add(__lane282, __v48, __lane284);
+        let __lane287 = __wide.mul_add(__lane282, __qd4, __lane280);
+        let __lane288 = __wide.add(__lane167, __lane276);
+        let __lane289 = __wide.add(__lane286, __lane276);
+        let __lane290 = __wide.mul_add(__lane281, __v85, __lane49);
+        let __lane291 = __wide.mul_add(__lane281, __v86, __lane47);
+        let __lane292 = __wide.mul_add(__lane281, __v18, __lane143);
+        let __lane293 = __wide.mul_add(__lane267, __v85, __lane45);
+        let __lane294 = __wide.mul_add(__lane267, __v86, __lane290);
+        let __lane295 = __wide.mul_add(__lane267, __c4, __lane292);
+        let __lane296 = __wide.sub(__lane226, __lane287);
+        let __lane297 = __wide.mul_add(__lane296, __v54, __lane294);
+        let __lane298 = __wide.mul_add(__lane296, __c4, __lane168);
+        let __lane299 = __wide.mul_add(__lane296, __v56, __lane291);
+        let __lane300 = __wide.mul_add(__lane296, __v18, __lane164);
+        let __lane301 = __wide.mul_add(__lane285, __v54, __lane293);
+        let __lane302 = __wide.mul_add(__lane285, __s4, __lane298);
+        let __lane303 = __wide.mul_add(__lane285, __v56, __lane297);
+        let __lane304 = __wide.mul_add(__lane285, __c4, __lane300);
+        let __lane305 = __wide.mul_add(__lane264, __v87, __lane303);
+        let __lane306 = __wide.mul_add(__lane264, __c4, __lane139);
+        let __lane307 = __wide.mul_add(__lane264, __v88, __lane299);
+        let __lane308 = __wide.mul_add(__lane264, __v18, __lane140);
+        let __lane309 = __wide.mul_add(__lane263, __v87, __lane301);
+        let __lane310 = __wide.mul_add(__lane263, __s4, __lane306);
+        let __lane311 = __wide.mul_add(__lane263, __v88, __lane305);
+        let __lane312 = __wide.mul_add(__lane263, __c4, __lane308);
+        let __lane313 = __wide.sub(__lane176, __lane310);
+        let __lane314 = __wide.neg(__lane312);
+        let __lane315 = __wide.mul_add(__lane265, __v12, __lane295);
+        let __lane316 = __wide.mul_add(__lane310, __v13, __lane283);
+        let __lane317 = __wide.mul_add(__lane314, __v12, __lane316);
+        let __lane318 = __wide.neg(__lane265);
+        let __lane319 = __wide.mul_add(__lane318, __v89, __lane302);
+        let __lane320 = __wide.mul(__lane318, __wide.splat(__v54));
+        let __lane321 = __wide.mul_add(__lane265, __v90, __lane304);
+        let __lane322 = __wide.mul(__lane265, __wide.splat(__v56));
+        let __lane323 = __wide.neg(__lane310);
+        let __lane324 = __wide.mul_add(__lane323, __v91, __lane321);
+        let __lane325 = __wide.mul(__lane323, __wide.splat(__v56));
+        let __lane326 = __wide.mul_add(__lane310, __v89, __lane288);
+        let __lane327 = __wide.mul_add(__lane310, __v58, __lane320);
+        let __lane328 = __wide.mul_add(__lane314, __v90, __lane326);
+        let __lane329 = __wide.mul_add(__lane314, __v58, __lane322);
+        let __lane330 = __wide.mul_add(__lane312, __v91, __lane319);
+        let __lane331 = __wide.mul_add(__lane312, __v54, __lane325);
+        let __lane332 = __wide.neg(__lane331);
+        let __lane333 = __wide.mul_add(__lane332, __v13, __lane330);
+        let __lane334 = __wide.mul_add(__lane331, __v12, __lane324);
+        let __lane335 = __wide.mul_add(__lane329, __v13, __lane328);
+        let __lane336 = __wide.neg(__lane327);
+        let __lane337 = __wide.mul_add(__lane336, __v12, __lane335);
+        let __lane338 = __wide.neg(__lane315);
+        let __lane339 = __wide.mul_add(__lane317, __v92, __lane334);
+        let __lane340 = __wide.mul(__lane317, __wide.splat(__v56));
+        let __lane341 = __wide.mul_add(__lane338, __v92, __lane337);
+        let __lane342 = __wide.mul_add(__lane338, __v58, __lane340);
+        let __lane343 = __wide.neg(__lane333);
+        let __lane344 = __wide.sub(__lane343, __lane342);
+        let __lane345 = __wide.mul_add(__lane317, __v93, __lane22);
+        let __lane346 = __wide.mul_add(__lane317, __c3, __lane184);
+        let __lane347 = __wide.mul_add(__lane317, __v94, __lane18);
+        let __lane348 = __wide.mul_add(__lane317, __v9, __lane183);
+        let __lane349 = __wide.mul_add(__lane315, __v93, __lane24);
+        let __lane350 = __wide.mul_add(__lane315, __s3, __lane346);
+        let __lane351 = __wide.mul_add(__lane315, __v94, __lane345);
+        let __lane352 = __wide.mul_add(__lane315, __c3, __lane348);
+        let __lane353 = __wide.sub(__lane205, __lane333);
+        let __lane354 = __wide.mul_add(__lane341, __v64, __lane351);
+        let __lane355 = __wide.mul_add(__lane341, __c3, __lane206);
+        let __lane356 = __wide.mul_add(__lane341, __v66, __lane347);
+        let __lane357 = __wide.mul_add(__lane341, __v9, __lane202);
+        let __lane358 = __wide.mul_add(__lane339, __v64, __lane349);
+        let __lane359 = __wide.mul_add(__lane339, __s3, __lane355);
+        let __lane360 = __wide.mul_add(__lane339, __v66, __lane354);
+        let __lane361 = __wide.mul_add(__lane339, __c3, __lane357);
+        let __lane362 = __wide.mul_add(__lane265, __v95, __lane360);
+        let __lane363 = __wide.mul_add(__lane265, __c3, __lane177);
+        let __lane364 = __wide.mul_add(__lane265, __v96, __lane356);
+        let __lane365 = __wide.mul_add(__lane265, __v9, __lane178);
+        let __lane366 = __wide.mul_add(__lane312, __v95, __lane358);
+        let __lane367 = __wide.mul_add(__lane312, __s3, __lane363);
+        let __lane368 = __wide.mul_add(__lane312, __v96, __lane362);
+        let __lane369 = __wide.mul_add(__lane312, __c3, __lane365);
+        let __lane370 = __wide.neg(__lane313);
+        let __lane371 = __wide.neg(__lane367);
+        let __lane372 = __wide.mul_add(__lane370, __v4, __lane350);
+        let __lane373 = __wide.mul_add(__lane313, __v97, __lane361);
+        let __lane374 = __wide.mul(__lane313, __wide.splat(__v66));
+        let __lane375 = __wide.mul_add(__lane371, __v98, __lane373);
+        let __lane376 = __wide.mul(__lane371, __wide.splat(__v66));
+        let __lane377 = __wide.neg(__lane369);
+        let __lane378 = __wide.mul_add(__lane377, __v97, __lane353);
+        let __lane379 = __wide.mul_add(__lane377, __qd2, __lane374);
+        let __lane380 = __wide.mul_add(__lane369, __v98, __lane359);
+        let __lane381 = __wide.mul_add(__lane369, __v64, __lane376);
+        let __lane382 = __wide.neg(__lane381);
+        let __lane383 = __wide.mul_add(__lane382, __v4, __lane380);
+        let __lane384 = __wide.mul_add(__lane379, __v4, __lane378);
+        let __lane385 = __wide.neg(__lane372);
+        let __lane386 = __wide.mul_add(__lane385, __v66, __lane384);
+        let __lane387 = __wide.mul_add(__lane385, __qd2, __lane375);
+        let __lane388 = __wide.mul_add(__lane352, __v64, __lane386);
+        let __lane389 = __wide.mul_add(__lane352, __qd2, __lane383);
+        let __lane390 = __wide.mul_add(__lane372, __qdd1, __lane5);
+        let __lane391 = __wide.mul_add(__lane352, __qdd1, __lane7);
+        let __lane392 = __wide.mul_add(__lane389, __qd1, __lane390);
+        let __lane393 = __wide.mul(__lane389, __wide.splat(__c2));
+        let __lane394 = __wide.mul_add(__lane387, __qd1, __lane391);
+        let __lane395 = __wide.mul_add(__lane387, __s2, __lane393);
+        let __lane396 = __wide.mul_add(__lane367, __v101, __lane392);
+        let __lane397 = __wide.mul_add(__lane369, __v101, __lane394);
+        let __lane398 = __wide.sub(__lane233, __lane231);
+        let __lane399 = __wide.mul(__lane398, __wide.splat(__c6));
+        let __lane400 = __wide.neg_mul_add(__lane235, __s6, __lane399);
+        let __lane401 = __wide.sub(__lane260, __lane258);
+        let __lane402 = __wide.mul(__lane401, __wide.splat(__c5));
+        let __lane403 = __wide.neg_mul_add(__lane262, __s5, __lane402);
+        let __lane404 = __wide.sub(__lane309, __lane307);
+        let __lane405 = __wide.mul(__lane404, __wide.splat(__c4));
+        let __lane406 = __wide.neg_mul_add(__lane311, __s4, __lane405);
+        let __lane407 = __wide.sub(__lane366, __lane364);
+        let __lane408 = __wide.mul(__lane407, __wide.splat(__c3));
+        let __lane409 = __wide.neg_mul_add(__lane368, __s3, __lane408);
+        let __lane410 = __wide.mul(__lane397, __wide.splat(__c2));
+        let __lane411 = __wide.neg_mul_add(__lane396, __s2, __lane410);
         let __lane_zero = 0.0_f64;
-        let __lane822_0 = __lanes.lanes(__lane822)[0];
-        let __lane818_0 = __lanes.lanes(__lane818)[0];
-        let __lane812_0 = __lanes.lanes(__lane812)[0];
-        let __lane806_0 = __lanes.lanes(__lane806)[0];
-        let __lane800_0 = __lanes.lanes(__lane800)[0];
-        let __lane822_1 = __lanes.lanes(__lane822)[1];
-        let __lane818_1 = __lanes.lanes(__lane818)[1];
-        let __lane812_1 = __lanes.lanes(__lane812)[1];
-        let __lane806_1 = __lanes.lanes(__lane806)[1];
-        let __lane800_1 = __lanes.lanes(__lane800)[1];
-        let __lane822_2 = __lanes.lanes(__lane822)[2];
-        let __lane818_2 = __lanes.lanes(__lane818)[2];
-        let __lane812_2 = __lanes.lanes(__lane812)[2];
-        let __lane806_2 = __lanes.lanes(__lane806)[2];
-        let __lane800_2 = __lanes.lanes(__lane800)[2];
-        let __lane822_3 = __lanes.lanes(__lane822)[3];
-        let __lane818_3 = __lanes.lanes(__lane818)[3];
-        let __lane812_3 = __lanes.lanes(__lane812)[3];
-        let __lane806_3 = __lanes.lanes(__lane806)[3];
-        let __lane800_3 = __lanes.lanes(__lane800)[3];
-        let __lane823_0 = __lanes.lanes(__lane823)[0];
-        let __lane819_0 = __lanes.lanes(__lane819)[0];
-        let __lane813_0 = __lanes.lanes(__lane813)[0];
-        let __lane807_0 = __lanes.lanes(__lane807)[0];
-        let __lane801_0 = __lanes.lanes(__lane801)[0];
-        let __lane823_1 = __lanes.lanes(__lane823)[1];
-        let __lane819_1 = __lanes.lanes(__lane819)[1];
-        let __lane813_1 = __lanes.lanes(__lane813)[1];
-        let __lane807_1 = __lanes.lanes(__lane807)[1];
-        let __lane801_1 = __lanes.lanes(__lane801)[1];
-        let __lane789_0 = __lanes.lanes(__lane789)[0];
-        let __lane776_0 = __lanes.lanes(__lane776)[0];
-        let __lane688_0 = __lanes.lanes(__lane688)[0];
-        let __lane577_0 = __lanes.lanes(__lane577)[0];
-        let __lane482_0 = __lanes.lanes(__lane482)[0];
-        let __lane424_0 = __lanes.lanes(__lane424)[0];
-        let __lane789_1 = __lanes.lanes(__lane789)[1];
-        let __lane776_1 = __lanes.lanes(__lane776)[1];
-        let __lane688_1 = __lanes.lanes(__lane688)[1];
-        let __lane577_1 = __lanes.lanes(__lane577)[1];
-        let __lane482_1 = __lanes.lanes(__lane482)[1];
-        let __lane424_1 = __lanes.lanes(__lane424)[1];
-        let __lane789_2 = __lanes.lanes(__lane789)[2];
-        let __lane776_2 = __lanes.lanes(__lane776)[2];
-        let __lane688_2 = __lanes.lanes(__lane688)[2];
-        let __lane577_2 = __lanes.lanes(__lane577)[2];
-        let __lane482_2 = __lanes.lanes(__lane482)[2];
-        let __lane424_2 = __lanes.lanes(__lane424)[2];
-        let __lane789_3 = __lanes.lanes(__lane789)[3];
-        let __lane776_3 = __lanes.lanes(__lane776)[3];
-        let __lane688_3 = __lanes.lanes(__lane688)[3];
-        let __lane577_3 = __lanes.lanes(__lane577)[3];
-        let __lane482_3 = __lanes.lanes(__lane482)[3];
-        let __lane424_3 = __lanes.lanes(__lane424)[3];
-        let __lane791_0 = __lanes.lanes(__lane791)[0];
-        let __lane778_0 = __lanes.lanes(__lane778)[0];
-        let __lane689_0 = __lanes.lanes(__lane689)[0];
-        let __lane579_0 = __lanes.lanes(__lane579)[0];
-        let __lane483_0 = __lanes.lanes(__lane483)[0];
-        let __lane425_0 = __lanes.lanes(__lane425)[0];
-        let __lane791_1 = __lanes.lanes(__lane791)[1];
-        let __lane778_1 = __lanes.lanes(__lane778)[1];
-        let __lane689_1 = __lanes.lanes(__lane689)[1];
-        let __lane579_1 = __lanes.lanes(__lane579)[1];
-        let __lane483_1 = __lanes.lanes(__lane483)[1];
-        let __lane425_1 = __lanes.lanes(__lane425)[1];
+        let __lane411_0 = __wide.lanes(__lane411)[0];
+        let __lane409_0 = __wide.lanes(__lane409)[0];
+        let __lane406_0 = __wide.lanes(__lane406)[0];
+        let __lane403_0 = __wide.lanes(__lane403)[0];
+        let __lane400_0 = __wide.lanes(__lane400)[0];
+        let __lane411_1 = __wide.lanes(__lane411)[1];
+        let __lane409_1 = __wide.lanes(__lane409)[1];
+        let __lane406_1 = __wide.lanes(__lane406)[1];
+        let __lane403_1 = __wide.lanes(__lane403)[1];
+        let __lane400_1 = __wide.lanes(__lane400)[1];
+        let __lane411_2 = __wide.lanes(__lane411)[2];
+        let __lane409_2 = __wide.lanes(__lane409)[2];
+        let __lane406_2 = __wide.lanes(__lane406)[2];
+        let __lane403_2 = __wide.lanes(__lane403)[2];
+        let __lane400_2 = __wide.lanes(__lane400)[2];
+        let __lane411_3 = __wide.lanes(__lane411)[3];
+        let __lane409_3 = __wide.lanes(__lane409)[3];
+        let __lane406_3 = __wide.lanes(__lane406)[3];
+        let __lane403_3 = __wide.lanes(__lane403)[3];
+        let __lane400_3 = __wide.lanes(__lane400)[3];
+        let __lane411_4 = __wide.lanes(__lane411)[4];
+        let __lane409_4 = __wide.lanes(__lane409)[4];
+        let __lane406_4 = __wide.lanes(__lane406)[4];
+        let __lane403_4 = __wide.lanes(__lane403)[4];
+        let __lane400_4 = __wide.lanes(__lane400)[4];
+        let __lane411_5 = __wide.lanes(__lane411)[5];
+        let __lane409_5 = __wide.lanes(__lane409)[5];
+        let __lane406_5 = __wide.lanes(__lane406)[5];
+        let __lane403_5 = __wide.lanes(__lane403)[5];
+        let __lane400_5 = __wide.lanes(__lane400)[5];
+        let __lane395_0 = __wide.lanes(__lane395)[0];
+        let __lane388_0 = __wide.lanes(__lane388)[0];
+        let __lane344_0 = __wide.lanes(__lane344)[0];
+        let __lane289_0 = __wide.lanes(__lane289)[0];
+        let __lane241_0 = __wide.lanes(__lane241)[0];
+        let __lane212_0 = __wide.lanes(__lane212)[0];
+        let __lane395_1 = __wide.lanes(__lane395)[1];
+        let __lane388_1 = __wide.lanes(__lane388)[1];
+        let __lane344_1 = __wide.lanes(__lane344)[1];
+        let __lane289_1 = __wide.lanes(__lane289)[1];
+        let __lane241_1 = __wide.lanes(__lane241)[1];
+        let __lane212_1 = __wide.lanes(__lane212)[1];
+        let __lane395_2 = __wide.lanes(__lane395)[2];
+        let __lane388_2 = __wide.lanes(__lane388)[2];
+        let __lane344_2 = __wide.lanes(__lane344)[2];
+        let __lane289_2 = __wide.lanes(__lane289)[2];
+        let __lane241_2 = __wide.lanes(__lane241)[2];
+        let __lane212_2 = __wide.lanes(__lane212)[2];
+        let __lane395_3 = __wide.lanes(__lane395)[3];
+        let __lane388_3 = __wide.lanes(__lane388)[3];
+        let __lane344_3 = __wide.lanes(__lane344)[3];
+        let __lane289_3 = __wide.lanes(__lane289)[3];
+        let __lane241_3 = __wide.lanes(__lane241)[3];
+        let __lane212_3 = __wide.lanes(__lane212)[3];
+        let __lane395_4 = __wide.lanes(__lane395)[4];
+        let __lane388_4 = __wide.lanes(__lane388)[4];
+        let __lane344_4 = __wide.lanes(__lane344)[4];
+        let __lane289_4 = __wide.lanes(__lane289)[4];
+        let __lane241_4 = __wide.lanes(__lane241)[4];
+        let __lane212_4 = __wide.lanes(__lane212)[4];
+        let __lane395_5 = __wide.lanes(__lane395)[5];
+        let __lane388_5 = __wide.lanes(__lane388)[5];
+        let __lane344_5 = __wide.lanes(__lane344)[5];
+        let __lane289_5 = __wide.lanes(__lane289)[5];
+        let __lane241_5 = __wide.lanes(__lane241)[5];
+        let __lane212_5 = __wide.lanes(__lane212)[5];
         (
             ::planar_arm::__private::columns([
                 [
@@ -4997,97 +4582,118 @@ Cost: 1456 multiplications, 1164 additions, 0 divisions, 5 sin_cos pairs; where 
                     __lane_zero,
                 ],
                 [
-                    __lane822_0,
-                    __lane822_1,
-                    __lane822_2,
-                    __lane822_3,
-                    __lane823_0,
-                    __lane823_1,
+                    __lane411_0,
+                    __lane411_1,
+                    __lane411_2,
+                    __lane411_3,
+                    __lane411_4,
+                    __lane411_5,
                 ],
                 [
-                    __lane818_0,
-                    __lane818_1,
-                    __lane818_2,
-                    __lane818_3,
-                    __lane819_0,
-                    __lane819_1,
+                    __lane409_0,
+                    __lane409_1,
+                    __lane409_2,
+                    __lane409_3,
+                    __lane409_4,
+                    __lane409_5,
                 ],
                 [
-                    __lane812_0,
-                    __lane812_1,
-                    __lane812_2,
-                    __lane812_3,
-                    __lane813_0,
-                    __lane813_1,
+                    __lane406_0,
+                    __lane406_1,
+                    __lane406_2,
+                    __lane406_3,
+                    __lane406_4,
+                    __lane406_5,
                 ],
                 [
-                    __lane806_0,
-                    __lane806_1,
-                    __lane806_2,
-                    __lane806_3,
-                    __lane807_0,
-                    __lane807_1,
+                    __lane403_0,
+                    __lane403_1,
+                    __lane403_2,
+                    __lane403_3,
+                    __lane403_4,
+                    __lane403_5,
                 ],
                 [
-                    __lane800_0,
-                    __lane800_1,
-                    __lane800_2,
-                    __lane800_3,
-                    __lane801_0,
-                    __lane801_1,
+                    __lane400_0,
+                    __lane400_1,
+                    __lane400_2,
+                    __lane400_3,
+                    __lane400_4,
+                    __lane400_5,
                 ],
             ]),
             ::planar_arm::__private::columns([
                 [
-                    __lane789_0,
-                    __lane789_1,
-                    __lane789_2,
-                    __lane789_3,
-                    __lane791_0,
-                    __lane791_1,
+                    __lane395_0,
+                    __lane395_1,
+                    __lane395_2,
+                    __lane395_3,
+                    __lane395_4,
+                    __lane395_5,
                 ],
                 [
-                    __lane776_0,
-                    __lane776_1,
-                    __lane776_2,
-                    __lane776_3,
-                    __lane778_0,
-                    __lane778_1,
+                    __lane388_0,
+                    __lane388_1,
+                    __lane388_2,
+                    __lane388_3,
+                    __lane388_4,
+                    __lane388_5,
                 ],
                 [
-                    __lane688_0,
-                    __lane688_1,
-                    __lane688_2,
-                    __lane688_3,
-                    __lane689_0,
-                    __lane689_1,
+                    __lane344_0,
+                    __lane344_1,
+                    __lane344_2,
+                    __lane344_3,
+                    __lane344_4,
+                    __lane344_5,
                 ],
                 [
-                    __lane577_0,
-                    __lane577_1,
-                    __lane577_2,
-                    __lane577_3,
-                    __lane579_0,
-                    __lane579_1,
+                    __lane289_0,
+                    __lane289_1,
+                    __lane289_2,
+                    __lane289_3,
+                    __lane289_4,
+                    __lane289_5,
                 ],
                 [
-                    __lane482_0,
-                    __lane482_1,
-                    __lane482_2,
-                    __lane482_3,
-                    __lane483_0,
-                    __lane483_1,
+                    __lane241_0,
+                    __lane241_1,
+                    __lane241_2,
+                    __lane241_3,
+                    __lane241_4,
+                    __lane241_5,
                 ],
                 [
-                    __lane424_0,
-                    __lane424_1,
-                    __lane424_2,
-                    __lane424_3,
-                    __lane425_0,
-                    __lane425_1,
+                    __lane212_0,
+                    __lane212_1,
+                    __lane212_2,
+                    __lane212_3,
+                    __lane212_4,
+                    __lane212_5,
                 ],
             ]),
         )
+    }
+    #[inline]
+    fn forward_dynamics_derivatives(
+        &self,
+        __q: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+        __qd: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+        __tau: &::planar_arm::nalgebra::SVector<::core::primitive::f64, 6>,
+    ) -> (
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 6, 6>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 6, 6>,
+        ::planar_arm::nalgebra::SMatrix<::core::primitive::f64, 6, 6>,
+    ) {
+        ::planar_arm::__private::dispatch_wide(::planar_arm::__private::ForwardDynamicsDerivatives::<
+            Self,
+            6,
+        > {
+            arm: self,
+            q: __q,
+            qd: __qd,
+            tau: __tau,
+        })
     }
 }
 #[automatically_derived]

@@ -78,7 +78,7 @@ impl Prime {
         if n < 2 {
             return false;
         }
-        if let Some(&b) = BASES.iter().find(|&&b| n % b == 0) {
+        if let Some(&b) = BASES.iter().find(|&&b| n.is_multiple_of(b)) {
             return n == b;
         }
         let field = Self(n);

@@ -15,7 +15,12 @@ use crate::programs::packed::{Lane, Packed};
 pub(crate) fn render_packed(pk: &Packed) -> Result<Rendered, EmitError> {
     let values = render(&pk.values, Scalar::F64)?;
     let live = pk.live();
-    let lanes = local("lanes");
+    // Eight lanes (a reverse-mode program) are the lanes' `Wide`.
+    let lanes = if pk.width == 8 {
+        local("wide")
+    } else {
+        local("lanes")
+    };
     let name = |k: usize| local(&format!("lane{k}"));
     let mut statements: Vec<Vec<TokenTree>> = Vec::new();
     let mut defined: Vec<(usize, Ident)> = Vec::new();
@@ -42,6 +47,11 @@ pub(crate) fn render_packed(pk: &Packed) -> Result<Rendered, EmitError> {
         }
         let s = |x: usize| values.outputs[x].clone();
         let (value, reads) = match *op {
+            Lane::Const(_) if pk.width != 4 => {
+                return Err(EmitError {
+                    message: "internal: a constant in a program of eight lanes".to_string(),
+                })
+            }
             Lane::Const(c) => {
                 let c = c.map(|x| Literal::f64_unsuffixed(f64::from(x)));
                 (quote!(#lanes.constant([#(#c),*])), vec![])
@@ -50,7 +60,7 @@ pub(crate) fn render_packed(pk: &Packed) -> Result<Rendered, EmitError> {
                 let (w, k, r) = (
                     local("minv"),
                     Literal::usize_unsuffixed(k),
-                    Literal::usize_unsuffixed(4 * g),
+                    Literal::usize_unsuffixed(pk.width * g),
                 );
                 (
                     quote!(#lanes.constant(::planar_arm::__private::negated_rows(#w, #k, #r))),
@@ -140,6 +150,15 @@ pub(crate) fn render_packed(pk: &Packed) -> Result<Rendered, EmitError> {
         }
     }
     let mut all = values.statements;
+    if pk.width == 8 {
+        let four = local("lanes");
+        // The eight lanes' type is `Lanes::Wide` of the body's lanes, whose methods need their
+        // trait in scope.
+        all.push(quote!(
+            use ::planar_arm::__private::Wide as _;
+        ));
+        all.push(quote!(let #lanes = ::planar_arm::__private::Lanes::wide(#four);));
+    }
     all.extend(chunked(statements, 0, &defined, &last_read));
     Ok(Rendered {
         statements: all,

@@ -264,7 +264,10 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
     }
     body.extend(frozen::variants(n, &hot, split.as_ref())?);
     body.extend(solved(n, adjoint.is_some()));
-    body.extend(adjoint);
+    if let Some(adjoint) = adjoint {
+        body.push(adjoint);
+        body.push(wide_dispatch(n));
+    }
     body.push(exact(n, &d)?);
     let (names, names_doc) = (&header.joint_names, &header.joint_names_doc);
     body.push(quote! {
@@ -376,6 +379,28 @@ fn solved(n: usize, adjoint: bool) -> [TokenStream; 4] {
             }
         },
     ]
+}
+
+/// `forward_dynamics_derivatives` through `__private::dispatch_wide`, whose third copy runs the
+/// reverse-mode program eight rows to an AVX-512 register where the processor has AVX-512F.
+fn wide_dispatch(n: usize) -> TokenStream {
+    let nn = Literal::usize_unsuffixed(n);
+    let (q, qd, tau) = (local("q"), local("qd"), local("tau"));
+    let v = quote!(::planar_arm::nalgebra::SVector<#F64, #nn>);
+    let m = quote!(::planar_arm::nalgebra::SMatrix<#F64, #nn, #nn>);
+    quote! {
+        #[inline]
+        fn forward_dynamics_derivatives(&self, #q: &#v, #qd: &#v, #tau: &#v) -> (#m, #m, #m) {
+            ::planar_arm::__private::dispatch_wide(
+                ::planar_arm::__private::ForwardDynamicsDerivatives::<Self, #nn> {
+                    arm: self,
+                    q: #q,
+                    qd: #qd,
+                    tau: #tau,
+                },
+            )
+        }
+    }
 }
 
 /// `__private::isometry3` of twelve outputs: the rotation row-major, then the position.

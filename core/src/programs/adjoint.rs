@@ -48,10 +48,17 @@ fn accumulate(b: &mut Builder, p: &mut Program, acc: Option<usize>, term: Term) 
 }
 
 /// `-W d outputs / d wrt` for a `rows x outputs.len()` matrix `W` read at run time
-/// ([`Lane::Seed`]), row-major (`rows`, then `wrt`); `None` if the program has an operation
-/// this does not differentiate (a quotient, a `max`) on the way from `wrt` to `outputs`.
+/// ([`Lane::Seed`]), `width` rows per lane group, row-major (`rows`, then `wrt`); `None` if the
+/// program has an operation this does not differentiate (a quotient, a `max`) on the way from
+/// `wrt` to `outputs`.
 #[must_use]
-pub fn adjoint(p: &Program, outputs: &[Id], rows: usize, wrt: &[Input]) -> Option<Packed> {
+pub fn adjoint(
+    p: &Program,
+    outputs: &[Id],
+    rows: usize,
+    wrt: &[Input],
+    width: usize,
+) -> Option<Packed> {
     let nodes = p.nodes();
     let uses = p.use_counts(outputs);
     let mut atoms: BTreeMap<Id, (crate::trig::Angle, bool)> = BTreeMap::new();
@@ -88,7 +95,7 @@ pub fn adjoint(p: &Program, outputs: &[Id], rows: usize, wrt: &[Input]) -> Optio
     }
     let mut values = p.clone();
     let mut b = Builder::new();
-    let groups = rows.div_ceil(4);
+    let groups = rows.div_ceil(width);
     // acc[g][node], by_input[g][x]: the adjoint of a node, of `wrt[x]`, in group g.
     let mut acc: Vec<Vec<Option<usize>>> = vec![vec![None; nodes.len()]; groups];
     let mut by_input = vec![vec![None; wrt.len()]; groups];
@@ -180,11 +187,16 @@ pub fn adjoint(p: &Program, outputs: &[Id], rows: usize, wrt: &[Input]) -> Optio
     }
     let mut derivatives = Vec::with_capacity(rows * wrt.len());
     for row in 0..rows {
-        derivatives.extend(by_input[row / 4].iter().map(|d| d.map(|op| (op, row % 4))));
+        derivatives.extend(
+            by_input[row / width]
+                .iter()
+                .map(|d| d.map(|op| (op, row % width))),
+        );
     }
     Some(Packed {
         values: b.values(values),
         ops: b.ops,
+        width,
         derivatives,
     })
 }
@@ -229,23 +241,25 @@ mod tests {
             Input::Qdd(_) => 0.7,
             _ => state(i),
         };
-        let pk = adjoint(&p, &outputs, rows, &wrt).expect("no quotient");
-        assert!(pk.fused_count() > 0, "nothing fused");
-        let got = pk.eval_seeded(&at, &w);
-        let mut reference = p.clone();
-        let tangents = differentiate(&mut reference, &outputs, &wrt).unwrap();
-        let values = reference.eval(&at);
-        for r in 0..rows {
-            for (x, _) in wrt.iter().enumerate() {
-                let want: f64 = -(0..outputs.len())
-                    .map(|o| w(r, o) * values[tangents[o][x].0 as usize])
-                    .sum::<f64>();
-                let y = got[r * wrt.len() + x];
-                assert!(
-                    (y - want).abs() <= 1e-14 * (1.0 + want.abs()),
-                    "row {r}, {:?}: {y} against {want}",
-                    wrt[x]
-                );
+        for width in [4, 8] {
+            let pk = adjoint(&p, &outputs, rows, &wrt, width).expect("no quotient");
+            assert!(pk.fused_count() > 0, "nothing fused");
+            let got = pk.eval_seeded(&at, &w);
+            let mut reference = p.clone();
+            let tangents = differentiate(&mut reference, &outputs, &wrt).unwrap();
+            let values = reference.eval(&at);
+            for r in 0..rows {
+                for (x, _) in wrt.iter().enumerate() {
+                    let want: f64 = -(0..outputs.len())
+                        .map(|o| w(r, o) * values[tangents[o][x].0 as usize])
+                        .sum::<f64>();
+                    let y = got[r * wrt.len() + x];
+                    assert!(
+                        (y - want).abs() <= 1e-14 * (1.0 + want.abs()),
+                        "width {width}, row {r}, {:?}: {y} against {want}",
+                        wrt[x]
+                    );
+                }
             }
         }
     }
@@ -257,6 +271,6 @@ mod tests {
         let q = p.input(Input::Q(0));
         let qd = p.input(Input::Qd(0));
         let r = p.div(qd, q);
-        assert!(adjoint(&p, &[r], 1, &[Input::Q(0)]).is_none());
+        assert!(adjoint(&p, &[r], 1, &[Input::Q(0)], 8).is_none());
     }
 }

@@ -39,9 +39,9 @@ pub enum Lane {
     NegMulAdd(usize, usize, usize),
     /// `a * s - c`, rounded once.
     MulSub(usize, usize, usize),
-    /// The seed of a reverse-mode program ([`adjoint`](crate::programs::adjoint)) for its
-    /// output `k` and lane group `g`: lane `l` is `-W(4g + l, k)`, `W` a matrix read at run
-    /// time (zero past its last row).
+    /// The seed of a reverse-mode program ([`adjoint`](crate::adjoint)) for its
+    /// output `k` and lane group `g`: lane `l` is `-W(width g + l, k)`, `W` a matrix read at
+    /// run time (zero past its last row).
     Seed(usize, usize),
 }
 
@@ -68,6 +68,9 @@ pub struct Packed {
     pub values: Method,
     /// The lane operations, operands before their readers.
     pub ops: Vec<Lane>,
+    /// Lanes per operation: four (`Lanes`), or eight for a reverse-mode program (`Lanes::Wide`
+    /// in the run-time crate), which has no [`Lane::Const`].
+    pub width: usize,
     /// Per derivative (output-major, then direction): the operation and lane holding it, or
     /// `None` where it is structurally zero.
     pub derivatives: Vec<Option<(usize, usize)>>,
@@ -99,12 +102,13 @@ impl Packed {
         w: &dyn Fn(usize, usize) -> f64,
     ) -> Vec<f64> {
         let scalars = self.values.eval(input);
-        let mut lanes: Vec<[f64; 4]> = Vec::with_capacity(self.ops.len());
+        let width = self.width;
+        let mut lanes: Vec<Vec<f64>> = Vec::with_capacity(self.ops.len());
         for op in &self.ops {
-            let lane = |f: &dyn Fn(usize) -> f64| -> [f64; 4] { core::array::from_fn(f) };
+            let lane = |f: &dyn Fn(usize) -> f64| -> Vec<f64> { (0..width).map(f).collect() };
             let v = match *op {
-                Lane::Const(c) => c.map(f64::from),
-                Lane::Seed(k, g) => lane(&|l| -w(4 * g + l, k)),
+                Lane::Const(c) => lane(&|l| f64::from(c[l])),
+                Lane::Seed(k, g) => lane(&|l| -w(width * g + l, k)),
                 Lane::Add(a, b) => lane(&|l| lanes[a][l] + lanes[b][l]),
                 Lane::Sub(a, b) => lane(&|l| lanes[a][l] - lanes[b][l]),
                 Lane::Neg(a) => lane(&|l| -lanes[a][l]),
@@ -391,6 +395,7 @@ pub fn pack(p: &Program, outputs: &[Id], directions: &[Input]) -> Option<Packed>
     Some(Packed {
         values,
         ops,
+        width: 4,
         derivatives,
     })
 }

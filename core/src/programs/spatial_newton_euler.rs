@@ -371,15 +371,15 @@ pub(crate) fn newton_euler(
 const MAX_DERIVATIVE_OPS: usize = 10_000;
 
 /// `(-W dtau/dq, -W dtau/dqd)`, row-major each, for the run-time `W = M^-1`: the unrolled
-/// recursion run backward from the torques weighted by the rows of `-W`, four rows at a time
-/// ([`adjoint`](crate::programs::adjoint::adjoint)); the forward dynamics' derivatives at
+/// recursion run backward from the torques weighted by the rows of `-W`, eight rows at a time
+/// ([`adjoint`](crate::adjoint::adjoint)); the forward dynamics' derivatives at
 /// the accelerations. `None` where the program has what that does not differentiate.
 pub(crate) fn forward_dynamics_adjoint(arm: &SpatialArmSpec) -> Option<Packed> {
     let n = arm.joints.len();
     let mut p = Program::new();
     let torques = newton_euler(&mut p, arm, Terms::ALL, true);
     let wrt: Vec<Input> = (0..n).map(Input::Q).chain((0..n).map(Input::Qd)).collect();
-    let mut pk = crate::programs::adjoint::adjoint(&p, &torques, n, &wrt)?;
+    let mut pk = crate::programs::adjoint::adjoint(&p, &torques, n, &wrt, 8)?;
     // Row by row over (q, qd) to d/dq row by row, then d/dqd.
     let by_row = std::mem::take(&mut pk.derivatives);
     for offset in [0, n] {
