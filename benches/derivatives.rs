@@ -43,7 +43,7 @@ type Derivatives<const N: usize> = (SMatrix<f64, N, N>, SMatrix<f64, N, N>);
 
 /// The forward dynamics' derivatives from the inverse dynamics' ones at `qdd = FD(q, qd, tau)`:
 /// `-M^-1 dtau/dq`, `-M^-1 dtau/dqd` and `M^-1`, as the trait's default computes them (M and h
-/// once, one fixed-size Cholesky factor for `qdd` and `M^-1`; `None` if that fails).
+/// once, one fixed-size `L D L^T` factor for `qdd` and `M^-1`; `None` if that fails).
 #[allow(clippy::type_complexity)]
 fn through_inverse<A: PlanarArm<N>, const N: usize>(
     arm: &A,
@@ -53,7 +53,7 @@ fn through_inverse<A: PlanarArm<N>, const N: usize>(
     inverse: impl Fn(&A, &SVector<f64, N>, &SVector<f64, N>, &SVector<f64, N>) -> Derivatives<N>,
 ) -> Option<(SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>)> {
     let (m, h) = arm.mass_matrix_and_bias(black_box(q), black_box(qd));
-    let factor = planar_arm::__private::Cholesky::new(&m)?;
+    let factor = planar_arm::__private::Factor::new(&m)?;
     let qdd = factor.solve(&(black_box(tau) - h));
     let (dq, dqd) = inverse(arm, q, qd, &qdd);
     Some(factor.inverse_products(&dq, &dqd))

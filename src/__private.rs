@@ -22,7 +22,7 @@ pub use crate::ldlt::{forward_solve, Floor};
 /// The trait's default for the forward dynamics' derivatives, named here for the benches and
 /// for the spatial derive's AVX2 override of it.
 pub use crate::mass_inverse::{
-    forward_derivatives, forward_derivatives_in, minus_product, negated_rows, Cholesky,
+    forward_derivatives, forward_derivatives_in, minus_product, negated_rows, Factor,
 };
 /// Eight lanes, which a reverse-mode body computes in (see `src/wide.rs`).
 pub use crate::wide::{Pair, Wide};

@@ -1,4 +1,4 @@
-//! A fixed-size Cholesky factorisation of M, and from it `qdd = M^-1 (tau - h)`, `M^-1`,
+//! A fixed-size `L D L^T` factorisation of M, and from it `qdd = M^-1 (tau - h)`, `M^-1`,
 //! `-M^-1 A` and `-M^-1 B`: the linear algebra that turns the inverse dynamics' derivatives
 //! into the forward dynamics' ones (`dqdd/dq = -M^-1 dtau/dq`, `dqdd/dqd = -M^-1 dtau/dqd`,
 //! `dqdd/dtau = M^-1`, at the `qdd` that the same factor solves for).
@@ -7,26 +7,27 @@
 //! nalgebra's `cholesky().inverse()` followed by two products took 2.4-3.0x the time of the
 //! emitted straight-line derivatives at two to six links; this, after one `mass_matrix_and_bias`
 //! and with one factor for `qdd` and `M^-1`, 1.0-1.6x at two to four links
-//! (`benches/derivatives.rs`).
-
-#[cfg(not(feature = "std"))]
-use num_traits::Float as _;
+//! (`benches/derivatives.rs`). Each column of the factorisation waits for the one before, and
+//! `L D L^T` puts one division on that path where Cholesky's `L L^T` puts a square root and a
+//! division: the Panda's factor, solve and inverse took 82-99 ns against 148-179, and its
+//! forward derivatives 947.6 ns against 983.7 (docs/performance.md, "Eighth session").
 
 use nalgebra::{ArrayStorage, SMatrix, SVector};
 
-/// The Cholesky factor `M = L L^T` of a symmetric positive definite matrix of the arm's size,
-/// kept to solve for the accelerations and then to invert M with the same factor.
+/// The factors `M = L D L^T` (`L` unit lower triangular, `D` diagonal) of a symmetric positive
+/// definite matrix of the arm's size, kept to solve for the accelerations and then to invert M
+/// with the same factor.
 #[derive(Clone, Copy, Debug)]
-pub struct Cholesky<const N: usize> {
-    /// `l[i][j]` = L(i, j) for `i >= j`, rows contiguous so that the dot products of the
-    /// factorisation read memory in order.
+pub struct Factor<const N: usize> {
+    /// `l[i][j]` = L(i, j) for `i > j` (the unit diagonal is not read), rows contiguous so that
+    /// the dot products of the factorisation read memory in order.
     l: [[f64; N]; N],
-    /// `r[j]` = 1 / L(j, j).
+    /// `r[j]` = 1 / D(j, j).
     r: [f64; N],
 }
 
-impl<const N: usize> Cholesky<N> {
-    /// The factor of `m` (its lower half is read), or `None` when `m` is not numerically
+impl<const N: usize> Factor<N> {
+    /// The factors of `m` (its lower half is read), or `None` when `m` is not numerically
     /// positive definite (a pivot that is not positive, NaN included).
     #[allow(clippy::needless_range_loop)]
     #[inline(always)] // into the AVX2 copy of `forward_dynamics_derivatives` (src/dispatch.rs)
@@ -35,31 +36,33 @@ impl<const N: usize> Cholesky<N> {
         // nalgebra stores columns: `m[j][i]` is M(i, j).
         let m = &m.data.0;
         let mut l = [[0.0f64; N]; N];
+        // e[i][k] = L(i, k) D(k, k): the products the later columns subtract.
+        let mut e = [[0.0f64; N]; N];
         let mut r = [0.0f64; N];
         for j in 0..N {
             let mut d = m[j][j];
             for k in 0..j {
-                d -= l[j][k] * l[j][k];
+                d -= l[j][k] * e[j][k];
             }
             // NaN is not greater either.
             if d.partial_cmp(&0.0) != Some(core::cmp::Ordering::Greater) {
                 return None;
             }
-            let inv = 1.0 / d.sqrt();
+            let inv = 1.0 / d;
             r[j] = inv;
-            l[j][j] = d * inv;
             for i in j + 1..N {
                 let mut s = m[j][i];
                 for k in 0..j {
-                    s -= l[i][k] * l[j][k];
+                    s -= l[i][k] * e[j][k];
                 }
+                e[i][j] = s;
                 l[i][j] = s * inv;
             }
         }
         Some(Self { l, r })
     }
 
-    /// `M^-1 b`, by forward then backward substitution.
+    /// `M^-1 b`: `L y = b` forward, `D^-1`, then `L^T x = y` backward.
     #[allow(clippy::needless_range_loop)]
     #[inline(always)]
     #[must_use]
@@ -71,34 +74,37 @@ impl<const N: usize> Cholesky<N> {
             for k in 0..i {
                 s -= l[i][k] * y[k];
             }
-            y[i] = s * r[i];
+            y[i] = s;
+        }
+        for i in 0..N {
+            y[i] *= r[i];
         }
         for i in (0..N).rev() {
             let mut s = y[i];
             for k in i + 1..N {
                 s -= l[k][i] * y[k];
             }
-            y[i] = s * r[i];
+            y[i] = s;
         }
         SVector::from_data(ArrayStorage([y]))
     }
 
-    /// `M^-1`, from `W = L^-1`: `M^-1 = W^T W`, symmetric to the bit.
+    /// `M^-1 = W^T D^-1 W` with `W = L^-1`, symmetric to the bit.
     #[allow(clippy::needless_range_loop)]
     #[inline(always)]
     #[must_use]
     pub fn inverse(&self) -> SMatrix<f64, N, N> {
         let (l, r) = (&self.l, &self.r);
-        // W = L^-1, lower triangular, by forward substitution column by column.
+        // W = L^-1, unit lower triangular, by forward substitution column by column.
         let mut w = [[0.0f64; N]; N];
         for j in 0..N {
-            w[j][j] = r[j];
+            w[j][j] = 1.0;
             for i in j + 1..N {
                 let mut s = 0.0;
                 for k in j..i {
                     s -= l[i][k] * w[k][j];
                 }
-                w[i][j] = s * r[i];
+                w[i][j] = s;
             }
         }
         // Stored by columns like nalgebra.
@@ -107,7 +113,7 @@ impl<const N: usize> Cholesky<N> {
             for i in j..N {
                 let mut s = 0.0;
                 for k in i..N {
-                    s += w[k][i] * w[k][j];
+                    s += w[k][i] * r[k] * w[k][j];
                 }
                 inv[j][i] = s;
                 inv[i][j] = s;
@@ -144,7 +150,7 @@ pub fn forward_derivatives<A: crate::Dynamics<N> + ?Sized, const N: usize>(
     qd: &SVector<f64, N>,
     tau: &SVector<f64, N>,
 ) -> (SMatrix<f64, N, N>, SMatrix<f64, N, N>, SMatrix<f64, N, N>) {
-    let Some(factor) = Cholesky::new(&m) else {
+    let Some(factor) = Factor::new(&m) else {
         let nan = SMatrix::from_element(f64::NAN);
         return (nan, nan, nan);
     };
@@ -172,7 +178,7 @@ where
     A: crate::Dynamics<N> + ?Sized,
     L: crate::__private::Lanes,
 {
-    let Some(factor) = Cholesky::new(&m) else {
+    let Some(factor) = Factor::new(&m) else {
         let nan = SMatrix::from_element(f64::NAN);
         return (nan, nan, nan);
     };
@@ -221,7 +227,7 @@ pub fn minus_product<const N: usize>(
 
 #[cfg(test)]
 mod tests {
-    use super::Cholesky;
+    use super::Factor;
     use nalgebra::{SMatrix, SVector};
 
     /// A symmetric positive definite matrix with a spread of eigenvalues, and two others.
@@ -238,7 +244,7 @@ mod tests {
 
     fn against_nalgebra<const N: usize>() {
         let (m, a, b) = inputs::<N>();
-        let factor = Cholesky::new(&m).expect("positive definite");
+        let factor = Factor::new(&m).expect("positive definite");
         let (x, y, inv) = factor.inverse_products(&a, &b);
         let reference = m.cholesky().expect("positive definite").inverse();
         let scale = reference.amax();
@@ -280,11 +286,11 @@ mod tests {
     #[test]
     fn singular_indefinite_and_nan_give_none() {
         let singular = SMatrix::<f64, 3, 3>::from_element(1.0);
-        assert!(Cholesky::new(&singular).is_none());
+        assert!(Factor::new(&singular).is_none());
         let indefinite = SMatrix::<f64, 2, 2>::new(1.0, 2.0, 2.0, 1.0);
-        assert!(Cholesky::new(&indefinite).is_none());
+        assert!(Factor::new(&indefinite).is_none());
         let mut nan = SMatrix::<f64, 3, 3>::identity();
         nan[(1, 1)] = f64::NAN;
-        assert!(Cholesky::new(&nan).is_none());
+        assert!(Factor::new(&nan).is_none());
     }
 }
