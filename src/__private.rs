@@ -10,7 +10,8 @@ use nalgebra::{Isometry2, SMatrix, SVector, Translation2, UnitComplex};
 
 use crate::Real;
 
-/// The largest methods' bodies, run in an AVX2 and FMA copy where the processor has them.
+/// The largest methods' bodies, run in an AVX2 and FMA copy where the processor has them (the
+/// forward derivatives of a spatial arm also in an AVX-512 one: `dispatch_wide`).
 pub use crate::dispatch::{
     dispatch, dispatch_wide, BaseRegressor, ForwardDynamicsDerivatives, InverseDynamicsDerivatives,
     Kernel,
@@ -19,13 +20,14 @@ pub use crate::dispatch::{
 pub use crate::lanes::{Lanes, Portable};
 /// The forward dynamics' solve after `mass_matrix_and_bias` (three or more joints).
 pub use crate::ldlt::{forward_solve, Floor};
-/// The trait's default for the forward dynamics' derivatives, named here for the benches and
-/// for the spatial derive's AVX2 override of it.
+/// The trait's default for the forward dynamics' derivatives, named here for the benches, and
+/// what the spatial derive's override of its packed body calls: the factor of M, then the
+/// reverse-mode program (`forward_derivatives_in`), whose seeds `negated_rows` reads.
 pub use crate::mass_inverse::{
     forward_derivatives, forward_derivatives_in, minus_product, negated_rows, Factor,
 };
 /// Eight lanes, which a reverse-mode body computes in (see `src/wide.rs`).
-pub use crate::wide::{Pair, Wide};
+pub use crate::wide::Wide;
 
 #[inline(always)]
 #[must_use]

@@ -1,5 +1,6 @@
 //! The derivatives of the dynamics and a spatial arm's base regressor run in a copy compiled for
-//! AVX2 and FMA where the processor has them.
+//! AVX2 and FMA where the processor has them (and a spatial arm's forward derivatives in a third,
+//! for AVX-512, where it has that: [`dispatch_wide`]).
 //!
 //! `inverse_dynamics_derivatives` is thousands of straight-line operations, too long for the
 //! baseline x86-64 instruction set's two-operand SSE2 forms: the PUMA 560's compiled to 7,900
@@ -31,7 +32,8 @@
 //! and no question asked.
 //!
 //! A spatial arm's `forward_dynamics_derivatives` runs through [`dispatch_wide`], which has a
-//! third copy, compiled for AVX-512F, chosen where the processor has it: its reverse-mode
+//! third copy, compiled for AVX-512F, chosen where the processor has it (in a build that does
+//! not already target AVX2 and FMA; one that does runs the AVX2 lanes, as [`dispatch`]): its reverse-mode
 //! program computes the seven rows of a seven-joint arm in one 512-bit register (src/wide.rs),
 //! half the instructions of two AVX2 groups. Only that method has the third copy, so the
 //! others cost a user's build no more.
@@ -105,7 +107,7 @@ pub fn dispatch_wide<K: Kernel>(k: K) -> K::Output {
     dispatch(k)
 }
 
-/// The two copies of a kernel, and the choice between them.
+/// The copies of a kernel (two, or three for [`dispatch_wide`]), and the choice between them.
 #[cfg(all(
     target_arch = "x86_64",
     feature = "std",
@@ -145,7 +147,10 @@ mod copies {
     #[inline(always)]
     pub(super) fn run_wide<K: Kernel>(k: K) -> K::Output {
         let copy: unsafe fn(K, &mut MaybeUninit<K::Output>) =
-            if std::is_x86_feature_detected!("avx512f") {
+            if std::is_x86_feature_detected!("avx512f")
+                && std::is_x86_feature_detected!("avx2")
+                && std::is_x86_feature_detected!("fma")
+            {
                 avx512::<K>
             } else if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")
             {
@@ -155,7 +160,7 @@ mod copies {
             };
         let mut out = MaybeUninit::uninit();
         // SAFETY: each copy is chosen only where the processor has just said that it supports
-        // what the copy was compiled for (AVX-512F implies AVX2 and FMA).
+        // what the copy was compiled for.
         unsafe { copy(k, &mut out) };
         // SAFETY: every copy writes `out` when it returns.
         unsafe { out.assume_init() }
@@ -165,7 +170,7 @@ mod copies {
     ///
     /// # Safety
     ///
-    /// The processor must support AVX-512F.
+    /// The processor must support AVX-512F, AVX2 and FMA.
     #[target_feature(enable = "avx512f,avx2,fma")]
     unsafe fn avx512<K: Kernel>(k: K, out: &mut MaybeUninit<K::Output>) {
         // SAFETY: the caller has asked the processor.
@@ -231,8 +236,8 @@ kernels! {
     InverseDynamicsDerivatives<N>: crate::Dynamics<N>
         => __inverse_dynamics_derivatives_kernel, __inverse_dynamics_derivatives_packed(q, qd, qdd)
         -> (nalgebra::SMatrix<f64, N, N>, nalgebra::SMatrix<f64, N, N>);
-    /// `forward_dynamics_derivatives` (which has no packed program: its default calls the
-    /// dispatched inverse derivatives).
+    /// `forward_dynamics_derivatives`: its default calls the dispatched inverse derivatives; a
+    /// spatial arm's packed body runs its reverse-mode program (src/wide.rs).
     ForwardDynamicsDerivatives<N>: crate::Dynamics<N>
         => __forward_dynamics_derivatives_kernel, __forward_dynamics_derivatives_packed(q, qd, tau)
         -> (

@@ -3,8 +3,8 @@
 //! A packed derivative program (the engine's `programs::packed`) holds the tangents of each
 //! value along four directions in one [`Lanes::V`]. Its body is generic over the lanes, and
 //! [`dispatch`](crate::dispatch::dispatch) picks them: [`Avx2`], one 256-bit register per value,
-//! in the copy compiled for AVX2 and FMA, and [`Portable`], an array of four, everywhere else.
-//! The two apply the same IEEE operation to each lane, fused multiply-adds rounded once in
+//! in the copy compiled for AVX2 and FMA, and [`Portable`], an array of four, everywhere else
+//! (and `dispatch_wide` `wide::Avx512`, which computes four lanes as `Avx2` does). They apply the same IEEE operation to each lane, fused multiply-adds rounded once in
 //! both, so their results agree to the bit (`tests/dispatch.rs`).
 
 #[cfg(not(feature = "std"))]

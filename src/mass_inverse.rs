@@ -44,11 +44,11 @@ impl<const N: usize> Factor<N> {
             for k in 0..j {
                 d -= l[j][k] * e[j][k];
             }
-            // NaN is not greater either.
-            if d.partial_cmp(&0.0) != Some(core::cmp::Ordering::Greater) {
+            // NaN is not greater either; a subnormal pivot has no finite reciprocal.
+            let inv = 1.0 / d;
+            if d.partial_cmp(&0.0) != Some(core::cmp::Ordering::Greater) || !inv.is_finite() {
                 return None;
             }
-            let inv = 1.0 / d;
             r[j] = inv;
             for i in j + 1..N {
                 let mut s = m[j][i];
@@ -189,8 +189,8 @@ where
 }
 
 /// Lanes `-m(r + l, k)` for `l` in `0..W`, zero past the last row: the seeds of a reverse-mode
-/// lane group (`programs::adjoint`), column `k` of `M^-1` (symmetric, so its row too) read
-/// where it is stored.
+/// lane group (`programs::adjoint`): `m(r + l, k)` is row `r + l` of `M^-1`'s column `k`, the
+/// weight of output `k` in row `r + l`, read where nalgebra stores it.
 #[inline(always)]
 #[must_use]
 pub fn negated_rows<const N: usize, const W: usize>(

@@ -8,8 +8,11 @@
 //! In a `dev` build the dispatched method runs the one-direction body, so the bit-for-bit
 //! comparison means something only in an optimised build on a processor with AVX2 and FMA,
 //! where the public method runs the copy compiled for them, with the packed body in AVX2
-//! registers and its multiply-adds fused, and the test calls the packed body in portable lanes,
-//! whose `mul_add` rounds once too: CI runs this file with `--release`.
+//! registers and its multiply-adds fused (a spatial arm's forward derivatives: its reverse-mode
+//! program, in the AVX-512 copy where the processor has AVX-512), and the test calls the packed
+//! body in portable lanes, whose `mul_add` rounds once too: CI runs this file with `--release`.
+//! The products by `-M^-1` of the reverse-mode program (spatial arms) and of the trait's default
+//! (planar arms) are checked against the kernel's in value.
 
 mod common;
 
@@ -35,8 +38,8 @@ struct Three {
     c: Revolute,
 }
 
-/// Seven joints (two groups of four lanes in the packed base regressor and in the forward
-/// derivatives' reverse-mode program), the Panda's modified DH frames with the fourth joint a
+/// Seven joints (two groups of four lanes in the packed base regressor, one group of eight in
+/// the forward derivatives' reverse-mode program), the Panda's modified DH frames with the fourth joint a
 /// slide, full inertia tensors, armature, damping and friction on some joints and a payload:
 /// the generated packed programs on what the PUMA does not have.
 #[derive(SpatialArm, Default)]
@@ -138,6 +141,16 @@ fn check<A: Dynamics<N>, const N: usize>(arm: &A, rng: &mut Rng) {
         for (a, b) in [(&pfd.0, &kfd.0), (&pfd.1, &kfd.1), (&pfd.2, &kfd.2)] {
             close(a, b);
         }
+        // `-M^-1` times the inverse derivatives at the accelerations that gave `tau`.
+        let (aq, aqd) = arm.__forward_dynamics_derivatives_adjoint(
+            planar_arm::__private::Portable,
+            &q,
+            &qd,
+            &qdd,
+            &kfd.2,
+        );
+        close(&aq, &kfd.0);
+        close(&aqd, &kfd.1);
         // dqdd/dtau is M^-1.
         close(&(arm.mass_matrix(&q) * fd.2), &SMatrix::identity());
     }

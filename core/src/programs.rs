@@ -3,7 +3,7 @@
 //! unrolled into them for one arm (`unrolled`), the Coriolis matrix is summed in absolute
 //! angles ([`christoffel`]), and programs are differentiated ([`derivative`]) and split at
 //! their parameter-only part ([`frozen`]), forward four directions at a time ([`packed`]) or
-//! backward four weighted rows at a time ([`adjoint`]).
+//! backward several weighted rows at a time ([`adjoint`]).
 
 pub mod adjoint;
 pub mod christoffel;

@@ -173,15 +173,20 @@ pub trait Dynamics<const N: usize> {
     /// `dqdd/dqd = -M^-1 dtau/dqd` (from [`inverse_dynamics_derivatives`](Self::inverse_dynamics_derivatives)
     /// at `qdd`) and `dqdd/dtau = M^-1`. Coulomb friction as there.
     ///
-    /// For arms of up to five links the derive emits this as one straight-line program that
-    /// shares the trigonometry, M and its factorisation (guarded by the pivot floors of
+    /// For planar arms of up to five links the derive emits this as one straight-line program
+    /// that shares the trigonometry, M and its factorisation (guarded by the pivot floors of
     /// `forward_dynamics`, so finite wherever `forward_dynamics` is); its operation count is in
-    /// the method's docs. For larger arms this default computes it from
-    /// [`mass_matrix_and_bias`](Self::mass_matrix_and_bias), one fixed-size Cholesky
+    /// the method's docs. Otherwise this default computes it from
+    /// [`mass_matrix_and_bias`](Self::mass_matrix_and_bias), one fixed-size `L D L^T`
     /// factorisation of M that gives both `qdd` and `M^-1`, and the inverse dynamics'
-    /// derivatives at that `qdd` (no allocation, and none of the emitted program's compile
-    /// time; docs/performance.md measures both), NaN everywhere if the factorisation fails
-    /// (only with NaN or infinite input). NaN input gives NaN output either way, never a panic.
+    /// derivatives at that `qdd` multiplied by `-M^-1` (no allocation, and none of the emitted
+    /// program's compile time; docs/performance.md measures both), NaN everywhere if the
+    /// factorisation fails (only with NaN or infinite input). A spatial arm's derive replaces
+    /// the derivatives and the products, in optimised x86-64 builds, by one program that runs
+    /// the inverse dynamics backward from the torques weighted by the rows of `-M^-1`, eight
+    /// rows to an AVX-512 register where the processor has AVX-512 (or two AVX2 registers
+    /// where it has AVX2 and FMA): the same to rounding (`tests/dispatch.rs`). NaN input gives
+    /// NaN output either way, never a panic.
     fn forward_dynamics_derivatives(
         &self,
         q: &SVector<f64, N>,
@@ -226,10 +231,13 @@ pub trait Dynamics<const N: usize> {
     }
 
     /// `(-M^-1 dtau/dq, -M^-1 dtau/dqd)` at `(q, qd, qdd)` given `minv = M^-1`, in `lanes`:
-    /// the inverse dynamics' packed derivatives multiplied by `-M^-1`, or the program a spatial
-    /// arm's derive emits, which runs the inverse dynamics backward from the torques weighted
-    /// by the rows of `-M^-1` and gives the products directly (`programs::adjoint` in the
-    /// engine; docs/performance.md, "Eighth session").
+    /// the program a spatial arm's derive emits, which runs the inverse dynamics backward from
+    /// the torques weighted by the rows of `-M^-1` and gives the products directly
+    /// (`programs::adjoint` in the engine; docs/performance.md, "Eighth session"), and which
+    /// the derive's forward derivatives call. Where an arm has no such program, this default
+    /// gives the same from the inverse derivatives (`tests/dispatch.rs` checks both); the
+    /// crate's own forward derivatives then take the default route, which dispatches the
+    /// inverse derivatives on their own.
     #[doc(hidden)]
     #[inline(always)]
     fn __forward_dynamics_derivatives_adjoint<L: crate::__private::Lanes>(

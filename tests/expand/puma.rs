@@ -3895,8 +3895,8 @@ Cost: 1456 multiplications, 1164 additions, 0 divisions, 5 sin_cos pairs; where 
             [::planar_arm::__private::Floor::Relative; 6],
         )
     }
-    /// The forward dynamics' derivatives in the dispatch's AVX2 copy: the default's
-    /// computation, with M and h compiled into that copy.
+    /// The forward dynamics' derivatives in the dispatch's AVX2 and AVX-512 copies: the
+    /// default's computation, with M and h compiled into each copy.
     #[doc(hidden)]
     #[inline(always)]
     fn __forward_dynamics_derivatives_packed<__L: ::planar_arm::__private::Lanes>(

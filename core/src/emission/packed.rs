@@ -1,8 +1,9 @@
 //! A packed derivative program ([`crate::packed`]) as statements: its values as
 //! [`render`] writes any program, then one `let` per lane operation through the method's
 //! `__lanes: __L` (`::planar_arm::__private::Lanes`: four `f64` in an AVX2 register in the
-//! AVX2 copy of the method, an array of four elsewhere), then each derivative read from its
-//! lane.
+//! AVX2 copy of the method, an array of four elsewhere), or for a program of eight lanes through
+//! `__wide`, the lanes' `Wide` (one AVX-512 register in that copy, two of four elsewhere), then
+//! each derivative read from its lane.
 
 use proc_macro2::{Ident, Literal, TokenStream, TokenTree};
 use quote::quote;

@@ -223,7 +223,7 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
                 quote!((#m, #h))
             }),
         )
-        // The forward dynamics' derivatives compile it into their AVX2 copy.
+        // The forward dynamics' derivatives compile it into their AVX2 and AVX-512 copies.
         .with_inlined_body(),
     );
     let mut adjoint = None;
@@ -302,7 +302,7 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
 /// `forward_dynamics` and `kinetic_energy`, written as calls of the generated
 /// `mass_matrix_and_bias` and `mass_matrix` and of the run-time crate: planar arms' `L D L^T`
 /// solve (each pivot floored at 2^-52 `M_ii`) and quadratic form; and the forward dynamics'
-/// derivatives in the dispatch's AVX2 copy, the trait's default computed from the inlined body
+/// derivatives in the dispatch's AVX2 and AVX-512 copies, the trait's default computed from the inlined body
 /// of `mass_matrix_and_bias`, with the products by `-M^-1` from the reverse-mode program where
 /// the arm has one (`adjoint`).
 fn solved(n: usize, adjoint: bool) -> [TokenStream; 4] {
@@ -353,8 +353,8 @@ fn solved(n: usize, adjoint: bool) -> [TokenStream; 4] {
             }
         },
         quote! {
-            /// The forward dynamics' derivatives in the dispatch's AVX2 copy: the default's
-            /// computation, with M and h compiled into that copy.
+            /// The forward dynamics' derivatives in the dispatch's AVX2 and AVX-512 copies: the
+            /// default's computation, with M and h compiled into each copy.
             #[doc(hidden)]
             #[inline(always)]
             fn __forward_dynamics_derivatives_packed<__L: ::planar_arm::__private::Lanes>(

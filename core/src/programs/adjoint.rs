@@ -1,4 +1,4 @@
-//! Reverse-mode derivatives, four weighted rows at a time: `-W J` for `J = d outputs / d x`
+//! Reverse-mode derivatives, several weighted rows at a time: `-W J` for `J = d outputs / d x`
 //! and a matrix `W` known only at run time, one lane per row of `W`.
 //!
 //! The forward dynamics' derivatives are `-M^-1 dtau/dx` at the accelerations `M^-1` gives.
@@ -6,10 +6,11 @@
 //! rates (four lane groups for seven joints) and then multiplies by `M^-1` (`2 n^3` more
 //! products, and the derivatives moved out of their lanes into the matrices). Run backward from
 //! the torques weighted by the rows of `-M^-1`, the chain rule gives each row of the product
-//! directly: one lane group per four rows (two for seven joints), the adjoint of a product
-//! `a b` being `a' b` and `a b'` as in forward mode. For the Panda's Newton-Euler program the
-//! reverse program is 1,508 four-lane operations against the forward program's 2,188 and the
-//! product after it (docs/performance.md, "Eighth session").
+//! directly, the adjoint of a product `a b` being `a' b` and `a b'` as in forward mode. For the
+//! Panda's Newton-Euler program that is 1,508 four-lane operations in two groups against the
+//! forward program's 2,188 and the product after it, and with eight lanes per group (one
+//! AVX-512 register, `Lanes::Wide` in the run-time crate) one group of 754 (docs/performance.md,
+//! "Eighth session").
 
 use std::collections::BTreeMap;
 
@@ -209,9 +210,10 @@ mod tests {
     use crate::trig::Angle;
 
     /// Sums, differences, negations and products of angles, rates and held inputs, with trig
-    /// atoms of one joint and of a sum of angles with a coefficient of two, and two outputs
-    /// that share values: five weighted rows (two lane groups, the second part empty) of the
-    /// adjoint equal `-W` times `differentiate`'s derivatives, one direction at a time.
+    /// atoms of one joint, of a sum of angles with a coefficient of two and of a difference,
+    /// outputs that share values and one listed twice: five weighted rows (in groups of four
+    /// and of eight) of the adjoint equal `-W` times `differentiate`'s derivatives, one
+    /// direction at a time.
     #[test]
     fn weighted_rows_equal_the_product_with_forward_derivatives() {
         let mut p = Program::new();
@@ -232,7 +234,11 @@ mod tests {
         let h = p.neg(g);
         let k = p.add(h, sq);
         let m = p.mul(held, q[0]);
-        let outputs = [k, d, m, ab, f];
+        // A negative coefficient (q1 - q2), and an output listed twice.
+        let (c1m2, s1m2) = p.trig_pair(&Angle::new(vec![1, -1]));
+        let u = p.mul(s1m2, qd[2]);
+        let v = p.sub(u, c1m2);
+        let outputs = [k, d, m, ab, f, v, d];
         let wrt: Vec<Input> = (0..3).map(Input::Q).chain((0..3).map(Input::Qd)).collect();
         let rows = 5;
         #[allow(clippy::cast_precision_loss)]

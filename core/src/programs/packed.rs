@@ -41,7 +41,8 @@ pub enum Lane {
     MulSub(usize, usize, usize),
     /// The seed of a reverse-mode program ([`adjoint`](crate::adjoint)) for its
     /// output `k` and lane group `g`: lane `l` is `-W(width g + l, k)`, `W` a matrix read at
-    /// run time (zero past its last row).
+    /// run time (emitted as zero past its last row; a lane past the rows is read by no
+    /// derivative).
     Seed(usize, usize),
 }
 
@@ -68,8 +69,9 @@ pub struct Packed {
     pub values: Method,
     /// The lane operations, operands before their readers.
     pub ops: Vec<Lane>,
-    /// Lanes per operation: four (`Lanes`), or eight for a reverse-mode program (`Lanes::Wide`
-    /// in the run-time crate), which has no [`Lane::Const`].
+    /// Lanes per operation: four (`Lanes` in the run-time crate), or for a reverse-mode program
+    /// the width it was built with (the emitted ones eight, `Lanes::Wide`), which has no
+    /// [`Lane::Const`].
     pub width: usize,
     /// Per derivative (output-major, then direction): the operation and lane holding it, or
     /// `None` where it is structurally zero.
