@@ -121,6 +121,9 @@ mod copies {
     use super::Kernel;
     use crate::lanes::{Avx2, Portable};
 
+    /// A copy of a kernel: it writes the kernel's result into `out`.
+    type Copy<K> = unsafe fn(K, &mut MaybeUninit<<K as Kernel>::Output>);
+
     /// The copy is chosen as a function pointer and writes its result through a pointer, so
     /// that one call writes it where the caller wants it. A value returned from either of two
     /// calls was copied once more after them (the Panda's base regressor, 2.4 KB), and the
@@ -128,41 +131,48 @@ mod copies {
     /// (docs/performance.md).
     #[inline(always)]
     pub(super) fn run<K: Kernel>(k: K) -> K::Output {
-        let copy: unsafe fn(K, &mut MaybeUninit<K::Output>) =
-            if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
-                avx2::<K>
-            } else {
-                baseline::<K>
-            };
-        let mut out = MaybeUninit::uninit();
-        // SAFETY: `avx2` is chosen only where the processor has just said that it supports
-        // AVX2 and FMA; `baseline` has no requirement.
-        unsafe { copy(k, &mut out) };
-        // SAFETY: both copies write `out` when they return; a panic in the body unwinds past
-        // this line.
-        unsafe { out.assume_init() }
+        // SAFETY: `two` asks the processor.
+        unsafe { call(k, two::<K>()) }
     }
 
     /// [`run`] with a third copy, [`avx512`], where the processor has AVX-512F.
     #[inline(always)]
     pub(super) fn run_wide<K: Kernel>(k: K) -> K::Output {
-        let copy: unsafe fn(K, &mut MaybeUninit<K::Output>) =
-            if std::is_x86_feature_detected!("avx512f")
-                && std::is_x86_feature_detected!("avx2")
-                && std::is_x86_feature_detected!("fma")
-            {
-                avx512::<K>
-            } else if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")
-            {
-                avx2::<K>
-            } else {
-                baseline::<K>
-            };
+        let copy: Copy<K> = if std::is_x86_feature_detected!("avx512f")
+            && std::is_x86_feature_detected!("avx2")
+            && std::is_x86_feature_detected!("fma")
+        {
+            avx512::<K>
+        } else {
+            two::<K>()
+        };
+        // SAFETY: `avx512` is chosen only where the processor has just said that it supports
+        // AVX-512F, AVX2 and FMA; `two` asks the processor.
+        unsafe { call(k, copy) }
+    }
+
+    /// [`avx2`] where the processor has AVX2 and FMA, else [`baseline`].
+    #[inline(always)]
+    fn two<K: Kernel>() -> Copy<K> {
+        if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
+            avx2::<K>
+        } else {
+            baseline::<K>
+        }
+    }
+
+    /// `copy(k)`'s result.
+    ///
+    /// # Safety
+    ///
+    /// The processor must support what `copy` was compiled for.
+    #[inline(always)]
+    unsafe fn call<K: Kernel>(k: K, copy: Copy<K>) -> K::Output {
         let mut out = MaybeUninit::uninit();
-        // SAFETY: each copy is chosen only where the processor has just said that it supports
-        // what the copy was compiled for.
+        // SAFETY: the caller's.
         unsafe { copy(k, &mut out) };
-        // SAFETY: every copy writes `out` when it returns.
+        // SAFETY: every copy writes `out` when it returns; a panic in the body unwinds past
+        // this line.
         unsafe { out.assume_init() }
     }
 
