@@ -4674,6 +4674,9 @@ Cost: 1456 multiplications, 1164 additions, 0 divisions, 5 sin_cos pairs; where 
             ]),
         )
     }
+    /**The partial derivatives of `forward_dynamics`, `(dqdd/dq, dqdd/dqd, dqdd/dtau)`, as Pinocchio's `computeABADerivatives`: `-M^-1 dtau/dq`, `-M^-1 dtau/dqd` at `qdd = forward_dynamics(q, qd, tau)`, and `M^-1`. NaN everywhere if M has no factor (only with NaN or infinite input).
+
+In optimised x86-64 builds, where the processor has AVX2 and FMA: `M` and `h` (357 multiplications, 321 additions, 0 divisions, 5 sin_cos pairs), one `L D L^T` factor of M for `qdd` and `M^-1`, then the inverse dynamics run backward from the torques weighted by the rows of `-M^-1`: 200 multiplications, 160 additions, 0 divisions, 5 sin_cos pairs on scalars and 407 eight-lane operations (235 of them fused multiply-adds), one AVX-512 register per eight rows where the processor has AVX-512F (in a build with the default target flags), two AVX2 registers elsewhere. Other builds multiply `inverse_dynamics_derivatives` at `qdd` by `-M^-1`.*/
     #[inline]
     fn forward_dynamics_derivatives(
         &self,

@@ -264,9 +264,9 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
     }
     body.extend(frozen::variants(n, &hot, split.as_ref())?);
     body.extend(solved(n, adjoint.is_some()));
-    if let Some(adjoint) = adjoint {
+    if let (Some(adjoint), Some(pk)) = (adjoint, &d.forward_dynamics_adjoint) {
         body.push(adjoint);
-        body.push(wide_dispatch(n));
+        body.push(wide_dispatch(n, &forward_derivatives_doc(&d, pk)));
     }
     body.push(exact(n, &d)?);
     let (names, names_doc) = (&header.joint_names, &header.joint_names_doc);
@@ -383,12 +383,13 @@ fn solved(n: usize, adjoint: bool) -> [TokenStream; 4] {
 
 /// `forward_dynamics_derivatives` through `__private::dispatch_wide`, whose third copy runs the
 /// reverse-mode program eight rows to an AVX-512 register where the processor has AVX-512F.
-fn wide_dispatch(n: usize) -> TokenStream {
+fn wide_dispatch(n: usize, doc: &str) -> TokenStream {
     let nn = Literal::usize_unsuffixed(n);
     let (q, qd, tau) = (local("q"), local("qd"), local("tau"));
     let v = quote!(::planar_arm::nalgebra::SVector<#F64, #nn>);
     let m = quote!(::planar_arm::nalgebra::SMatrix<#F64, #nn, #nn>);
     quote! {
+        #[doc = #doc]
         #[inline]
         fn forward_dynamics_derivatives(&self, #q: &#v, #qd: &#v, #tau: &#v) -> (#m, #m, #m) {
             ::planar_arm::__private::dispatch_wide(
@@ -401,6 +402,28 @@ fn wide_dispatch(n: usize) -> TokenStream {
             )
         }
     }
+}
+
+/// The docs of a spatial arm's `forward_dynamics_derivatives`: what it computes and the cost of
+/// the route its optimised x86-64 copies take.
+fn forward_derivatives_doc(d: &SpatialDerived, pk: &crate::packed::Packed) -> String {
+    format!(
+        "The partial derivatives of `forward_dynamics`, `(dqdd/dq, dqdd/dqd, dqdd/dtau)`, as \
+         Pinocchio's `computeABADerivatives`: `-M^-1 dtau/dq`, `-M^-1 dtau/dqd` at `qdd = \
+         forward_dynamics(q, qd, tau)`, and `M^-1`. NaN everywhere if M has no factor (only \
+         with NaN or infinite input).\n\n\
+         In optimised x86-64 builds, where the processor has AVX2 and FMA: `M` and `h` \
+         ({}), one `L D L^T` factor of M for `qdd` and `M^-1`, then the inverse dynamics run \
+         backward from the torques weighted by the rows of `-M^-1`: {} on scalars and {} \
+         eight-lane operations ({} of them fused multiply-adds), one AVX-512 register per \
+         eight rows where the processor has AVX-512F (in a build with the default target \
+         flags), two AVX2 registers elsewhere. Other builds multiply \
+         `inverse_dynamics_derivatives` at `qdd` by `-M^-1`.",
+        d.mass_matrix_and_bias.op_count(),
+        pk.values.op_count(),
+        pk.lane_op_count(),
+        pk.fused_count(),
+    )
 }
 
 /// `__private::isometry3` of twelve outputs: the rotation row-major, then the position.
