@@ -226,7 +226,8 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
         // The forward dynamics' derivatives compile it into their AVX2 and AVX-512 copies.
         .with_inlined_body(),
     );
-    let mut adjoint = None;
+    // The forward derivatives' reverse-mode body and the method that dispatches it.
+    let mut adjoint = Vec::new();
     if let Some(method) = &d.inverse_dynamics_derivatives {
         let f64mat = quote!(::planar_arm::nalgebra::SMatrix<#F64, #nn, #nn>);
         let derivatives = |method: crate::methods::Method| {
@@ -250,7 +251,8 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
         if let Some(pk) = &d.forward_dynamics_adjoint {
             let mut f = derivatives(pk.values.clone());
             f.name = "forward_dynamics_derivatives";
-            adjoint = Some(super::function::adjoint_body(n, &f, pk)?);
+            adjoint.push(super::function::adjoint_body(n, &f, pk)?);
+            adjoint.push(wide_dispatch(n, &forward_derivatives_doc(&d, pk)));
         }
         fns.push(derivatives(method.clone()).dispatched("InverseDynamicsDerivatives", quote!(#nn)));
     }
@@ -263,11 +265,8 @@ pub fn generate_spatial(arm: &SpatialArmSpec, header: &Header) -> Result<TokenSt
         body.push(frozen::plain(n, f, &hot, split.as_ref())?);
     }
     body.extend(frozen::variants(n, &hot, split.as_ref())?);
-    body.extend(solved(n, adjoint.is_some()));
-    if let (Some(adjoint), Some(pk)) = (adjoint, &d.forward_dynamics_adjoint) {
-        body.push(adjoint);
-        body.push(wide_dispatch(n, &forward_derivatives_doc(&d, pk)));
-    }
+    body.extend(solved(n, !adjoint.is_empty()));
+    body.extend(adjoint);
     body.push(exact(n, &d)?);
     let (names, names_doc) = (&header.joint_names, &header.joint_names_doc);
     body.push(quote! {

@@ -69,11 +69,9 @@ impl SpatialDerived {
         let dynamics = kinematics
             .as_ref()
             .and_then(|_| expand_dynamics(arm, budget));
-        let inverse_dynamics_derivatives = newton_euler::inverse_dynamics_derivatives(arm);
-        let forward_dynamics_adjoint = inverse_dynamics_derivatives
-            .as_ref()
-            .and_then(|_| newton_euler::forward_dynamics_adjoint(arm))
-            .map(Box::new);
+        let (inverse_dynamics_derivatives, adjoint) =
+            newton_euler::inverse_dynamics_derivatives(arm);
+        let forward_dynamics_adjoint = adjoint.map(Box::new);
         Self {
             kinematics,
             dynamics,

@@ -370,42 +370,30 @@ pub(crate) fn newton_euler(
 /// (docs/performance.md).
 const MAX_DERIVATIVE_OPS: usize = 10_000;
 
-/// `(-W dtau/dq, -W dtau/dqd)`, row-major each, for the run-time `W = M^-1`: the unrolled
-/// recursion run backward from the torques weighted by the rows of `-W`, eight rows at a time
-/// ([`adjoint`](crate::adjoint::adjoint)); the forward dynamics' derivatives at
-/// the accelerations. `None` where the program has what that does not differentiate.
-pub(crate) fn forward_dynamics_adjoint(arm: &SpatialArmSpec) -> Option<Packed> {
-    let n = arm.joints.len();
-    let mut p = Program::new();
-    let torques = newton_euler(&mut p, arm, Terms::ALL, true);
-    let wrt: Vec<Input> = (0..n).map(Input::Q).chain((0..n).map(Input::Qd)).collect();
-    let mut pk = crate::programs::adjoint::adjoint(&p, &torques, n, &wrt, 8)?;
-    // Row by row over (q, qd) to d/dq row by row, then d/dqd.
-    let by_row = std::mem::take(&mut pk.derivatives);
-    for offset in [0, n] {
-        for i in 0..n {
-            pk.derivatives
-                .extend_from_slice(&by_row[i * 2 * n + offset..i * 2 * n + offset + n]);
-        }
-    }
-    Some(pk)
-}
-
 /// `(dtau/dq, dtau/dqd)` of [`inverse_dynamics`], row-major each: the unrolled recursion
 /// differentiated at compile time along every angle and rate (`derivative`); `None` past
 /// [`MAX_DERIVATIVE_OPS`] operations, where the trait's default (the generated inverse
-/// dynamics in run-time jets) costs a user's build less.
-pub(crate) fn inverse_dynamics_derivatives(arm: &SpatialArmSpec) -> Option<Method> {
+/// dynamics in run-time jets) costs a user's build less. With it, where it is emitted,
+/// `(-W dtau/dq, -W dtau/dqd)` for the run-time `W = M^-1`, row-major each: the same recursion
+/// run backward from the torques weighted by the rows of `-W`, eight rows at a time
+/// ([`adjoint`](crate::adjoint::adjoint)), the forward dynamics' derivatives at the
+/// accelerations (`None` where the program has what that does not differentiate).
+pub(crate) fn inverse_dynamics_derivatives(
+    arm: &SpatialArmSpec,
+) -> (Option<Method>, Option<Packed>) {
     let n = arm.joints.len();
     if n > crate::programs::derivative::MAX_LINKS {
-        return None;
+        return (None, None);
     }
     let mut p = Program::new();
     let torques = newton_euler(&mut p, arm, Terms::ALL, true);
     let directions: Vec<Input> = (0..n).map(Input::Q).chain((0..n).map(Input::Qd)).collect();
     let packed = crate::programs::packed::pack(&p, &torques, &directions);
-    let jacobian =
-        crate::programs::derivative::differentiate(&mut p, &torques, &directions).ok()?;
+    let adjoint = crate::programs::adjoint::adjoint(&p, &torques, n, &directions, 8);
+    let Ok(jacobian) = crate::programs::derivative::differentiate(&mut p, &torques, &directions)
+    else {
+        return (None, None);
+    };
     let mut outputs = Vec::with_capacity(2 * n * n);
     for (wrt, offset) in [("q", 0), ("qd", n)] {
         for (i, row) in jacobian.iter().enumerate() {
@@ -417,17 +405,23 @@ pub(crate) fn inverse_dynamics_derivatives(arm: &SpatialArmSpec) -> Option<Metho
     let mut method = Method::new(p, outputs).described(
         "the unrolled recursive Newton-Euler algorithm differentiated at compile time, operation by operation, four directions at a time",
     );
-    // In the outputs' order: d/dq row by row, then d/dqd.
-    method.packed = packed.map(|mut pk| {
-        let by_torque = std::mem::take(&mut pk.derivatives);
-        for offset in [0, n] {
-            for i in 0..n {
-                pk.derivatives
-                    .extend_from_slice(&by_torque[i * 2 * n + offset..i * 2 * n + offset + n]);
-            }
-        }
-        Box::new(pk)
-    });
+    method.packed = packed.map(|pk| Box::new(by_matrix(pk, n)));
     let ops = method.op_count();
-    (ops.mul + ops.add <= MAX_DERIVATIVE_OPS).then_some(method)
+    if ops.mul + ops.add > MAX_DERIVATIVE_OPS {
+        return (None, None);
+    }
+    (Some(method), adjoint.map(|pk| by_matrix(pk, n)))
+}
+
+/// `pk`'s derivatives, row by row over `(q, qd)`, in the outputs' order: `d/dq` row by row,
+/// then `d/dqd`.
+fn by_matrix(mut pk: Packed, n: usize) -> Packed {
+    let by_row = std::mem::take(&mut pk.derivatives);
+    for offset in [0, n] {
+        for i in 0..n {
+            pk.derivatives
+                .extend_from_slice(&by_row[i * 2 * n + offset..i * 2 * n + offset + n]);
+        }
+    }
+    pk
 }
